@@ -1,0 +1,73 @@
+#pragma once
+/// \file error.hpp
+/// The one error policy of isopatch: every failure caused by input throws a typed error derived from
+/// isopatch::Error (itself a std::runtime_error) carrying a one-line message. The command-line tool maps
+/// ErrorKind to a distinct exit code (see exit_code()).
+
+#include <stdexcept>
+#include <string>
+
+namespace isopatch {
+
+/// What kind of input was bad; each kind has its own exit code in the command-line tool.
+enum class ErrorKind {
+  Internal,        ///< a bug: an invariant did not hold
+  InvalidArgument, ///< a setting out of range (absurd resolution, bad box, ...)
+  UnknownSurface,  ///< a surface name that is not in the catalogue
+  Parse,           ///< a malformed formula
+  Io,              ///< a file that cannot be read or written, or a malformed mesh file
+  Evaluation,      ///< f returned NaN or infinity where it was evaluated
+  NoSurface,       ///< f = 0 does not cross the box
+  Limit,           ///< a resource budget (evaluations, time, vertices) was exhausted or cancelled
+};
+
+/// Exit code of the command-line tool for an error kind (0 is success, 1 internal, 2 usage).
+int exit_code(ErrorKind kind);
+
+/// Base of all isopatch errors.
+class Error : public std::runtime_error {
+ public:
+  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  ErrorKind kind() const noexcept { return kind_; }
+
+ private:
+  ErrorKind kind_;
+};
+
+/// A setting or argument out of its documented range.
+class InputError : public Error {
+ public:
+  explicit InputError(const std::string& message) : Error(ErrorKind::InvalidArgument, message) {}
+};
+
+/// A surface name that names nothing.
+class UnknownSurfaceError : public Error {
+ public:
+  explicit UnknownSurfaceError(const std::string& message) : Error(ErrorKind::UnknownSurface, message) {}
+};
+
+/// A file that cannot be opened, read, parsed or written. The message names the file.
+class IoError : public Error {
+ public:
+  explicit IoError(const std::string& message) : Error(ErrorKind::Io, message) {}
+};
+
+/// f (or its gradient) was NaN or infinite at a point the mesher needed.
+class EvaluationError : public Error {
+ public:
+  explicit EvaluationError(const std::string& message) : Error(ErrorKind::Evaluation, message) {}
+};
+
+/// The surface does not cross the box at all.
+class NoSurfaceError : public Error {
+ public:
+  explicit NoSurfaceError(const std::string& message) : Error(ErrorKind::NoSurface, message) {}
+};
+
+/// A budget ran out or the run was cancelled.
+class LimitError : public Error {
+ public:
+  explicit LimitError(const std::string& message) : Error(ErrorKind::Limit, message) {}
+};
+
+}  // namespace isopatch
