@@ -1,1 +1,42 @@
-int main() { return 0; }
+// The isopatch command-line tool: arguments -> Settings -> one library call -> output.
+// Errors print one line on stderr and exit with a code per kind (isopatch::exit_code).
+#include <isopatch/error.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <new>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  using namespace isopatch;
+  CLI::App app{"isopatch: good-quality triangle meshes of smooth implicit surfaces f(x,y,z) = 0"};
+  app.set_version_flag("--version", "isopatch 0.1.0");
+  app.require_subcommand(1);
+  std::map<std::string, cli::Runner> runners;
+  runners["mesh"] = cli::add_mesh_command(app);
+  runners["surfaces"] = cli::add_surfaces_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    for (const auto& [name, run] : runners)
+      if (app.got_subcommand(name)) return run();
+    return 2;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "isopatch: %s\n", e.what());
+    return exit_code(e.kind());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "isopatch: out of memory\n");
+    return exit_code(ErrorKind::Limit);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "isopatch: internal error: %s\n", e.what());
+    return 1;
+  }
+}

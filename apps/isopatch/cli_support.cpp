@@ -1,0 +1,51 @@
+#include "cli_support.hpp"
+
+#include <isopatch/error.hpp>
+#include <isopatch/mesh_io.hpp>
+
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+
+namespace isopatch::cli {
+
+std::map<std::string, double> parse_params(const std::vector<std::string>& items) {
+  std::map<std::string, double> params;
+  for (const std::string& item : items) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0 || eq + 1 == item.size())
+      throw InputError("bad --param '" + item + "' (want name=value)");
+    const std::string name = item.substr(0, eq);
+    const std::string text = item.substr(eq + 1);
+    double value = 0.0;
+    const char* b = text.data();
+    const char* e = b + text.size();
+    if (*b == '+') ++b;
+    const auto [ptr, ec] = std::from_chars(b, e, value);
+    if (ec != std::errc() || ptr != e || !std::isfinite(value))
+      throw InputError("bad --param '" + item + "': '" + text + "' is not a finite number");
+    if (!params.emplace(name, value).second) throw InputError("--param " + name + " is given twice");
+  }
+  return params;
+}
+
+void check_output_path(const std::string& path) {
+  format_from_path(path);  // throws IoError for an unknown extension
+  namespace fs = std::filesystem;
+  fs::path folder = fs::path(path).parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec)) throw IoError("cannot write '" + path + "': folder '" + folder.string() + "' does not exist");
+  if (::access(folder.c_str(), W_OK) != 0) throw IoError("cannot write '" + path + "': folder '" + folder.string() + "' is not writable");
+  if (fs::is_directory(path, ec)) throw IoError("cannot write '" + path + "': it is a folder");
+}
+
+std::string group_digits(unsigned long long n) {
+  std::string s = std::to_string(n);
+  for (int i = static_cast<int>(s.size()) - 3; i > 0; i -= 3) s.insert(static_cast<std::size_t>(i), ",");
+  return s;
+}
+
+}  // namespace isopatch::cli

@@ -1,0 +1,18 @@
+#pragma once
+// The subcommands of the isopatch tool. Each registers its options on the CLI11 app and returns the
+// function that runs it (after parsing) and yields the process exit code.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace isopatch::cli {
+
+using Runner = std::function<int()>;
+
+/// `isopatch mesh SURFACE -o OUT ...`: mesh a surface and write the mesh.
+Runner add_mesh_command(CLI::App& app);
+/// `isopatch surfaces`: list the built-in catalogue.
+Runner add_surfaces_command(CLI::App& app);
+
+}  // namespace isopatch::cli

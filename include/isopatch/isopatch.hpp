@@ -1,0 +1,27 @@
+#pragma once
+/// \file isopatch.hpp
+/// The umbrella header and the one call a user needs: mesh a surface with the method in Settings.
+
+#include <isopatch/callable_surface.hpp>
+#include <isopatch/catalogue.hpp>
+#include <isopatch/error.hpp>
+#include <isopatch/geometry.hpp>
+#include <isopatch/marching_cubes.hpp>
+#include <isopatch/mesh.hpp>
+#include <isopatch/mesh_io.hpp>
+#include <isopatch/settings.hpp>
+#include <isopatch/surface.hpp>
+
+namespace isopatch {
+
+/// Meshes the zero set of `surface` inside settings.box (or surface.box()) with settings.method.
+/// The result is an indexed triangle mesh oriented with normals along grad f. Fills `stats` when given.
+/// \throw InputError, EvaluationError, NoSurfaceError, LimitError (see the method's own header).
+Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats = nullptr);
+
+/// "projection" or "mc" -> Method; \throw InputError for anything else.
+Method parse_method(const std::string& name);
+/// Method -> its command-line name.
+std::string method_name(Method method);
+
+}  // namespace isopatch

@@ -1,0 +1,98 @@
+// End-to-end tests of the isopatch tool: real command lines, outputs checked with the project's metrics.
+#include <isopatch/error.hpp>
+#include <isopatch/mesh_io.hpp>
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "run_command.hpp"
+
+namespace isopatch {
+namespace {
+
+const std::string kCli = ISOPATCH_CLI;
+
+int count_lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+TEST(Cli, MeshesCatalogueSurfaceWithMarchingCubes) {
+  const auto dir = test::scratch_dir("cli_mc");
+  const auto out = dir / "torus.ply";
+  const auto r = test::run_command(kCli + " mesh torus -o " + out.string() + " --method mc --grid 48", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("vertices"), std::string::npos);
+  EXPECT_NE(r.out.find("time"), std::string::npos);
+  const Mesh mesh = read_mesh(out.string());
+  const TopologyReport t = analyze_topology(mesh);
+  EXPECT_TRUE(t.watertight());
+  EXPECT_TRUE(t.manifold());
+  EXPECT_EQ(t.components, 1u);
+  EXPECT_EQ(t.genus, 1);
+}
+
+TEST(Cli, MeshesFormulaWithBox) {
+  const auto dir = test::scratch_dir("cli_formula");
+  const auto out = dir / "s.ply";
+  const auto r = test::run_command(
+      kCli + " mesh \"x^2+y^2+z^2-1\" --box -1.3,-1.2,-1.1,1.2,1.3,1.25 --method mc --grid 40 -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const TopologyReport t = analyze_topology(read_mesh(out.string()));
+  EXPECT_TRUE(t.watertight());
+  EXPECT_EQ(t.genus, 0);
+}
+
+TEST(Cli, ListsSurfaces) {
+  const auto dir = test::scratch_dir("cli_surfaces");
+  const auto r = test::run_command(kCli + " surfaces", dir);
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* name : {"sphere", "torus", "tanglecube", "genus2", "chmutov6", "gyroid", "heart"})
+    EXPECT_NE(r.out.find(name), std::string::npos) << name;
+}
+
+struct BadCase {
+  std::string args;
+  ErrorKind kind;
+};
+
+TEST(Cli, BadInputGivesOneLineAndDistinctExitCode) {
+  const auto dir = test::scratch_dir("cli_bad");
+  const std::string ok_out = " -o " + (dir / "m.ply").string();
+  const std::vector<BadCase> cases = {
+      {"mesh tours --method mc" + ok_out, ErrorKind::UnknownSurface},
+      {"mesh torus --method mc --box 1,2,3" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --method mc --box 0,0,0,1,1,0" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --method mc --grid 100000000" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --method mc --grid 0" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --method mc -o /nonexistent/folder/m.ply", ErrorKind::Io},
+      {"mesh torus --method mc -o " + (dir / "m.xyz").string(), ErrorKind::Io},
+      {"mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Parse},
+      {"mesh \"x^2+y^2+z^2+1\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::NoSurface},
+      {"mesh \"sqrt(x)+y\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Evaluation},
+      {"mesh @" + (dir / "missing.txt").string() + " --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Io},
+  };
+  for (const BadCase& c : cases) {
+    const auto r = test::run_command(kCli + " " + c.args, dir);
+    EXPECT_EQ(r.exit_code, exit_code(c.kind)) << c.args << "\n" << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << c.args << "\n" << r.err;
+    EXPECT_EQ(r.err.rfind("isopatch: ", 0), 0u) << r.err;
+  }
+}
+
+TEST(Cli, ParseErrorPointsAtTheColumn) {
+  const auto dir = test::scratch_dir("cli_parse");
+  const auto r = test::run_command(kCli + " mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc -o " +
+                                       (dir / "m.ply").string(), dir);
+  EXPECT_EQ(r.exit_code, exit_code(ErrorKind::Parse));
+  EXPECT_NE(r.err.find("column 3"), std::string::npos) << r.err;
+}
+
+TEST(Cli, UsageErrorsExitWithTwo) {
+  const auto dir = test::scratch_dir("cli_usage");
+  EXPECT_EQ(test::run_command(kCli, dir).exit_code, 2);
+  EXPECT_EQ(test::run_command(kCli + " mesh torus", dir).exit_code, 2);  // no -o
+  EXPECT_EQ(test::run_command(kCli + " frobnicate", dir).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace isopatch
