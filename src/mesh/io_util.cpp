@@ -1,0 +1,186 @@
+// Shared machinery of the mesh readers and writers. Files are read whole with stdio (one allocation,
+// no per-line stream overhead) and written from one buffer, so a failed write is seen at fclose.
+#include "mesh/io_util.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <system_error>
+
+namespace isopatch::io {
+namespace {
+
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f';
+}
+bool is_line_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+std::string reason(int error) {
+  return std::generic_category().message(error);
+}
+
+struct FileCloser {
+  void operator()(std::FILE* f) const {
+    if (f) std::fclose(f);
+  }
+};
+
+template <class Int>
+bool parse_integer(std::string_view token, Int& out) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty() || token.front() == '+') return false;  // from_chars itself rejects '-' for unsigned
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, out);
+  return ec == std::errc{} && ptr == end;
+}
+
+}  // namespace
+
+std::string load_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
+  errno = 0;
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+  if (!file) fail(path, "cannot open for reading (" + reason(errno) + ")");
+  std::string bytes;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec) bytes.reserve(static_cast<std::size_t>(size));
+  char chunk[1 << 16];
+  std::size_t got = 0;
+  while ((got = std::fread(chunk, 1, sizeof chunk, file.get())) > 0) bytes.append(chunk, got);
+  if (std::ferror(file.get())) fail(path, "read failed (" + reason(errno) + ")");
+  return bytes;
+}
+
+void save_file(const std::string& path, std::string_view bytes) {
+  errno = 0;
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) fail(path, "cannot open for writing (" + reason(errno) + ")");
+  const std::size_t written = std::fwrite(bytes.data(), 1, bytes.size(), file);
+  const int write_error = errno;
+  const bool closed = std::fclose(file) == 0;
+  if (written != bytes.size()) fail(path, "write failed (" + reason(write_error) + ")");
+  if (!closed) fail(path, "write failed when closing (" + reason(errno) + ")");
+}
+
+void fail(const std::string& name, const std::string& problem) {
+  throw IoError(name + ": " + problem);
+}
+
+void fail_at(const std::string& name, std::size_t line, const std::string& problem) {
+  throw IoError(name + ":" + std::to_string(line) + ": " + problem);
+}
+
+std::string_view Tokens::next() {
+  while (pos_ < text_.size() && is_space(text_[pos_])) {
+    if (text_[pos_] == '\n') ++line_;
+    ++pos_;
+  }
+  const std::size_t start = pos_;
+  while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;
+  return text_.substr(start, pos_ - start);
+}
+
+std::string_view Tokens::next_on_line(char comment) {
+  while (pos_ < text_.size() && is_line_space(text_[pos_])) ++pos_;
+  if (pos_ < text_.size() && comment != '\0' && text_[pos_] == comment) {
+    while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+  }
+  const std::size_t start = pos_;
+  while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;
+  return text_.substr(start, pos_ - start);
+}
+
+bool Tokens::next_line() {
+  const std::size_t newline = text_.find('\n', pos_);
+  if (newline == std::string_view::npos) {
+    pos_ = text_.size();
+    return false;
+  }
+  pos_ = newline + 1;
+  ++line_;
+  return pos_ < text_.size();
+}
+
+bool Tokens::at_end() {
+  while (pos_ < text_.size() && is_space(text_[pos_])) {
+    if (text_[pos_] == '\n') ++line_;
+    ++pos_;
+  }
+  return pos_ == text_.size();
+}
+
+bool parse_double(std::string_view token, double& out) {
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty() || token.front() == '+') return false;
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, out, std::chars_format::general);
+  return ec == std::errc{} && ptr == end;
+}
+
+bool parse_int(std::string_view token, std::int64_t& out) {
+  return parse_integer(token, out);
+}
+bool parse_uint(std::string_view token, std::uint64_t& out) {
+  return parse_integer(token, out);
+}
+
+std::string quoted(std::string_view token) {
+  constexpr std::size_t kShown = 32;
+  std::string text = "'";
+  for (char c : token.substr(0, kShown)) text += (c >= 32 && c < 127) ? c : '?';
+  if (token.size() > kShown) text += "...";
+  return text + "'";
+}
+
+void append_number(std::string& out, double value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+void append_number(std::string& out, float value) {
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+void append_number(std::string& out, std::int64_t value) {
+  char buffer[24];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, result.ptr);
+}
+
+std::string add_polygon(Mesh& mesh, std::span<const std::int64_t> corners, std::size_t vertex_count) {
+  const std::size_t n = corners.size();
+  if (n < 3) return "has " + std::to_string(n) + " vertices (at least 3 needed)";
+  if (n > kMaxPolygon)
+    return "has " + std::to_string(n) + " vertices (more than " + std::to_string(kMaxPolygon) + ")";
+  for (std::int64_t c : corners)
+    if (c < 0 || static_cast<std::uint64_t>(c) >= vertex_count)
+      return "refers to vertex " + std::to_string(c) + " but there are " + std::to_string(vertex_count) +
+             " vertices";
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const Triangle t{static_cast<std::uint32_t>(corners[0]), static_cast<std::uint32_t>(corners[i]),
+                     static_cast<std::uint32_t>(corners[i + 1])};
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+      const std::uint32_t v = (t[0] == t[1] || t[0] == t[2]) ? t[0] : t[1];
+      return "repeats vertex " + std::to_string(v) + " (degenerate)";
+    }
+    mesh.triangles.push_back(t);
+  }
+  return {};
+}
+
+void check_read_mesh(const Mesh& mesh, const std::string& name) {
+  try {
+    mesh.validate();
+  } catch (const InputError& e) {
+    fail(name, e.what());
+  }
+}
+
+}  // namespace isopatch::io

@@ -1,0 +1,27 @@
+#pragma once
+// Internal: one encoder and one decoder per file format, working on bytes in memory. `name` is the
+// file name used in error messages. Decoders throw IoError; encoders assume a validated mesh.
+
+#include <isopatch/mesh.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace isopatch::io {
+
+std::string encode_obj(const Mesh& mesh);
+Mesh decode_obj(std::string_view bytes, const std::string& name);
+
+std::string encode_ply(const Mesh& mesh, bool binary);
+/// Reads ASCII, binary little-endian and binary big-endian PLY (told apart by the header).
+Mesh decode_ply(std::string_view bytes, const std::string& name);
+
+std::string encode_off(const Mesh& mesh);
+Mesh decode_off(std::string_view bytes, const std::string& name);
+
+std::string encode_stl(const Mesh& mesh);
+/// Reads binary STL, or ASCII STL when the file starts with "solid" and is not a binary file of
+/// exactly the declared size.
+Mesh decode_stl(std::string_view bytes, const std::string& name);
+
+}  // namespace isopatch::io

@@ -1,0 +1,71 @@
+// Public entry points of mesh I/O: the format from the extension, then one encoder or decoder per
+// format (obj_io.cpp, ply_io.cpp, off_io.cpp, stl_io.cpp). Files are read whole and written whole.
+#include <isopatch/mesh_io.hpp>
+
+#include "mesh/io_util.hpp"
+#include "mesh/mesh_formats.hpp"
+
+#include <cctype>
+#include <filesystem>
+
+namespace isopatch {
+
+MeshFormat format_from_path(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".obj") return MeshFormat::Obj;
+  if (ext == ".ply") return MeshFormat::PlyBinary;
+  if (ext == ".off") return MeshFormat::Off;
+  if (ext == ".stl") return MeshFormat::Stl;
+  throw IoError(path + ": unknown mesh file extension '" + ext + "' (use .obj, .ply, .off or .stl)");
+}
+
+std::string encode_mesh(const Mesh& mesh, MeshFormat format) {
+  mesh.validate();
+  switch (format) {
+    case MeshFormat::Obj:
+      return io::encode_obj(mesh);
+    case MeshFormat::PlyAscii:
+      return io::encode_ply(mesh, false);
+    case MeshFormat::PlyBinary:
+      return io::encode_ply(mesh, true);
+    case MeshFormat::Off:
+      return io::encode_off(mesh);
+    case MeshFormat::Stl:
+      return io::encode_stl(mesh);
+  }
+  throw InputError("unknown mesh format");
+}
+
+Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& name) {
+  switch (format) {
+    case MeshFormat::Obj:
+      return io::decode_obj(bytes, name);
+    case MeshFormat::PlyAscii:
+    case MeshFormat::PlyBinary:
+      return io::decode_ply(bytes, name);
+    case MeshFormat::Off:
+      return io::decode_off(bytes, name);
+    case MeshFormat::Stl:
+      return io::decode_stl(bytes, name);
+  }
+  throw InputError("unknown mesh format");
+}
+
+void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format) {
+  io::save_file(path, encode_mesh(mesh, format));
+}
+
+void write_mesh(const Mesh& mesh, const std::string& path) {
+  write_mesh(mesh, path, format_from_path(path));
+}
+
+Mesh read_mesh(const std::string& path, MeshFormat format) {
+  return decode_mesh(io::load_file(path), format, path);
+}
+
+Mesh read_mesh(const std::string& path) {
+  return read_mesh(path, format_from_path(path));
+}
+
+}  // namespace isopatch
