@@ -1,0 +1,47 @@
+// The cache keeps the first value computed at each half-lattice point; gradients are added lazily
+// from Surface::value_gradient, whose own value is discarded so that the sign of a point never
+// depends on which evaluator (plain or differentiated) happened to run first. A point or segment is
+// entered only after its evaluation succeeded, so an EvaluationError leaves the cache consistent.
+#include "partition/sample_cache.hpp"
+
+namespace isopatch {
+
+SampleCache::Sample& SampleCache::sample(const LatticePoint& h) {
+  const std::uint64_t key = half_key(h);
+  if (const auto index = point_index_.find(key)) return samples_[*index];
+  const double v = sampler_.value(lattice_.half_point(h));
+  point_index_.insert(key);
+  samples_.push_back(Sample{v});
+  return samples_.back();
+}
+
+Vec3 SampleCache::gradient(const LatticePoint& h) {
+  Sample& s = sample(h);
+  if (!s.has_gradient) {
+    s.gradient = sampler_.value_gradient(lattice_.half_point(h)).gradient;
+    s.has_gradient = true;
+  }
+  return s.gradient;
+}
+
+std::span<const double> SampleCache::segment_samples(const SegmentKey& key) {
+  const auto n = static_cast<std::size_t>(segment_samples_);
+  if (const auto index = segment_index_.find(key)) return {segment_values_.data() + *index * n, n};
+  const std::size_t offset = segment_values_.size();
+  const Vec3 a = lattice_.point(key.start);
+  const Vec3 b = lattice_.point(key.end());
+  try {
+    for (std::size_t k = 1; k <= n; ++k) {
+      const double t = static_cast<double>(k) / static_cast<double>(n + 1);
+      segment_values_.push_back(sampler_.value((1.0 - t) * a + t * b));
+      ++segment_evaluations_;
+    }
+  } catch (...) {
+    segment_values_.resize(offset);
+    throw;
+  }
+  segment_index_.insert(key);
+  return {segment_values_.data() + offset, n};
+}
+
+}  // namespace isopatch

@@ -1,0 +1,58 @@
+#pragma once
+/// \file sample_cache.hpp
+/// Values and gradients of f on the half lattice, cached by packed integer coordinates (method.md 4.1),
+/// plus the interior samples of lattice segments used by the edge test. Every value is checked (NaN or
+/// infinity throws EvaluationError naming the point) and counted. Not thread-safe: one per build.
+
+#include "partition/index_map.hpp"
+#include "partition/lattice.hpp"
+#include "surface/sampler.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace isopatch {
+
+/// The sign rule of method.md 3: a sample with f >= 0 counts as positive.
+inline bool is_negative(double value) {
+  return value < 0.0;
+}
+
+class SampleCache {
+ public:
+  /// \param segment_samples  the number of interior samples per segment (edge test), >= 0
+  SampleCache(const Sampler& sampler, const Lattice& lattice, int segment_samples)
+      : sampler_(sampler), lattice_(lattice), segment_samples_(segment_samples) {}
+
+  /// f at the half-lattice point h, evaluated once. \throw EvaluationError when not finite.
+  double value(const LatticePoint& h) { return sample(h).value; }
+  /// grad f at the half-lattice point h, evaluated once on first request. The value at h is always
+  /// the one of value(h), whichever is asked first. \throw EvaluationError when not finite.
+  Vec3 gradient(const LatticePoint& h);
+
+  /// f at the segment_samples points strictly inside the segment, t = k / (n + 1), k = 1..n, from
+  /// key.start to key.end(); evaluated once per segment. The span is valid until the next call.
+  std::span<const double> segment_samples(const SegmentKey& key);
+
+  std::uint64_t segment_sample_evaluations() const { return segment_evaluations_; }
+
+ private:
+  struct Sample {
+    double value = 0.0;
+    Vec3 gradient = Vec3::Zero();
+    bool has_gradient = false;
+  };
+  Sample& sample(const LatticePoint& h);
+
+  const Sampler& sampler_;
+  Lattice lattice_;
+  int segment_samples_;
+  IndexMap<std::uint64_t, Mix64Hash> point_index_;
+  std::vector<Sample> samples_;
+  IndexMap<SegmentKey, SegmentKeyHash> segment_index_;
+  std::vector<double> segment_values_;  // segment_samples_ consecutive values per segment
+  std::uint64_t segment_evaluations_ = 0;
+};
+
+}  // namespace isopatch
