@@ -12,6 +12,10 @@ using Runner = std::function<int()>;
 
 /// `isopatch mesh SURFACE -o OUT ...`: mesh a surface and write the mesh.
 Runner add_mesh_command(CLI::App& app);
+/// `isopatch analyze MESH [--surface S]`: quality and accuracy metrics of a mesh.
+Runner add_analyze_command(CLI::App& app);
+/// `isopatch render MESH -o OUT.png ...`: draw a mesh (shaded, wireframe, curvature, ...) into a PNG.
+Runner add_render_command(CLI::App& app);
 /// `isopatch surfaces`: list the built-in catalogue.
 Runner add_surfaces_command(CLI::App& app);
 

@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   std::map<std::string, cli::Runner> runners;
   runners["mesh"] = cli::add_mesh_command(app);
   runners["surfaces"] = cli::add_surfaces_command(app);
+  runners["render"] = cli::add_render_command(app);
+  runners["analyze"] = cli::add_analyze_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -22,8 +22,17 @@ struct MeshOptions {
   std::string edge_root = "bracketed";
   int grid = 64;
   double grid_offset = 1e-3;
+  int fair = 0;
   std::size_t max_vertices = 0;
   bool quiet = false;
+  Settings defaults;
+  std::optional<double> edge_length;
+  int resolution = defaults.resolution;
+  int min_depth = defaults.min_depth;
+  int max_depth = defaults.max_depth;
+  int refinement_levels = defaults.refinement_levels;
+  std::string coordinates = "wachspress";
+  double max_ray_angle = defaults.max_ray_angle;
 };
 
 void print_summary(const std::string& surface_name, const Settings& settings, const MeshStats& stats,
@@ -45,10 +54,20 @@ int run_mesh(const MeshOptions& o) {
   if (!o.box.empty()) settings.box = parse_box(o.box);
   settings.grid = o.grid;
   settings.grid_offset = o.grid_offset;
+  settings.fair_iterations = o.fair;
   if (o.edge_root == "bracketed") settings.edge_root = EdgeRoot::Bracketed;
   else if (o.edge_root == "linear") settings.edge_root = EdgeRoot::Linear;
   else throw InputError("unknown --edge-root '" + o.edge_root + "' (want bracketed or linear)");
   settings.max_vertices = o.max_vertices;
+  settings.edge_length = o.edge_length;
+  settings.resolution = o.resolution;
+  settings.min_depth = o.min_depth;
+  settings.max_depth = o.max_depth;
+  settings.refinement_levels = o.refinement_levels;
+  settings.max_ray_angle = o.max_ray_angle;
+  if (o.coordinates == "wachspress") settings.coordinates = Settings::Coordinates::Wachspress;
+  else if (o.coordinates == "mean-value") settings.coordinates = Settings::Coordinates::MeanValue;
+  else throw InputError("unknown --coordinates '" + o.coordinates + "' (want wachspress or mean-value)");
 
   check_output_path(o.output);
   const SurfacePtr surface = resolve_surface(o.surface, settings.box, parse_params(o.params));
@@ -69,10 +88,24 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
+  cmd->add_option("--edge-length", o->edge_length, "Projection: target edge length (default: longest box side / 64)");
+  cmd->add_option("--resolution", o->resolution, "Projection: segments per patch side (1..64)")->capture_default_str();
+  cmd->add_option("--min-depth", o->min_depth, "Projection: smallest octree depth of surface cells")
+      ->capture_default_str();
+  cmd->add_option("--max-depth", o->max_depth, "Projection: largest octree depth (refinement limit)")
+      ->capture_default_str();
+  cmd->add_option("--refinement-levels", o->refinement_levels,
+                  "Projection: uniform refinement levels allowed when cells fail")
+      ->capture_default_str();
+  cmd->add_option("--coordinates", o->coordinates, "Projection: wachspress | mean-value")->capture_default_str();
+  cmd->add_option("--max-ray-angle", o->max_ray_angle, "Projection: acceptance angle between ray and gradient")
+      ->capture_default_str();
   cmd->add_option("--grid", o->grid, "Marching cubes: cells along the longest box axis")->capture_default_str();
   cmd->add_option("--edge-root", o->edge_root, "Marching cubes: bracketed | linear edge crossings")
       ->capture_default_str();
   cmd->add_option("--grid-offset", o->grid_offset, "Marching cubes: grid shift as a fraction of a cell")
+      ->capture_default_str();
+  cmd->add_option("--fair", o->fair, "Marching cubes: rounds of Laplace fairing with re-projection")
       ->capture_default_str();
   cmd->add_option("--max-vertices", o->max_vertices, "Stop with an error beyond this many vertices (0: none)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success");

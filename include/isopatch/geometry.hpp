@@ -4,6 +4,7 @@
 /// axis-aligned boxes. Points are in the user's units (whatever f is written in).
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <string>
 

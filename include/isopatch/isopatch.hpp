@@ -5,10 +5,12 @@
 #include <isopatch/callable_surface.hpp>
 #include <isopatch/catalogue.hpp>
 #include <isopatch/error.hpp>
+#include <isopatch/fairing.hpp>
 #include <isopatch/geometry.hpp>
 #include <isopatch/marching_cubes.hpp>
 #include <isopatch/mesh.hpp>
 #include <isopatch/mesh_io.hpp>
+#include <isopatch/projection.hpp>
 #include <isopatch/settings.hpp>
 #include <isopatch/surface.hpp>
 

@@ -43,6 +43,35 @@ struct Settings {
   /// The grid origin is shifted by this fraction of a cell along the non-dyadic direction
   /// (0.1234, 0.5678, 0.9012) so symmetric surfaces do not pass through grid points. 0 disables.
   double grid_offset = 1e-3;
+  /// Rounds of Laplace fairing with re-projection applied to the Marching Cubes mesh (fairing.hpp), 0..10000.
+  int fair_iterations = 0;
+
+  // --- Projection (Sipos & Salvi 2021) ---------------------------------------------------------
+  /// Target edge length of the output. Empty: the longest box side / 64. Must be > 0.
+  std::optional<double> edge_length;
+  /// Segments per patch side (the template resolution r), 1..64.
+  int resolution = 8;
+  /// Octree depth limits (the root cell is the box made cubic). Surface cells start at the depth whose
+  /// cell size is closest to resolution * edge_length, clamped to [min_depth, max_depth]; cells that
+  /// fail the single-sheet or acceptance tests are refined up to max_depth. 0 <= min <= max <= 12.
+  int min_depth = 2;
+  int max_depth = 8;
+  /// Until leaves of different sizes are supported, a failing cell refines every surface cell by one
+  /// level; at most this many levels are added to the starting depth (0..12). Cells still failing at
+  /// the last level are closed by fallback fans (reported in the statistics).
+  int refinement_levels = 2;
+  /// Generalized barycentric coordinates for the base patch and the projection directions.
+  enum class Coordinates { Wachspress, MeanValue } coordinates = Coordinates::Wachspress;
+  /// Acceptance: largest angle between a projection ray and grad f at the hit (interior vertices), and
+  /// between a boundary ray and the in-face gradient (boundary vertices), in degrees, in (0, 90).
+  double max_ray_angle = 75.0;
+  double max_boundary_ray_angle = 80.0;
+  /// Ray-march steps per traversal of a cell (before the bracketed refinement), 4..4096.
+  int march_steps = 32;
+
+  /// Attach the per-vertex attribute "role": 0 patch corner, 1 patch side, 2 patch interior, 3 patch
+  /// centre (ring templates), 4 centre of a fallback fan.
+  bool vertex_roles = false;
 
   // --- Budgets and control ----------------------------------------------------------------------
   /// Abort with LimitError when the output would exceed this many vertices. 0: no limit.

@@ -56,11 +56,11 @@ constexpr int kMaxEdgeSamples = 1024;
 
 void validate(const Box& box, const PartitionSettings& s) {
   if (!box.valid()) throw InputError("partition: the box must be finite with lo < hi on every axis");
-  if (s.max_depth < 1 || s.max_depth > Lattice::kMaxDepth)
-    throw InputError("partition: max_depth must be in 1.." + std::to_string(Lattice::kMaxDepth) + ", got " +
+  if (s.max_depth < 0 || s.max_depth > Lattice::kMaxDepth)
+    throw InputError("partition: max_depth must be in 0.." + std::to_string(Lattice::kMaxDepth) + ", got " +
                      std::to_string(s.max_depth));
-  if (s.surface_depth < 1 || s.surface_depth > s.max_depth)
-    throw InputError("partition: surface_depth must be in 1..max_depth (" + std::to_string(s.max_depth) +
+  if (s.surface_depth < 0 || s.surface_depth > s.max_depth)
+    throw InputError("partition: surface_depth must be in 0..max_depth (" + std::to_string(s.max_depth) +
                      "), got " + std::to_string(s.surface_depth));
   if (s.edge_samples < 0 || s.edge_samples > kMaxEdgeSamples)
     throw InputError("partition: edge_samples must be in 0.." + std::to_string(kMaxEdgeSamples));

@@ -18,7 +18,7 @@
 namespace isopatch {
 
 struct PartitionSettings {
-  /// Depth of every surface leaf, 1..max_depth (cells are 2^-depth of the root cube).
+  /// Depth of every surface leaf, 0..max_depth (0: the root cube is the only cell) (cells are 2^-depth of the root cube).
   int surface_depth = 5;
   /// Depth D of the finest lattice, surface_depth..20. Keys (segments, faces) are in its coordinates,
   /// so a later adaptive partition can refine to D while sharing them.

@@ -27,7 +27,8 @@ TEST(Cli, MeshesCatalogueSurfaceWithMarchingCubes) {
   const TopologyReport t = analyze_topology(mesh);
   EXPECT_TRUE(t.watertight());
   EXPECT_TRUE(t.manifold());
-  EXPECT_EQ(t.components, 1u);
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_TRUE(t.outward_oriented());
   EXPECT_EQ(t.genus, 1);
 }
 

@@ -168,7 +168,7 @@ TEST(PartitionErrors, SettingsOutOfRangeThrowInputError) {
     change(s);
     return s;
   };
-  EXPECT_THROW(build_partition(*surface, box, with([](auto& s) { s.surface_depth = 0; })), InputError);
+  EXPECT_THROW(build_partition(*surface, box, with([](auto& s) { s.surface_depth = -1; })), InputError);
   EXPECT_THROW(build_partition(*surface, box, with([](auto& s) { s.surface_depth = 8; })), InputError);
   EXPECT_THROW(build_partition(*surface, box, with([](auto& s) { s.max_depth = 21; })), InputError);
   EXPECT_THROW(build_partition(*surface, box, with([](auto& s) { s.edge_samples = -1; })), InputError);
@@ -205,6 +205,19 @@ TEST(PartitionTests, DisablingTestsKeepsLeavesAndMakesMoreSimple) {
     if (a.leaves[i].kind == LeafKind::Simple) {
       EXPECT_EQ(b.leaves[i].kind, LeafKind::Simple);
     }
+}
+
+TEST(PartitionSettings, DepthZeroMakesTheRootCubeTheOnlyCell) {
+  // A sphere clipped by the unit cube around one corner: one leaf, one triangle loop.
+  const auto surface =
+      make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 0.36; }, Box{Vec3::Zero(), Vec3::Ones()});
+  PartitionSettings s;
+  s.surface_depth = 0;
+  s.max_depth = 0;
+  const Partition p = build_partition(*surface, surface->box(), s);
+  ASSERT_EQ(p.leaves.size(), 1u);
+  ASSERT_EQ(p.leaves[0].loops.size(), 1u);
+  EXPECT_EQ(p.leaves[0].loops[0].corners.size(), 3u);
 }
 
 }  // namespace

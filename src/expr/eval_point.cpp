@@ -1,0 +1,191 @@
+// Single-point evaluators: value, value with gradient (first-order forward mode) and value with
+// gradient and Hessian (second-order forward mode). A switch per instruction and registers on the
+// stack (or, for long tapes, in a thread-local buffer): no allocation, no virtual call.
+#include "expr/derivatives.hpp"
+#include "expr/evaluate.hpp"
+#include "expr/scalar.hpp"
+
+#include <array>
+#include <vector>
+
+namespace isopatch::expr {
+namespace {
+
+/// Runs f(registers) with at least `count` registers of type T.
+template <class T, std::size_t N, class F>
+auto with_registers(std::size_t count, F&& f) {
+  if (count <= N) {
+    std::array<T, N> regs;
+    return f(regs.data());
+  }
+  thread_local std::vector<T> heap;
+  if (heap.size() < count) heap.resize(count);
+  return f(heap.data());
+}
+
+struct Dual {  // value and gradient
+  double v;
+  std::array<double, 3> g;
+};
+
+struct Jet2 {  // value, gradient, Hessian (upper triangle xx xy xz yy yz zz)
+  double v;
+  std::array<double, 3> g;
+  std::array<double, 6> h;
+};
+
+constexpr int kPairI[6] = {0, 0, 0, 1, 1, 2};
+constexpr int kPairJ[6] = {0, 1, 2, 1, 2, 2};
+
+double run_value(const Tape& t, double* r, const Vec3& p) {
+  r[0] = p.x();
+  r[1] = p.y();
+  r[2] = p.z();
+  for (const ConstantRegister& c : t.constants) r[c.reg] = c.value;
+  for (const Instruction& in : t.code) r[in.out] = apply(in.op, r[in.a], r[in.b], in.imm);
+  return r[t.result];
+}
+
+ValueGradient run_gradient(const Tape& t, Dual* r, const Vec3& p) {
+  for (int k = 0; k < 3; ++k) {
+    r[k].v = p[k];
+    r[k].g = {0.0, 0.0, 0.0};
+    r[k].g[static_cast<std::size_t>(k)] = 1.0;
+  }
+  for (const ConstantRegister& c : t.constants) r[c.reg] = Dual{c.value, {0.0, 0.0, 0.0}};
+  for (const Instruction& in : t.code) {
+    const Dual& a = r[in.a];
+    const Dual& b = r[in.b];
+    Dual& o = r[in.out];
+    switch (in.op) {
+      case Op::Add:
+        o.v = a.v + b.v;
+        for (int k = 0; k < 3; ++k) o.g[k] = a.g[k] + b.g[k];
+        break;
+      case Op::Sub:
+        o.v = a.v - b.v;
+        for (int k = 0; k < 3; ++k) o.g[k] = a.g[k] - b.g[k];
+        break;
+      case Op::Min:
+        o = b.v < a.v ? b : a;
+        break;
+      case Op::Max:
+        o = a.v < b.v ? b : a;
+        break;
+      // The cheap ops of polynomials inline; each is binary_/unary_derivatives written out.
+      case Op::Mul:
+        o.v = a.v * b.v;
+        for (int k = 0; k < 3; ++k) o.g[k] = b.v * a.g[k] + a.v * b.g[k];
+        break;
+      case Op::Square:
+        o.v = a.v * a.v;
+        for (int k = 0; k < 3; ++k) o.g[k] = (2.0 * a.v) * a.g[k];
+        break;
+      case Op::AddC:
+        o.v = a.v + in.imm;
+        o.g = a.g;
+        break;
+      case Op::MulC:
+        o.v = a.v * in.imm;
+        for (int k = 0; k < 3; ++k) o.g[k] = in.imm * a.g[k];
+        break;
+      case Op::Neg:
+      case Op::RSubC:
+        o.v = in.op == Op::Neg ? -a.v : in.imm - a.v;
+        for (int k = 0; k < 3; ++k) o.g[k] = -a.g[k];
+        break;
+      case Op::Div:
+      case Op::Pow:
+      case Op::Atan2:
+      case Op::Hypot: {
+        const BinaryDerivatives d = binary_derivatives(in.op, a.v, b.v);
+        o.v = d.f;
+        for (int k = 0; k < 3; ++k) o.g[k] = d.fa * a.g[k] + d.fb * b.g[k];
+        break;
+      }
+      default: {
+        const UnaryDerivatives d = unary_derivatives(in.op, a.v, in.imm);
+        o.v = d.v;
+        for (int k = 0; k < 3; ++k) o.g[k] = d.d1 * a.g[k];
+      }
+    }
+  }
+  const Dual& f = r[t.result];
+  return {f.v, Vec3(f.g[0], f.g[1], f.g[2])};
+}
+
+SecondOrder run_second_order(const Tape& t, Jet2* r, const Vec3& p) {
+  for (int k = 0; k < 3; ++k) {
+    r[k] = Jet2{p[k], {0.0, 0.0, 0.0}, {}};
+    r[k].g[static_cast<std::size_t>(k)] = 1.0;
+  }
+  for (const ConstantRegister& c : t.constants) r[c.reg] = Jet2{c.value, {0.0, 0.0, 0.0}, {}};
+  for (const Instruction& in : t.code) {
+    const Jet2& a = r[in.a];
+    const Jet2& b = r[in.b];
+    Jet2& o = r[in.out];
+    switch (in.op) {
+      case Op::Add:
+      case Op::Sub: {
+        const double s = in.op == Op::Add ? 1.0 : -1.0;
+        o.v = in.op == Op::Add ? a.v + b.v : a.v - b.v;
+        for (int k = 0; k < 3; ++k) o.g[k] = a.g[k] + s * b.g[k];
+        for (int k = 0; k < 6; ++k) o.h[k] = a.h[k] + s * b.h[k];
+        break;
+      }
+      case Op::Min:
+        o = b.v < a.v ? b : a;
+        break;
+      case Op::Max:
+        o = a.v < b.v ? b : a;
+        break;
+      case Op::Mul:
+      case Op::Div:
+      case Op::Pow:
+      case Op::Atan2:
+      case Op::Hypot: {
+        const BinaryDerivatives d = binary_derivatives(in.op, a.v, b.v);
+        Jet2 res;
+        res.v = d.f;
+        for (int k = 0; k < 3; ++k) res.g[k] = d.fa * a.g[k] + d.fb * b.g[k];
+        for (int k = 0; k < 6; ++k) {
+          const int i = kPairI[k], j = kPairJ[k];
+          res.h[k] = d.fa * a.h[k] + d.fb * b.h[k] + d.faa * a.g[i] * a.g[j] +
+                     d.fab * (a.g[i] * b.g[j] + a.g[j] * b.g[i]) + d.fbb * b.g[i] * b.g[j];
+        }
+        o = res;
+        break;
+      }
+      default: {
+        const UnaryDerivatives d = unary_derivatives(in.op, a.v, in.imm);
+        Jet2 res;
+        res.v = d.v;
+        for (int k = 0; k < 3; ++k) res.g[k] = d.d1 * a.g[k];
+        for (int k = 0; k < 6; ++k) res.h[k] = d.d1 * a.h[k] + d.d2 * a.g[kPairI[k]] * a.g[kPairJ[k]];
+        o = res;
+      }
+    }
+  }
+  const Jet2& f = r[t.result];
+  SecondOrder s;
+  s.value = f.v;
+  s.gradient = Vec3(f.g[0], f.g[1], f.g[2]);
+  s.hessian << f.h[0], f.h[1], f.h[2], f.h[1], f.h[3], f.h[4], f.h[2], f.h[4], f.h[5];
+  return s;
+}
+
+}  // namespace
+
+double evaluate(const Tape& tape, const Vec3& p) {
+  return with_registers<double, 128>(tape.registers, [&](double* r) { return run_value(tape, r, p); });
+}
+
+ValueGradient evaluate_gradient(const Tape& tape, const Vec3& p) {
+  return with_registers<Dual, 64>(tape.registers, [&](Dual* r) { return run_gradient(tape, r, p); });
+}
+
+SecondOrder evaluate_second_order(const Tape& tape, const Vec3& p) {
+  return with_registers<Jet2, 32>(tape.registers, [&](Jet2* r) { return run_second_order(tape, r, p); });
+}
+
+}  // namespace isopatch::expr

@@ -1,0 +1,31 @@
+#pragma once
+// The evaluators of a tape. They share nothing but the (immutable) tape; scratch registers live on
+// the stack or in thread-local buffers, so every function is safe to call from many threads and
+// allocates nothing once a thread has seen the tape size.
+
+#include "expr/tape.hpp"
+
+#include <isopatch/geometry.hpp>
+#include <isopatch/interval.hpp>
+#include <isopatch/surface.hpp>
+
+#include <cstddef>
+#include <span>
+
+namespace isopatch::expr {
+
+/// Batch block length: registers hold this many points in structure-of-arrays form.
+inline constexpr std::size_t kBlock = 256;
+
+double evaluate(const Tape& tape, const Vec3& p);
+ValueGradient evaluate_gradient(const Tape& tape, const Vec3& p);
+SecondOrder evaluate_second_order(const Tape& tape, const Vec3& p);
+
+void evaluate_batch(const Tape& tape, const double* x, const double* y, const double* z, double* out,
+                    std::size_t n);
+void evaluate_batch(const Tape& tape, std::span<const Vec3> points, std::span<double> out);
+
+Interval evaluate_interval(const Tape& tape, const Box& box);
+IntervalGradient evaluate_interval_gradient(const Tape& tape, const Box& box);
+
+}  // namespace isopatch::expr

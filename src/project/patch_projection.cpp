@@ -1,0 +1,60 @@
+#include "project/patch_projection.hpp"
+
+#include <cmath>
+
+#include "project/ray_march.hpp"
+
+namespace isopatch {
+
+bool triangles_agree_with_gradient(const PatchTemplate& patch, const std::vector<SurfacePoint>& points) {
+  for (const TemplateTriangle& t : patch.triangles()) {
+    const SurfacePoint& a = points[static_cast<std::size_t>(t[0])];
+    const SurfacePoint& b = points[static_cast<std::size_t>(t[1])];
+    const SurfacePoint& c = points[static_cast<std::size_t>(t[2])];
+    const Vec3 normal = (b.position - a.position).cross(c.position - a.position);
+    if (!(normal.dot(a.gradient.normalized() + b.gradient.normalized() + c.gradient.normalized()) > 0.0))
+      return false;
+  }
+  return true;
+}
+
+PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const std::vector<Vec3>& corner_positions,
+                           const std::vector<Vec3>& corner_directions, const Box& cell,
+                           const ProjectionParams& params, std::vector<SurfacePoint>& points,
+                           PatchStats& stats) {
+  const int n = patch.sides();
+  RayMarchSettings march;
+  march.steps = params.march_steps;
+  for (std::size_t v = 0; v < patch.vertex_count(); ++v) {
+    if (patch.tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;
+    const auto lambda = patch.lambda(static_cast<int>(v));
+    Vec3 base = Vec3::Zero();
+    Vec3 direction = Vec3::Zero();
+    for (int k = 0; k < n; ++k) {
+      base += lambda[static_cast<std::size_t>(k)] * corner_positions[static_cast<std::size_t>(k)];
+      direction += lambda[static_cast<std::size_t>(k)] * corner_directions[static_cast<std::size_t>(k)];
+    }
+    const double f_base = f.value(base);
+    auto hit = march_to_surface(f, base, f_base, direction, cell, march);
+    auto acceptable = [&](const RayHit& h, ValueGradient& vg) {
+      vg = f.value_gradient(h.point);
+      const double norm = vg.gradient.norm();
+      return norm > 0.0 && std::abs(h.ray_direction.dot(vg.gradient)) >= params.cos_max_ray_angle * norm;
+    };
+    ValueGradient vg;
+    if (!hit || !acceptable(*hit, vg)) {
+      // Where the interpolated direction grazes the surface (typically a cell that the surface nearly
+      // touches along a face), an interior vertex may instead move along grad f at its base point:
+      // only boundary vertices must keep to their face planes.
+      ++stats.gradient_rays;
+      const Vec3 g = f.value_gradient(base).gradient;
+      hit = march_to_surface(f, base, f_base, g, cell, march);
+      if (!hit) return PatchVerdict::RayMissed;
+      if (!acceptable(*hit, vg)) return PatchVerdict::RayAngle;
+    }
+    points[v] = {hit->point, vg.gradient};
+  }
+  return triangles_agree_with_gradient(patch, points) ? PatchVerdict::Accepted : PatchVerdict::Flipped;
+}
+
+}  // namespace isopatch

@@ -1,0 +1,370 @@
+// The projection mesher for whole surfaces (see include/isopatch/projection.hpp). Three phases per
+// partition, each a loop over independent items, so they can later run in parallel with the same
+// output: (1) the boundary vertices of every shared side, (2) every patch, (3) assembly by IDs.
+#include <isopatch/error.hpp>
+#include <isopatch/projection.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <tuple>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <string>
+
+#include "partition/partition.hpp"
+#include "patch/patch_template.hpp"
+#include "project/patch_projection.hpp"
+#include "project/ray_march.hpp"
+#include "project/side_points.hpp"
+#include "surface/sampler.hpp"
+
+namespace isopatch {
+namespace {
+
+/// A side shared by two loops: crossing ids from < to, and the face it lies on.
+struct Side {
+  std::uint32_t from = 0;
+  std::uint32_t to = 0;
+  FaceId face;
+  friend auto operator<=>(const Side& a, const Side& b) { return std::tie(a.from, a.to) <=> std::tie(b.from, b.to); }
+  friend bool operator==(const Side& a, const Side& b) { return a.from == b.from && a.to == b.to; }
+};
+
+struct Counters {
+  std::map<int, std::size_t> patches_by_sides;
+  std::size_t rejected_patches = 0;
+  std::map<PatchVerdict, std::size_t> rejected_by_verdict;
+  std::size_t rejected_sides = 0;
+  std::size_t fallback_cells = 0;
+  std::size_t unprojected_vertices = 0;
+  PatchStats patch;
+};
+
+void check_settings(const Settings& s) {
+  if (s.edge_length && !(std::isfinite(*s.edge_length) && *s.edge_length > 0.0))
+    throw InputError("edge length must be a positive number");
+  if (s.resolution < PatchTemplate::kMinResolution || s.resolution > PatchTemplate::kMaxResolution)
+    throw InputError("resolution must be between 1 and 64, got " + std::to_string(s.resolution));
+  if (s.min_depth < 0 || s.max_depth > 12 || s.min_depth > s.max_depth)
+    throw InputError("depths must satisfy 0 <= min-depth <= max-depth <= 12, got " + std::to_string(s.min_depth) +
+                     " and " + std::to_string(s.max_depth));
+  if (!(s.max_ray_angle > 0.0 && s.max_ray_angle < 90.0) ||
+      !(s.max_boundary_ray_angle > 0.0 && s.max_boundary_ray_angle < 90.0))
+    throw InputError("acceptance angles must lie strictly between 0 and 90 degrees");
+  if (s.march_steps < 4 || s.march_steps > 4096) throw InputError("march steps must be between 4 and 4096");
+  if (s.refinement_levels < 0 || s.refinement_levels > 12)
+    throw InputError("refinement levels must be between 0 and 12");
+}
+
+ProjectionParams projection_params(const Settings& s) {
+  const double to_radians = std::numbers::pi / 180.0;
+  ProjectionParams p;
+  p.resolution = s.resolution;
+  p.march_steps = s.march_steps;
+  p.cos_max_ray_angle = std::cos(s.max_ray_angle * to_radians);
+  p.cos_max_boundary_angle = std::cos(s.max_boundary_ray_angle * to_radians);
+  return p;
+}
+
+/// The depth whose cells are closest (in log scale) to resolution * edge length.
+int initial_depth(const Box& box, const Settings& s) {
+  const double root = make_lattice(box, 0).size;
+  const double edge = s.edge_length.value_or(box.size().maxCoeff() / 64.0);
+  const double depth = std::round(std::log2(root / (edge * s.resolution)));
+  return static_cast<int>(std::clamp(depth, static_cast<double>(s.min_depth), static_cast<double>(s.max_depth)));
+}
+
+CoordinateKind coordinate_kind(const Settings& s) {
+  return s.coordinates == Settings::Coordinates::MeanValue ? CoordinateKind::MeanValue : CoordinateKind::Wachspress;
+}
+
+/// Leaves whose topology is in doubt (two loops, an ambiguous face, an edge crossed twice, no loop):
+/// only a finer partition helps. The other single-sheet tests (face, normal cone) are sufficient
+/// conditions; a leaf failing only those still gets its patch, and the acceptance tests decide.
+bool needs_refinement(const Leaf& leaf) {
+  if (leaf.loops.size() != 1) return true;
+  switch (leaf.reason) {
+    case ComplexReason::None:
+    case ComplexReason::FaceTest:
+    case ComplexReason::NormalCone: return false;
+    case ComplexReason::SeveralLoops:
+    case ComplexReason::AmbiguousFace:
+    case ComplexReason::EdgeTest:
+    case ComplexReason::Orientation: return true;
+  }
+  return true;
+}
+
+std::size_t leaves_needing_refinement(const Partition& partition) {
+  return static_cast<std::size_t>(std::count_if(partition.leaves.begin(), partition.leaves.end(), needs_refinement));
+}
+
+void check_cancel(const Settings& s) {
+  if (s.cancel && s.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
+}
+
+void check_vertex_budget(const Settings& s, std::size_t vertices) {
+  if (s.max_vertices > 0 && vertices > s.max_vertices)
+    throw LimitError("the mesh would exceed --max-vertices " + std::to_string(s.max_vertices));
+}
+
+/// Meshes one partition. Returns nullopt when a cell is rejected and `last` is false (the caller refines);
+/// with `last`, rejected and complex cells are closed by fans over their shared boundaries.
+class PartitionMesher {
+ public:
+  PartitionMesher(const Sampler& f, const Partition& partition, const Settings& settings, bool last)
+      : f_(f), part_(partition), settings_(settings), params_(projection_params(settings)), last_(last) {}
+
+  std::optional<Mesh> run(Counters& counters) {
+    collect_sides();
+    if (!compute_sides(counters)) return std::nullopt;
+    for (const Leaf& leaf : part_.leaves) {
+      check_cancel(settings_);
+      if (!mesh_leaf(leaf, counters)) return std::nullopt;
+      check_vertex_budget(settings_, mesh_.positions.size());
+    }
+    if (settings_.vertex_roles) mesh_.set_attribute("role", std::move(roles_));
+    return std::move(mesh_);
+  }
+
+ private:
+  std::size_t inner_points() const { return static_cast<std::size_t>(params_.resolution - 1); }
+
+  void collect_sides() {
+    for (const Leaf& leaf : part_.leaves)
+      for (const Loop& loop : leaf.loops)
+        for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+          const std::uint32_t a = loop.corners[k];
+          const std::uint32_t b = loop.corners[(k + 1) % loop.corners.size()];
+          sides_.push_back(Side{std::min(a, b), std::max(a, b), loop.side_faces[k]});
+        }
+    std::sort(sides_.begin(), sides_.end());
+    sides_.erase(std::unique(sides_.begin(), sides_.end()), sides_.end());
+  }
+
+  std::size_t side_index(std::uint32_t a, std::uint32_t b) const {
+    const Side key{std::min(a, b), std::max(a, b), FaceId{}};
+    const auto it = std::lower_bound(sides_.begin(), sides_.end(), key);
+    if (it == sides_.end() || !(*it == key)) throw Error(ErrorKind::Internal, "projection: a loop side has no record");
+    return static_cast<std::size_t>(it - sides_.begin());
+  }
+
+  /// Phase 1: boundary vertices of every side; vertex ids: crossings first, then sides in key order.
+  bool compute_sides(Counters& counters) {
+    for (const Crossing& c : part_.crossings) mesh_.positions.push_back(c.position);
+    roles_.assign(part_.crossings.size(), 0.0f);
+    gradients_.reserve(part_.crossings.size());
+    for (const Crossing& c : part_.crossings) gradients_.push_back(c.gradient);
+    side_points_.reserve(sides_.size());
+    side_accepted_.reserve(sides_.size());
+    for (const Side& side : sides_) {
+      check_cancel(settings_);
+      SidePoints s = sample_side(f_, part_.lattice, part_.crossings[side.from], part_.crossings[side.to],
+                                 side.face, params_);
+      if (!s.accepted) {
+        ++counters.rejected_sides;
+        if (!last_) return false;
+      }
+      side_accepted_.push_back(s.accepted);
+      for (const SurfacePoint& p : s.points) {
+        mesh_.positions.push_back(p.position);
+        gradients_.push_back(p.gradient);
+        roles_.push_back(1.0f);
+      }
+      side_points_.push_back(std::move(s.points));
+      check_vertex_budget(settings_, mesh_.positions.size());
+    }
+    return true;
+  }
+
+  /// Global id of inner point i (1..r-1, counted from corner a) of the side from crossing a to b.
+  std::uint32_t side_vertex(std::uint32_t a, std::uint32_t b, int i) const {
+    const std::size_t s = side_index(a, b);
+    const std::size_t j = a < b ? static_cast<std::size_t>(i) : static_cast<std::size_t>(params_.resolution - i);
+    return static_cast<std::uint32_t>(part_.crossings.size() + s * inner_points() + (j - 1));
+  }
+
+  bool loop_sides_accepted(const Loop& loop) const {
+    for (std::size_t k = 0; k < loop.corners.size(); ++k)
+      if (!side_accepted_[side_index(loop.corners[k], loop.corners[(k + 1) % loop.corners.size()])]) return false;
+    return true;
+  }
+
+  /// Phase 2 for one leaf: a projected patch, or (at the last depth) fans when it fails.
+  bool mesh_leaf(const Leaf& leaf, Counters& counters) {
+    const bool simple = !needs_refinement(leaf) && leaf.loops.front().corners.size() >= 3 &&
+                        leaf.loops.front().corners.size() <= 12;
+    if (simple && loop_sides_accepted(leaf.loops.front())) {
+      const PatchVerdict verdict = mesh_patch(leaf, leaf.loops.front(), counters.patch);
+      if (verdict == PatchVerdict::Accepted) {
+        ++counters.patches_by_sides[static_cast<int>(leaf.loops.front().corners.size())];
+        return true;
+      }
+      ++counters.rejected_patches;
+      ++counters.rejected_by_verdict[verdict];
+    }
+    if (!last_) return false;
+    ++counters.fallback_cells;
+    for (const Loop& loop : leaf.loops) mesh_fan(leaf, loop, counters);
+    return true;
+  }
+
+  PatchVerdict mesh_patch(const Leaf& leaf, const Loop& loop, PatchStats& patch_stats) {
+    const int n = static_cast<int>(loop.corners.size());
+    const auto patch = patch_template(n, params_.resolution, coordinate_kind(settings_));
+    std::vector<Vec3> q, d;
+    for (std::uint32_t c : loop.corners) {
+      q.push_back(part_.crossings[c].position);
+      d.push_back(part_.crossings[c].direction);
+    }
+    std::vector<std::uint32_t> ids(patch->vertex_count(), 0);
+    std::vector<SurfacePoint> points(patch->vertex_count());
+    for (std::size_t v = 0; v < patch->vertex_count(); ++v) {
+      const VertexTag& tag = patch->tag(static_cast<int>(v));
+      if (tag.kind == VertexTag::Kind::Interior) continue;
+      const auto k = static_cast<std::size_t>(tag.side);
+      const std::uint32_t a = loop.corners[k];
+      const std::uint32_t b = loop.corners[(k + 1) % loop.corners.size()];
+      ids[v] = tag.kind == VertexTag::Kind::Corner ? a : side_vertex(a, b, tag.index);
+      points[v] = {mesh_.positions[ids[v]], gradients_[ids[v]]};
+    }
+    const PatchVerdict verdict = project_patch(f_, *patch, q, d, leaf.box, params_, points, patch_stats);
+    if (verdict != PatchVerdict::Accepted) return verdict;
+    for (std::size_t v = 0; v < patch->vertex_count(); ++v) {
+      if (patch->tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;
+      ids[v] = static_cast<std::uint32_t>(mesh_.positions.size());
+      mesh_.positions.push_back(points[v].position);
+      gradients_.push_back(points[v].gradient);
+      roles_.push_back(static_cast<int>(v) == patch->centre() ? 3.0f : 2.0f);
+    }
+    for (const TemplateTriangle& t : patch->triangles())
+      mesh_.triangles.push_back({ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])],
+                                 ids[static_cast<std::size_t>(t[2])]});
+    return PatchVerdict::Accepted;
+  }
+
+  /// Fallback: the loop's boundary polygon (corners and shared side vertices) fanned around a centre
+  /// vertex moved onto f = 0 along the polygon's normal when a ray finds the surface in the cell.
+  void mesh_fan(const Leaf& leaf, const Loop& loop, Counters& counters) {
+    std::vector<std::uint32_t> polygon;
+    for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+      const std::uint32_t a = loop.corners[k];
+      const std::uint32_t b = loop.corners[(k + 1) % loop.corners.size()];
+      polygon.push_back(a);
+      for (int i = 1; i < params_.resolution; ++i) polygon.push_back(side_vertex(a, b, i));
+    }
+    Vec3 centre = Vec3::Zero();
+    Vec3 normal = Vec3::Zero();
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      const Vec3& p = mesh_.positions[polygon[k]];
+      const Vec3& q = mesh_.positions[polygon[(k + 1) % polygon.size()]];
+      centre += p;
+      normal += p.cross(q);
+    }
+    centre /= static_cast<double>(polygon.size());
+    // The centre moves onto f = 0 along the polygon's normal, else along grad f, within the cell grown
+    // by half its size (a fallback cell is a poor fit by definition; its fan must still close it).
+    RayMarchSettings march;
+    march.steps = params_.march_steps;
+    const Box region{leaf.box.lo - 0.5 * leaf.box.size(), leaf.box.hi + 0.5 * leaf.box.size()};
+    const double f_centre = f_.value(centre);
+    std::optional<RayHit> hit;
+    if (normal.norm() > 0.0) hit = march_to_surface(f_, centre, f_centre, normal, region, march);
+    if (!hit) hit = march_to_surface(f_, centre, f_centre, f_.value_gradient(centre).gradient, region, march);
+    Vec3 position = centre;
+    Vec3 gradient = normal;
+    if (hit) {
+      position = hit->point;
+      gradient = f_.value_gradient(position).gradient;
+    } else {
+      ++counters.unprojected_vertices;
+    }
+    const auto c = static_cast<std::uint32_t>(mesh_.positions.size());
+    mesh_.positions.push_back(position);
+    gradients_.push_back(gradient);
+    roles_.push_back(4.0f);
+    for (std::size_t k = 0; k < polygon.size(); ++k)
+      mesh_.triangles.push_back({c, polygon[k], polygon[(k + 1) % polygon.size()]});
+  }
+
+  const Sampler& f_;
+  const Partition& part_;
+  const Settings& settings_;
+  ProjectionParams params_;
+  bool last_;
+  std::vector<Side> sides_;
+  std::vector<std::vector<SurfacePoint>> side_points_;
+  std::vector<bool> side_accepted_;
+  std::vector<Vec3> gradients_;  // per mesh vertex
+  std::vector<float> roles_;     // per mesh vertex, see Settings::vertex_roles
+  Mesh mesh_;
+};
+
+}  // namespace
+
+Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  check_settings(settings);
+  const Box box = settings.box.value_or(surface.box());
+  if (!box.valid()) throw InputError("the box must have lo < hi on every axis");
+  const Sampler f(surface);
+  Counters counters;
+  std::uint64_t partition_values = 0, partition_gradients = 0;
+  std::size_t refinements = 0, complex_leaves = 0;
+  const int first_depth = initial_depth(box, settings);
+  int last_depth = std::min(settings.max_depth, first_depth + settings.refinement_levels);
+  for (int depth = first_depth;; ++depth) {
+    check_cancel(settings);
+    PartitionSettings ps;
+    ps.surface_depth = depth;
+    ps.max_depth = std::max(settings.max_depth, ps.surface_depth);
+    ps.cancel = settings.cancel;
+    const Partition partition = build_partition(surface, box, ps);
+    partition_values += partition.stats.value_evaluations;
+    partition_gradients += partition.stats.gradient_evaluations;
+    const bool last = depth >= last_depth;
+    if (settings.progress) settings.progress(Progress{static_cast<std::size_t>(depth), static_cast<std::size_t>(settings.max_depth)});
+    if (partition.leaves.empty()) {
+      // Nothing found yet: look finer (cheap where intervals or the heuristic prune), down to max_depth.
+      last_depth = std::min(settings.max_depth, std::max(last_depth, depth + 1 + settings.refinement_levels));
+      if (depth >= settings.max_depth) throw NoSurfaceError("no surface in the box: f = 0 crosses no cell down to depth " + std::to_string(depth));
+      continue;
+    }
+    const std::size_t doubtful = leaves_needing_refinement(partition);
+    if (!last && doubtful > 0) {
+      complex_leaves += doubtful;
+      ++refinements;
+      continue;
+    }
+    PartitionMesher mesher(f, partition, settings, last);
+    std::optional<Mesh> mesh = mesher.run(counters);
+    if (!mesh) {
+      ++refinements;
+      continue;
+    }
+    mesh->triangles.shrink_to_fit();
+    if (stats) {
+      stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      stats->value_evaluations = partition_values + f.value_count();
+      stats->gradient_evaluations = partition_gradients + f.gradient_count();
+      stats->vertices = mesh->vertex_count();
+      stats->triangles = mesh->triangle_count();
+      stats->extra["depth"] = depth;
+      stats->extra["resolution"] = settings.resolution;
+      for (const auto& [n, count] : counters.patches_by_sides)
+        stats->extra["patches_" + std::to_string(n)] = static_cast<double>(count);
+      stats->extra["rejected_patches"] = static_cast<double>(counters.rejected_patches);
+      stats->extra["rejected_sides"] = static_cast<double>(counters.rejected_sides);
+      stats->extra["complex_cells"] = static_cast<double>(complex_leaves + doubtful);
+      stats->extra["refinements"] = static_cast<double>(refinements);
+      stats->extra["fallback_cells"] = static_cast<double>(counters.fallback_cells);
+      stats->extra["unprojected"] = static_cast<double>(counters.unprojected_vertices);
+      stats->extra["gradient_rays"] = static_cast<double>(counters.patch.gradient_rays);
+    }
+    return std::move(*mesh);
+  }
+}
+
+}  // namespace isopatch

@@ -1,0 +1,48 @@
+#include "project/side_points.hpp"
+
+#include <cmath>
+
+#include "project/ray_march.hpp"
+
+namespace isopatch {
+
+Box face_box(const Lattice& lattice, const FaceId& face) {
+  LatticePoint upper = face.lower;
+  for (std::uint32_t a = 0; a < 3; ++a)
+    if (a != face.axis) upper[a] += face.size;
+  return Box{lattice.point(face.lower), lattice.point(upper)};
+}
+
+SidePoints sample_side(const Sampler& f, const Lattice& lattice, const Crossing& from, const Crossing& to,
+                       const FaceId& face, const ProjectionParams& params) {
+  const int r = params.resolution;
+  const Box region = face_box(lattice, face);
+  RayMarchSettings march;
+  march.steps = params.march_steps;
+  SidePoints side;
+  side.points.reserve(static_cast<std::size_t>(r > 1 ? r - 1 : 0));
+  for (int j = 1; j < r; ++j) {
+    const double t = static_cast<double>(j) / r;
+    const Vec3 start = (1.0 - t) * from.position + t * to.position;
+    // Both corner directions are cell-edge directions of this face: the sum lies in its plane and is
+    // never zero (adjacent edges are perpendicular, opposite ones point the same way).
+    const Vec3 direction = (1.0 - t) * from.direction + t * to.direction;
+    const double f_start = f.value(start);
+    const auto hit = march_to_surface(f, start, f_start, direction, region, march);
+    if (!hit) {
+      side.accepted = false;
+      side.points.push_back({start, f.value_gradient(start).gradient});
+      continue;
+    }
+    const ValueGradient vg = f.value_gradient(hit->point);
+    Vec3 in_face = vg.gradient;
+    in_face[face.axis] = 0.0;
+    const double norm = in_face.norm();
+    if (!(norm > 0.0) || std::abs(hit->ray_direction.dot(in_face)) < params.cos_max_boundary_angle * norm)
+      side.accepted = false;
+    side.points.push_back({hit->point, vg.gradient});
+  }
+  return side;
+}
+
+}  // namespace isopatch

@@ -1,0 +1,122 @@
+// Whole-surface meshes by projection: topology, accuracy and valence invariants.
+#include <isopatch/isopatch.hpp>
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include "mesh_checks.hpp"
+#include "self_intersection.hpp"
+#include "test_surfaces.hpp"
+
+namespace isopatch {
+namespace {
+
+struct Case {
+  SurfacePtr surface;
+  int genus;
+  double edge_length;
+  int resolution;
+};
+
+void expect_valid_projection_mesh(const Case& c) {
+  Settings settings;
+  settings.edge_length = c.edge_length;
+  settings.resolution = c.resolution;
+  settings.vertex_roles = true;
+  MeshStats stats;
+  const Mesh mesh = mesh_projection(*c.surface, settings, &stats);
+  const std::string what = c.surface->name() + " r=" + std::to_string(c.resolution);
+  ASSERT_GT(mesh.vertex_count(), 100u) << what;
+  const TopologyReport t = analyze_topology(mesh);
+  EXPECT_TRUE(t.watertight()) << what << ": " << t.boundary_edges << " boundary, " << t.non_manifold_edges
+                              << " non-manifold edges";
+  EXPECT_TRUE(t.manifold()) << what;
+  EXPECT_TRUE(t.outward_oriented()) << what;
+  EXPECT_EQ(t.components.size(), 1u) << what;
+  EXPECT_EQ(t.genus, c.genus) << what;
+  EXPECT_EQ(t.degenerate_triangles, 0u) << what;
+  EXPECT_EQ(t.duplicate_vertices, 0u) << what;
+  EXPECT_EQ(test::count_self_intersections(mesh), 0u) << what;
+  EXPECT_EQ(stats.extra["unprojected"], 0.0) << what;
+  const double diagonal = c.surface->box().diagonal();
+  EXPECT_LT(test::max_vertex_distance(*c.surface, mesh), 1e-9 * diagonal) << what;
+  // Every interior vertex of a patch has valence 6; only patch centres (role 3) may differ.
+  const std::vector<int> valence = test::valences(mesh);
+  const std::vector<float>& role = *mesh.find_attribute("role");
+  std::size_t interior = 0, regular = 0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+    if (role[v] == 2.0f) {
+      ++interior;
+      regular += valence[v] == 6;
+    }
+  EXPECT_GT(interior, 0u) << what;
+  EXPECT_EQ(regular, interior) << what;
+}
+
+TEST(ProjectionMesher, SphereAtTwoResolutions) {
+  expect_valid_projection_mesh({test::sphere(), 0, 0.08, 4});
+  expect_valid_projection_mesh({test::sphere(), 0, 0.05, 8});
+}
+
+TEST(ProjectionMesher, SphereThroughLatticePoints) {
+  // Radius 0.5 centred in [-1,1]^3: without the lattice offset, lattice points lie on f = 0.
+  const auto s = make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 0.25; },
+                              Box{Vec3::Constant(-1), Vec3::Constant(1)}, "sphere_r05");
+  expect_valid_projection_mesh({s, 0, 0.04, 4});
+  expect_valid_projection_mesh({s, 0, 0.02, 6});
+}
+
+TEST(ProjectionMesher, TorusAtTwoResolutions) {
+  expect_valid_projection_mesh({test::torus(), 1, 0.05, 4});
+  expect_valid_projection_mesh({test::torus(), 1, 0.05, 8});
+}
+
+TEST(ProjectionMesher, TanglecubeAtTwoResolutions) {
+  expect_valid_projection_mesh({test::tanglecube(), 5, 0.12, 4});
+  expect_valid_projection_mesh({test::tanglecube(), 5, 0.1, 6});
+}
+
+TEST(ProjectionMesher, Genus2AtTwoResolutions) {
+  expect_valid_projection_mesh({test::genus2(), 2, 0.04, 3});
+  expect_valid_projection_mesh({test::genus2(), 2, 0.04, 4});
+}
+
+TEST(ProjectionMesher, RejectsBadSettings) {
+  const auto s = test::sphere();
+  Settings settings;
+  settings.resolution = 0;
+  EXPECT_THROW(mesh_projection(*s, settings), InputError);
+  settings = Settings{};
+  settings.edge_length = -1.0;
+  EXPECT_THROW(mesh_projection(*s, settings), InputError);
+  settings = Settings{};
+  settings.min_depth = 5;
+  settings.max_depth = 3;
+  EXPECT_THROW(mesh_projection(*s, settings), InputError);
+}
+
+TEST(ProjectionMesher, ReportsNoSurfaceAndNaN) {
+  const Box box{Vec3::Constant(-1), Vec3::Constant(1)};
+  Settings settings;
+  settings.max_depth = 4;
+  EXPECT_THROW(mesh_projection(*make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z + 1.0; }, box),
+                               settings),
+               NoSurfaceError);
+  EXPECT_THROW(
+      mesh_projection(*make_surface([](auto x, auto y, auto z) { return sqrt(x) + y * y + z * z - 0.5; }, box), settings),
+      EvaluationError);
+}
+
+TEST(ProjectionMesher, HonoursVertexBudgetAndCancel) {
+  const auto s = test::torus();
+  Settings settings;
+  settings.max_vertices = 100;
+  EXPECT_THROW(mesh_projection(*s, settings), LimitError);
+  std::atomic<bool> cancel{true};
+  settings = Settings{};
+  settings.cancel = &cancel;
+  EXPECT_THROW(mesh_projection(*s, settings), LimitError);
+}
+
+}  // namespace
+}  // namespace isopatch
