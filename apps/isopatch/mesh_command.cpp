@@ -1,4 +1,5 @@
 // `isopatch mesh`: SURFACE (catalogue name, formula or @file) -> Settings -> mesh_surface -> file.
+#include <isopatch/curvature.hpp>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/resolve_surface.hpp>
 
@@ -25,6 +26,7 @@ struct MeshOptions {
   int fair = 0;
   std::size_t max_vertices = 0;
   bool quiet = false;
+  bool fields = false;
   Settings defaults;
   std::optional<double> edge_length;
   int resolution = defaults.resolution;
@@ -44,7 +46,7 @@ void print_summary(const std::string& surface_name, const Settings& settings, co
   if (stats.gradient_evaluations > 0)
     std::printf("grad evals %s\n", group_digits(stats.gradient_evaluations).c_str());
   for (const auto& [name, value] : stats.extra) std::printf("%-10s %g\n", name.c_str(), value);
-  std::printf("time       %.3f s\n", stats.seconds);
+  std::printf("time       %.6f s\n", stats.seconds);
   std::printf("wrote      %s\n", output.c_str());
 }
 
@@ -72,7 +74,8 @@ int run_mesh(const MeshOptions& o) {
   check_output_path(o.output);
   const SurfacePtr surface = resolve_surface(o.surface, settings.box, parse_params(o.params));
   MeshStats stats;
-  const Mesh mesh = mesh_surface(*surface, settings, &stats);
+  Mesh mesh = mesh_surface(*surface, settings, &stats);
+  if (o.fields) attach_fields(mesh, *surface);
   write_mesh(mesh, o.output);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
   return 0;
@@ -89,7 +92,7 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
   cmd->add_option("--edge-length", o->edge_length, "Projection: target edge length (default: longest box side / 64)");
-  cmd->add_option("--resolution", o->resolution, "Projection: segments per patch side (1..64)")->capture_default_str();
+  cmd->add_option("--resolution", o->resolution, "Projection: segments per patch side (1..64; 0: from the edge length)")->capture_default_str();
   cmd->add_option("--min-depth", o->min_depth, "Projection: smallest octree depth of surface cells")
       ->capture_default_str();
   cmd->add_option("--max-depth", o->max_depth, "Projection: largest octree depth (refinement limit)")
@@ -108,6 +111,8 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--fair", o->fair, "Marching cubes: rounds of Laplace fairing with re-projection")
       ->capture_default_str();
   cmd->add_option("--max-vertices", o->max_vertices, "Stop with an error beyond this many vertices (0: none)");
+  cmd->add_flag("--fields", o->fields,
+               "Store discrete and exact mean and Gaussian curvature and the distance to f = 0 per vertex (PLY)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success");
   return [o] { return run_mesh(*o); };
 }

@@ -49,10 +49,11 @@ struct Settings {
   // --- Projection (Sipos & Salvi 2021) ---------------------------------------------------------
   /// Target edge length of the output. Empty: the longest box side / 64. Must be > 0.
   std::optional<double> edge_length;
-  /// Segments per patch side (the template resolution r), 1..64.
-  int resolution = 8;
+  /// Segments per patch side (the template resolution r), 1..64; 0 (default): chosen per depth as the
+  /// cell size over the edge length (4..8 at the starting depth, at least 2 after refinement).
+  int resolution = 0;
   /// Octree depth limits (the root cell is the box made cubic). Surface cells start at the depth whose
-  /// cell size is closest to resolution * edge_length, clamped to [min_depth, max_depth]; cells that
+  /// cell size fits the resolution and edge_length, clamped to [min_depth, max_depth]; cells that
   /// fail the single-sheet or acceptance tests are refined up to max_depth. 0 <= min <= max <= 12.
   int min_depth = 2;
   int max_depth = 8;

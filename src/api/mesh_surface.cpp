@@ -15,6 +15,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
         const FairingStats fairing = laplace_fair(mesh, surface, settings.fair_iterations);
         if (stats) {
           stats->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          stats->gradient_evaluations += fairing.gradient_evaluations;
           stats->extra["fair_iterations"] = settings.fair_iterations;
           stats->extra["fair_unconverged"] = static_cast<double>(fairing.unconverged);
         }

@@ -100,6 +100,7 @@ FairingStats laplace_fair(Mesh& mesh, const Surface& surface, int iterations) {
     }
     std::swap(mesh.positions, next);
   }
+  stats.gradient_evaluations = f.gradient_count();
   return stats;
 }
 

@@ -42,11 +42,15 @@ struct Counters {
   PatchStats patch;
 };
 
+/// Automatic resolution aims at this many segments per side (cells of 4..8 edge lengths).
+constexpr double kAutoSegments = 8.0;
+
 void check_settings(const Settings& s) {
   if (s.edge_length && !(std::isfinite(*s.edge_length) && *s.edge_length > 0.0))
     throw InputError("edge length must be a positive number");
-  if (s.resolution < PatchTemplate::kMinResolution || s.resolution > PatchTemplate::kMaxResolution)
-    throw InputError("resolution must be between 1 and 64, got " + std::to_string(s.resolution));
+  if (s.resolution != 0 &&
+      (s.resolution < PatchTemplate::kMinResolution || s.resolution > PatchTemplate::kMaxResolution))
+    throw InputError("resolution must be 0 (automatic) or between 1 and 64, got " + std::to_string(s.resolution));
   if (s.min_depth < 0 || s.max_depth > 12 || s.min_depth > s.max_depth)
     throw InputError("depths must satisfy 0 <= min-depth <= max-depth <= 12, got " + std::to_string(s.min_depth) +
                      " and " + std::to_string(s.max_depth));
@@ -58,22 +62,33 @@ void check_settings(const Settings& s) {
     throw InputError("refinement levels must be between 0 and 12");
 }
 
-ProjectionParams projection_params(const Settings& s) {
+ProjectionParams projection_params(const Settings& s, int resolution) {
   const double to_radians = std::numbers::pi / 180.0;
   ProjectionParams p;
-  p.resolution = s.resolution;
+  p.resolution = resolution;
   p.march_steps = s.march_steps;
   p.cos_max_ray_angle = std::cos(s.max_ray_angle * to_radians);
   p.cos_max_boundary_angle = std::cos(s.max_boundary_ray_angle * to_radians);
   return p;
 }
 
-/// The depth whose cells are closest (in log scale) to resolution * edge length.
-int initial_depth(const Box& box, const Settings& s) {
-  const double root = make_lattice(box, 0).size;
-  const double edge = s.edge_length.value_or(box.size().maxCoeff() / 64.0);
-  const double depth = std::round(std::log2(root / (edge * s.resolution)));
+double target_edge(const Box& box, const Settings& s) { return s.edge_length.value_or(box.size().maxCoeff() / 64.0); }
+
+/// With a fixed resolution r: the depth whose cells are closest (in log scale) to r * edge length.
+/// With automatic resolution: the coarsest depth whose cells are at most kAutoSegments edges long.
+int initial_depth(const Lattice& lattice, const Box& box, const Settings& s) {
+  const double edge = target_edge(box, s);
+  const double depth = s.resolution > 0 ? std::round(std::log2(lattice.size / (edge * s.resolution)))
+                                        : std::ceil(std::log2(lattice.size / (edge * kAutoSegments)) - 1e-9);
   return static_cast<int>(std::clamp(depth, static_cast<double>(s.min_depth), static_cast<double>(s.max_depth)));
+}
+
+/// Segments per side at `depth`: the fixed resolution, or the cell size over the target edge length.
+int resolution_at(const Lattice& lattice, const Box& box, const Settings& s, int depth) {
+  if (s.resolution > 0) return s.resolution;
+  const double cell = std::ldexp(lattice.size, -depth);
+  const double r = std::round(cell / target_edge(box, s));
+  return static_cast<int>(std::clamp(r, 2.0, static_cast<double>(PatchTemplate::kMaxResolution)));
 }
 
 CoordinateKind coordinate_kind(const Settings& s) {
@@ -114,8 +129,8 @@ void check_vertex_budget(const Settings& s, std::size_t vertices) {
 /// with `last`, rejected and complex cells are closed by fans over their shared boundaries.
 class PartitionMesher {
  public:
-  PartitionMesher(const Sampler& f, const Partition& partition, const Settings& settings, bool last)
-      : f_(f), part_(partition), settings_(settings), params_(projection_params(settings)), last_(last) {}
+  PartitionMesher(const Sampler& f, const Partition& partition, const Settings& settings, int resolution, bool last)
+      : f_(f), part_(partition), settings_(settings), params_(projection_params(settings, resolution)), last_(last) {}
 
   std::optional<Mesh> run(Counters& counters) {
     collect_sides();
@@ -313,7 +328,8 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   Counters counters;
   std::uint64_t partition_values = 0, partition_gradients = 0;
   std::size_t refinements = 0, complex_leaves = 0;
-  const int first_depth = initial_depth(box, settings);
+  const Lattice root = make_lattice(box, 0);
+  const int first_depth = initial_depth(root, box, settings);
   int last_depth = std::min(settings.max_depth, first_depth + settings.refinement_levels);
   for (int depth = first_depth;; ++depth) {
     check_cancel(settings);
@@ -338,7 +354,8 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       ++refinements;
       continue;
     }
-    PartitionMesher mesher(f, partition, settings, last);
+    const int resolution = resolution_at(root, box, settings, depth);
+    PartitionMesher mesher(f, partition, settings, resolution, last);
     std::optional<Mesh> mesh = mesher.run(counters);
     if (!mesh) {
       ++refinements;
@@ -352,7 +369,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       stats->vertices = mesh->vertex_count();
       stats->triangles = mesh->triangle_count();
       stats->extra["depth"] = depth;
-      stats->extra["resolution"] = settings.resolution;
+      stats->extra["resolution"] = resolution;
       for (const auto& [n, count] : counters.patches_by_sides)
         stats->extra["patches_" + std::to_string(n)] = static_cast<double>(count);
       stats->extra["rejected_patches"] = static_cast<double>(counters.rejected_patches);

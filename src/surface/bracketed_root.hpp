@@ -1,42 +1,54 @@
 #pragma once
-// A bracketed scalar root finder: the Illinois variant of regula falsi with a bisection safeguard
-// (Dowell & Jarratt 1971). Used for edge crossings and for the end of every ray march.
+// A bracketed scalar root finder shared by every mesher: the Illinois variant of regula falsi
+// (Dowell & Jarratt 1971) with a bisection safeguard. Illinois halves the value kept at a stagnant end,
+// which restores superlinear convergence where plain regula falsi crawls; bisection whenever two steps
+// did not halve the bracket bounds the worst case to plain bisection.
 
+#include <algorithm>
 #include <cmath>
-#include <utility>
+#include <limits>
 
 namespace isopatch {
 
-/// Finds t in [a, b] with phi(t) = 0, given phi(a) = fa and phi(b) = fb of opposite signs under the
-/// sign rule (v >= 0 positive). Stops when the bracket is narrower than `tolerance` or after
-/// `max_iterations`. Returns the end of the final bracket with the smaller |phi| (the exact root when
-/// hit). Never leaves [a, b].
+/// Finds t between a and b with phi(t) = 0, given fa = phi(a) and fb = phi(b) of opposite signs under
+/// the sign rule (v >= 0 positive). Stops when the bracket is at most `tolerance` wide, phi is exactly 0,
+/// the bracket is down to adjacent doubles, or after `max_iterations` evaluations. Returns the end of
+/// the final bracket with the smaller |phi| (an end whose value is exactly 0 is returned as is).
 template <class Phi>
 double bracketed_root(Phi&& phi, double a, double fa, double b, double fb, double tolerance,
                       int max_iterations = 100) {
   if (fa == 0.0) return a;
   if (fb == 0.0) return b;
-  int side = 0;  // which end was kept last time (Illinois halving)
-  for (int it = 0; it < max_iterations && std::abs(b - a) > tolerance; ++it) {
-    double t = (a * fb - b * fa) / (fb - fa);
-    // Safeguard: fall back to bisection when the secant point is not strictly inside.
-    if (!(t > std::min(a, b) && t < std::max(a, b))) t = 0.5 * (a + b);
-    if (it % 4 == 3) t = 0.5 * (a + b);  // guarantees at least geometric shrinking of the bracket
-    const double ft = phi(t);
-    if (ft == 0.0) return t;
-    if ((ft >= 0.0) == (fb >= 0.0)) {
-      b = t;
-      fb = ft;
-      if (side == -1) fa *= 0.5;
-      side = -1;
+  double t_neg = fa < 0.0 ? a : b, g_neg = fa < 0.0 ? fa : fb;
+  double t_pos = fa < 0.0 ? b : a, g_pos = fa < 0.0 ? fb : fa;
+  double true_neg = g_neg, true_pos = g_pos;  // unhalved values, to pick the better end
+  int last_moved = 0;                         // -1: the negative end moved last, +1: the positive end
+  double width_last = std::numeric_limits<double>::infinity();
+  double width_before_last = width_last;
+  for (int step = 0; step < max_iterations; ++step) {
+    const double width = std::abs(t_pos - t_neg);
+    if (width <= tolerance) break;
+    const double lo = std::min(t_neg, t_pos), hi = std::max(t_neg, t_pos);
+    double t = t_neg - g_neg * (t_pos - t_neg) / (g_pos - g_neg);
+    if (!(t > lo && t < hi) || width > 0.5 * width_before_last) t = 0.5 * (lo + hi);
+    if (!(t > lo && t < hi)) break;  // adjacent doubles
+    width_before_last = width_last;
+    width_last = width;
+    const double g = phi(t);
+    if (g == 0.0) return t;
+    if (g < 0.0) {
+      t_neg = t;
+      g_neg = true_neg = g;
+      if (last_moved == -1) g_pos *= 0.5;
+      last_moved = -1;
     } else {
-      a = t;
-      fa = ft;
-      if (side == +1) fb *= 0.5;
-      side = +1;
+      t_pos = t;
+      g_pos = true_pos = g;
+      if (last_moved == +1) g_neg *= 0.5;
+      last_moved = +1;
     }
   }
-  return std::abs(fa) <= std::abs(fb) ? a : b;
+  return std::abs(true_neg) < std::abs(true_pos) ? t_neg : t_pos;
 }
 
 }  // namespace isopatch

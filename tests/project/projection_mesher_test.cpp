@@ -84,7 +84,9 @@ TEST(ProjectionMesher, Genus2AtTwoResolutions) {
 TEST(ProjectionMesher, RejectsBadSettings) {
   const auto s = test::sphere();
   Settings settings;
-  settings.resolution = 0;
+  settings.resolution = -1;
+  EXPECT_THROW(mesh_projection(*s, settings), InputError);
+  settings.resolution = 65;
   EXPECT_THROW(mesh_projection(*s, settings), InputError);
   settings = Settings{};
   settings.edge_length = -1.0;
@@ -116,6 +118,21 @@ TEST(ProjectionMesher, HonoursVertexBudgetAndCancel) {
   settings = Settings{};
   settings.cancel = &cancel;
   EXPECT_THROW(mesh_projection(*s, settings), LimitError);
+}
+
+TEST(ProjectionMesher, AutomaticResolutionFollowsTheEdgeLength) {
+  // Halving the edge length roughly quadruples the vertex count, whatever depth is chosen.
+  const auto s = test::torus();
+  Settings coarse, fine;
+  coarse.edge_length = 0.1;
+  fine.edge_length = 0.05;
+  MeshStats a, b;
+  const Mesh m1 = mesh_projection(*s, coarse, &a);
+  const Mesh m2 = mesh_projection(*s, fine, &b);
+  const double ratio = static_cast<double>(m2.vertex_count()) / static_cast<double>(m1.vertex_count());
+  EXPECT_GT(ratio, 2.5);
+  EXPECT_LT(ratio, 6.0);
+  EXPECT_GE(a.extra.at("resolution"), 2.0);
 }
 
 }  // namespace
