@@ -97,7 +97,7 @@ TEST(EdgeRoot, CheckValueNamesInfinity) {
     mc::check_value(std::numeric_limits<double>::infinity(), Vec3(1, 2, 3));
     FAIL() << "no error";
   } catch (const EvaluationError& e) {
-    EXPECT_EQ(std::string(e.what()), "f is inf at (1, 2, 3)");
+    EXPECT_EQ(std::string(e.what()), "f is infinite at (1, 2, 3)");
   }
   EXPECT_NO_THROW(mc::check_value(-1e300, Vec3::Zero()));
 }
