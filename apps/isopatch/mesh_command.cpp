@@ -34,6 +34,7 @@ struct MeshOptions {
   int max_depth = defaults.max_depth;
   int refinement_levels = defaults.refinement_levels;
   std::string coordinates = "wachspress";
+  std::string base = "barycentric";
   double max_ray_angle = defaults.max_ray_angle;
 };
 
@@ -70,6 +71,9 @@ int run_mesh(const MeshOptions& o) {
   if (o.coordinates == "wachspress") settings.coordinates = Settings::Coordinates::Wachspress;
   else if (o.coordinates == "mean-value") settings.coordinates = Settings::Coordinates::MeanValue;
   else throw InputError("unknown --coordinates '" + o.coordinates + "' (want wachspress or mean-value)");
+  if (o.base == "barycentric") settings.base = Settings::Base::Barycentric;
+  else if (o.base == "coons") settings.base = Settings::Base::Coons;
+  else throw InputError("unknown --base '" + o.base + "' (want barycentric or coons)");
 
   check_output_path(o.output);
   const SurfacePtr surface = resolve_surface(o.surface, settings.box, parse_params(o.params));
@@ -101,6 +105,8 @@ Runner add_mesh_command(CLI::App& app) {
                   "Projection: uniform refinement levels allowed when cells fail")
       ->capture_default_str();
   cmd->add_option("--coordinates", o->coordinates, "Projection: wachspress | mean-value")->capture_default_str();
+  cmd->add_option("--base", o->base, "Projection: barycentric | coons (exact face curves, C0 Coons base)")
+      ->capture_default_str();
   cmd->add_option("--max-ray-angle", o->max_ray_angle, "Projection: acceptance angle between ray and gradient")
       ->capture_default_str();
   cmd->add_option("--grid", o->grid, "Marching cubes: cells along the longest box axis")->capture_default_str();

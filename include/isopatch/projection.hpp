@@ -9,6 +9,12 @@
 /// without welding. A patch whose rays meet the surface too obliquely, or that flips a triangle, is
 /// rejected and the partition refined.
 ///
+/// With Settings::base = Coons (the paper's second base surface, sec. 2.1; Salvi's multi-sided C0 Coons
+/// patch, WAIT 2020), each side is first traced as a dense polyline on face-plane ∩ {f = 0} and
+/// resampled by arc length, so boundary vertices sit on f = 0 before any projection; interior base points
+/// come from the Coons patch over those curves and are projected along the interpolated unit gradients of
+/// the corners.
+///
 /// This milestone keeps every surface cell at one depth: a rejection refines all cells (the result is
 /// denser than asked; the summary reports the depth used). At Settings::max_depth, cells that still
 /// fail are closed by a fan over their shared boundary (counted as fallback cells).

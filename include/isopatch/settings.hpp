@@ -63,6 +63,13 @@ struct Settings {
   int refinement_levels = 2;
   /// Generalized barycentric coordinates for the base patch and the projection directions.
   enum class Coordinates { Wachspress, MeanValue } coordinates = Coordinates::Wachspress;
+  /// The base surface of each patch, from which interior vertices are projected (method.md 7).
+  ///   Barycentric (default): the paper's eq. (1), sum_k lambda_k Q_k; boundary vertices are chord
+  ///     points projected in the face plane; directions blend the cell-edge directions at the corners.
+  ///   Coons: the multi-sided C0 Coons patch (Salvi 2020, arXiv:2002.11347) over the face curves, traced
+  ///     as dense polylines; boundary vertices sit at equal arc length on them; directions blend the
+  ///     unit gradients at the corners.
+  enum class Base { Barycentric, Coons } base = Base::Barycentric;
   /// Acceptance: largest angle between a projection ray and grad f at the hit (interior vertices), and
   /// between a boundary ray and the in-face gradient (boundary vertices), in degrees, in (0, 90).
   double max_ray_angle = 75.0;

@@ -18,7 +18,7 @@ bool triangles_agree_with_gradient(const PatchTemplate& patch, const std::vector
   return true;
 }
 
-PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const std::vector<Vec3>& corner_positions,
+PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const BaseSurface& base_surface,
                            const std::vector<Vec3>& corner_directions, const Box& cell,
                            const ProjectionParams& params, std::vector<SurfacePoint>& points,
                            PatchStats& stats) {
@@ -28,12 +28,16 @@ PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const s
   for (std::size_t v = 0; v < patch.vertex_count(); ++v) {
     if (patch.tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;
     const auto lambda = patch.lambda(static_cast<int>(v));
-    Vec3 base = Vec3::Zero();
-    Vec3 direction = Vec3::Zero();
-    for (int k = 0; k < n; ++k) {
-      base += lambda[static_cast<std::size_t>(k)] * corner_positions[static_cast<std::size_t>(k)];
-      direction += lambda[static_cast<std::size_t>(k)] * corner_directions[static_cast<std::size_t>(k)];
+    Vec3 base = base_surface.evaluate(lambda);
+    // The march needs a start inside the cell. A barycentric base is inside by convexity (up to
+    // rounding, which the margin absorbs); a Coons base may bulge out where a face curve bends away.
+    if (!cell.contains(base, 1e-9 * cell.diagonal())) {
+      ++stats.clamped_base_points;
+      base = base.cwiseMax(cell.lo).cwiseMin(cell.hi);
     }
+    Vec3 direction = Vec3::Zero();
+    for (int k = 0; k < n; ++k)
+      direction += lambda[static_cast<std::size_t>(k)] * corner_directions[static_cast<std::size_t>(k)];
     const double f_base = f.value(base);
     auto hit = march_to_surface(f, base, f_base, direction, cell, march);
     auto acceptable = [&](const RayHit& h, ValueGradient& vg) {

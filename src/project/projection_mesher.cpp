@@ -6,15 +6,19 @@
 
 #include <algorithm>
 #include <chrono>
-#include <map>
-#include <tuple>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "partition/partition.hpp"
+#include "patch/base_surface.hpp"
+#include "patch/coons_patch.hpp"
 #include "patch/patch_template.hpp"
+#include "project/face_curve.hpp"
 #include "project/patch_projection.hpp"
 #include "project/ray_march.hpp"
 #include "project/side_points.hpp"
@@ -28,7 +32,9 @@ struct Side {
   std::uint32_t from = 0;
   std::uint32_t to = 0;
   FaceId face;
-  friend auto operator<=>(const Side& a, const Side& b) { return std::tie(a.from, a.to) <=> std::tie(b.from, b.to); }
+  friend auto operator<=>(const Side& a, const Side& b) {
+    return std::tie(a.from, a.to) <=> std::tie(b.from, b.to);
+  }
   friend bool operator==(const Side& a, const Side& b) { return a.from == b.from && a.to == b.to; }
 };
 
@@ -50,10 +56,11 @@ void check_settings(const Settings& s) {
     throw InputError("edge length must be a positive number");
   if (s.resolution != 0 &&
       (s.resolution < PatchTemplate::kMinResolution || s.resolution > PatchTemplate::kMaxResolution))
-    throw InputError("resolution must be 0 (automatic) or between 1 and 64, got " + std::to_string(s.resolution));
+    throw InputError("resolution must be 0 (automatic) or between 1 and 64, got " +
+                     std::to_string(s.resolution));
   if (s.min_depth < 0 || s.max_depth > 12 || s.min_depth > s.max_depth)
-    throw InputError("depths must satisfy 0 <= min-depth <= max-depth <= 12, got " + std::to_string(s.min_depth) +
-                     " and " + std::to_string(s.max_depth));
+    throw InputError("depths must satisfy 0 <= min-depth <= max-depth <= 12, got " +
+                     std::to_string(s.min_depth) + " and " + std::to_string(s.max_depth));
   if (!(s.max_ray_angle > 0.0 && s.max_ray_angle < 90.0) ||
       !(s.max_boundary_ray_angle > 0.0 && s.max_boundary_ray_angle < 90.0))
     throw InputError("acceptance angles must lie strictly between 0 and 90 degrees");
@@ -72,7 +79,9 @@ ProjectionParams projection_params(const Settings& s, int resolution) {
   return p;
 }
 
-double target_edge(const Box& box, const Settings& s) { return s.edge_length.value_or(box.size().maxCoeff() / 64.0); }
+double target_edge(const Box& box, const Settings& s) {
+  return s.edge_length.value_or(box.size().maxCoeff() / 64.0);
+}
 
 /// With a fixed resolution r: the depth whose cells are closest (in log scale) to r * edge length.
 /// With automatic resolution: the coarsest depth whose cells are at most kAutoSegments edges long.
@@ -80,7 +89,8 @@ int initial_depth(const Lattice& lattice, const Box& box, const Settings& s) {
   const double edge = target_edge(box, s);
   const double depth = s.resolution > 0 ? std::round(std::log2(lattice.size / (edge * s.resolution)))
                                         : std::ceil(std::log2(lattice.size / (edge * kAutoSegments)) - 1e-9);
-  return static_cast<int>(std::clamp(depth, static_cast<double>(s.min_depth), static_cast<double>(s.max_depth)));
+  return static_cast<int>(
+      std::clamp(depth, static_cast<double>(s.min_depth), static_cast<double>(s.max_depth)));
 }
 
 /// Segments per side at `depth`: the fixed resolution, or the cell size over the target edge length.
@@ -92,7 +102,8 @@ int resolution_at(const Lattice& lattice, const Box& box, const Settings& s, int
 }
 
 CoordinateKind coordinate_kind(const Settings& s) {
-  return s.coordinates == Settings::Coordinates::MeanValue ? CoordinateKind::MeanValue : CoordinateKind::Wachspress;
+  return s.coordinates == Settings::Coordinates::MeanValue ? CoordinateKind::MeanValue
+                                                           : CoordinateKind::Wachspress;
 }
 
 /// Leaves whose topology is in doubt (two loops, an ambiguous face, an edge crossed twice, no loop):
@@ -103,17 +114,20 @@ bool needs_refinement(const Leaf& leaf) {
   switch (leaf.reason) {
     case ComplexReason::None:
     case ComplexReason::FaceTest:
-    case ComplexReason::NormalCone: return false;
+    case ComplexReason::NormalCone:
+      return false;
     case ComplexReason::SeveralLoops:
     case ComplexReason::AmbiguousFace:
     case ComplexReason::EdgeTest:
-    case ComplexReason::Orientation: return true;
+    case ComplexReason::Orientation:
+      return true;
   }
   return true;
 }
 
 std::size_t leaves_needing_refinement(const Partition& partition) {
-  return static_cast<std::size_t>(std::count_if(partition.leaves.begin(), partition.leaves.end(), needs_refinement));
+  return static_cast<std::size_t>(
+      std::count_if(partition.leaves.begin(), partition.leaves.end(), needs_refinement));
 }
 
 void check_cancel(const Settings& s) {
@@ -129,8 +143,13 @@ void check_vertex_budget(const Settings& s, std::size_t vertices) {
 /// with `last`, rejected and complex cells are closed by fans over their shared boundaries.
 class PartitionMesher {
  public:
-  PartitionMesher(const Sampler& f, const Partition& partition, const Settings& settings, int resolution, bool last)
-      : f_(f), part_(partition), settings_(settings), params_(projection_params(settings, resolution)), last_(last) {}
+  PartitionMesher(const Sampler& f, const Partition& partition, const Settings& settings, int resolution,
+                  bool last)
+      : f_(f),
+        part_(partition),
+        settings_(settings),
+        params_(projection_params(settings, resolution)),
+        last_(last) {}
 
   std::optional<Mesh> run(Counters& counters) {
     collect_sides();
@@ -162,7 +181,8 @@ class PartitionMesher {
   std::size_t side_index(std::uint32_t a, std::uint32_t b) const {
     const Side key{std::min(a, b), std::max(a, b), FaceId{}};
     const auto it = std::lower_bound(sides_.begin(), sides_.end(), key);
-    if (it == sides_.end() || !(*it == key)) throw Error(ErrorKind::Internal, "projection: a loop side has no record");
+    if (it == sides_.end() || !(*it == key))
+      throw Error(ErrorKind::Internal, "projection: a loop side has no record");
     return static_cast<std::size_t>(it - sides_.begin());
   }
 
@@ -176,8 +196,7 @@ class PartitionMesher {
     side_accepted_.reserve(sides_.size());
     for (const Side& side : sides_) {
       check_cancel(settings_);
-      SidePoints s = sample_side(f_, part_.lattice, part_.crossings[side.from], part_.crossings[side.to],
-                                 side.face, params_);
+      SidePoints s = sample(side);
       if (!s.accepted) {
         ++counters.rejected_sides;
         if (!last_) return false;
@@ -194,16 +213,52 @@ class PartitionMesher {
     return true;
   }
 
+  /// The side's inner boundary vertices; with the Coons base also its face curve, kept for the patches.
+  SidePoints sample(const Side& side) {
+    const Crossing& from = part_.crossings[side.from];
+    const Crossing& to = part_.crossings[side.to];
+    if (settings_.base == Settings::Base::Barycentric)
+      return sample_side(f_, part_.lattice, from, to, side.face, params_);
+    FaceCurve curve = trace_face_curve(f_, part_.lattice, from, to, side.face, params_);
+    side_curves_.push_back(std::move(curve.dense));
+    return SidePoints{std::move(curve.points), curve.accepted};
+  }
+
+  /// The base surface of a loop, and the corner directions to blend (method.md 7.1, 7.2, 8.1).
+  std::unique_ptr<BaseSurface> base_surface(const Loop& loop, std::vector<Vec3>& directions) const {
+    directions.clear();
+    if (settings_.base == Settings::Base::Barycentric) {
+      std::vector<Vec3> q;
+      for (std::uint32_t c : loop.corners) {
+        q.push_back(part_.crossings[c].position);
+        directions.push_back(part_.crossings[c].direction);
+      }
+      return std::make_unique<BarycentricBase>(std::move(q));
+    }
+    std::vector<PolylineCurve> curves;
+    for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+      const std::uint32_t a = loop.corners[k];
+      const std::uint32_t b = loop.corners[(k + 1) % loop.corners.size()];
+      std::vector<Vec3> dense = side_curves_[side_index(a, b)];  // stored from the smaller crossing id
+      if (a > b) std::reverse(dense.begin(), dense.end());
+      curves.emplace_back(std::move(dense));
+      directions.push_back(part_.crossings[a].gradient.normalized());
+    }
+    return std::make_unique<CoonsPatch>(std::move(curves));
+  }
+
   /// Global id of inner point i (1..r-1, counted from corner a) of the side from crossing a to b.
   std::uint32_t side_vertex(std::uint32_t a, std::uint32_t b, int i) const {
     const std::size_t s = side_index(a, b);
-    const std::size_t j = a < b ? static_cast<std::size_t>(i) : static_cast<std::size_t>(params_.resolution - i);
+    const std::size_t j =
+        a < b ? static_cast<std::size_t>(i) : static_cast<std::size_t>(params_.resolution - i);
     return static_cast<std::uint32_t>(part_.crossings.size() + s * inner_points() + (j - 1));
   }
 
   bool loop_sides_accepted(const Loop& loop) const {
     for (std::size_t k = 0; k < loop.corners.size(); ++k)
-      if (!side_accepted_[side_index(loop.corners[k], loop.corners[(k + 1) % loop.corners.size()])]) return false;
+      if (!side_accepted_[side_index(loop.corners[k], loop.corners[(k + 1) % loop.corners.size()])])
+        return false;
     return true;
   }
 
@@ -229,11 +284,8 @@ class PartitionMesher {
   PatchVerdict mesh_patch(const Leaf& leaf, const Loop& loop, PatchStats& patch_stats) {
     const int n = static_cast<int>(loop.corners.size());
     const auto patch = patch_template(n, params_.resolution, coordinate_kind(settings_));
-    std::vector<Vec3> q, d;
-    for (std::uint32_t c : loop.corners) {
-      q.push_back(part_.crossings[c].position);
-      d.push_back(part_.crossings[c].direction);
-    }
+    std::vector<Vec3> d;
+    const std::unique_ptr<BaseSurface> base = base_surface(loop, d);
     std::vector<std::uint32_t> ids(patch->vertex_count(), 0);
     std::vector<SurfacePoint> points(patch->vertex_count());
     for (std::size_t v = 0; v < patch->vertex_count(); ++v) {
@@ -245,7 +297,7 @@ class PartitionMesher {
       ids[v] = tag.kind == VertexTag::Kind::Corner ? a : side_vertex(a, b, tag.index);
       points[v] = {mesh_.positions[ids[v]], gradients_[ids[v]]};
     }
-    const PatchVerdict verdict = project_patch(f_, *patch, q, d, leaf.box, params_, points, patch_stats);
+    const PatchVerdict verdict = project_patch(f_, *patch, *base, d, leaf.box, params_, points, patch_stats);
     if (verdict != PatchVerdict::Accepted) return verdict;
     for (std::size_t v = 0; v < patch->vertex_count(); ++v) {
       if (patch->tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;
@@ -311,6 +363,7 @@ class PartitionMesher {
   bool last_;
   std::vector<Side> sides_;
   std::vector<std::vector<SurfacePoint>> side_points_;
+  std::vector<std::vector<Vec3>> side_curves_;  // Coons base: dense face curve per side, in key order
   std::vector<bool> side_accepted_;
   std::vector<Vec3> gradients_;  // per mesh vertex
   std::vector<float> roles_;     // per mesh vertex, see Settings::vertex_roles
@@ -341,11 +394,15 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     partition_values += partition.stats.value_evaluations;
     partition_gradients += partition.stats.gradient_evaluations;
     const bool last = depth >= last_depth;
-    if (settings.progress) settings.progress(Progress{static_cast<std::size_t>(depth), static_cast<std::size_t>(settings.max_depth)});
+    if (settings.progress)
+      settings.progress(
+          Progress{static_cast<std::size_t>(depth), static_cast<std::size_t>(settings.max_depth)});
     if (partition.leaves.empty()) {
       // Nothing found yet: look finer (cheap where intervals or the heuristic prune), down to max_depth.
       last_depth = std::min(settings.max_depth, std::max(last_depth, depth + 1 + settings.refinement_levels));
-      if (depth >= settings.max_depth) throw NoSurfaceError("no surface in the box: f = 0 crosses no cell down to depth " + std::to_string(depth));
+      if (depth >= settings.max_depth)
+        throw NoSurfaceError("no surface in the box: f = 0 crosses no cell down to depth " +
+                             std::to_string(depth));
       continue;
     }
     const std::size_t doubtful = leaves_needing_refinement(partition);
@@ -379,6 +436,8 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       stats->extra["fallback_cells"] = static_cast<double>(counters.fallback_cells);
       stats->extra["unprojected"] = static_cast<double>(counters.unprojected_vertices);
       stats->extra["gradient_rays"] = static_cast<double>(counters.patch.gradient_rays);
+      stats->extra["clamped_base_points"] = static_cast<double>(counters.patch.clamped_base_points);
+      stats->extra["base_coons"] = settings.base == Settings::Base::Coons ? 1.0 : 0.0;
     }
     return std::move(*mesh);
   }

@@ -11,8 +11,10 @@ namespace isopatch {
 double exit_distance(const Vec3& p, const Vec3& d, const Box& box) {
   double t = std::numeric_limits<double>::infinity();
   for (int a = 0; a < 3; ++a) {
-    if (d[a] > 0.0) t = std::min(t, (box.hi[a] - p[a]) / d[a]);
-    else if (d[a] < 0.0) t = std::min(t, (box.lo[a] - p[a]) / d[a]);
+    if (d[a] > 0.0)
+      t = std::min(t, (box.hi[a] - p[a]) / d[a]);
+    else if (d[a] < 0.0)
+      t = std::min(t, (box.lo[a] - p[a]) / d[a]);
   }
   return std::max(t, 0.0);
 }

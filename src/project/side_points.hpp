@@ -14,7 +14,7 @@ namespace isopatch {
 
 struct SidePoints {
   std::vector<SurfacePoint> points;  ///< the r - 1 inner vertices, from `from` (t = 1/r) towards `to`
-  bool accepted = true;  ///< every ray hit inside the face at an in-face angle within the limit
+  bool accepted = true;              ///< every ray hit inside the face at an in-face angle within the limit
 };
 
 /// Samples the side from crossing `from` to crossing `to` on face `face` of `lattice`.

@@ -12,9 +12,9 @@ struct SurfacePoint {
 
 /// Parameters of projection and acceptance shared by sides and patches (from Settings).
 struct ProjectionParams {
-  int resolution = 8;                  ///< r: segments per side
-  int march_steps = 32;                ///< K
-  double cos_max_ray_angle = 0.2588;   ///< cos of the interior acceptance angle
+  int resolution = 8;                 ///< r: segments per side
+  int march_steps = 32;               ///< K
+  double cos_max_ray_angle = 0.2588;  ///< cos of the interior acceptance angle
   double cos_max_boundary_angle = 0.1736;
 };
 

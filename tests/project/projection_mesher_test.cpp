@@ -18,14 +18,16 @@ struct Case {
   int resolution;
 };
 
-void expect_valid_projection_mesh(const Case& c) {
+void expect_valid_projection_mesh(const Case& c, Settings::Base base = Settings::Base::Barycentric) {
   Settings settings;
+  settings.base = base;
   settings.edge_length = c.edge_length;
   settings.resolution = c.resolution;
   settings.vertex_roles = true;
   MeshStats stats;
   const Mesh mesh = mesh_projection(*c.surface, settings, &stats);
-  const std::string what = c.surface->name() + " r=" + std::to_string(c.resolution);
+  const std::string what = c.surface->name() + " r=" + std::to_string(c.resolution) +
+                           (base == Settings::Base::Coons ? " coons" : " barycentric");
   ASSERT_GT(mesh.vertex_count(), 100u) << what;
   const TopologyReport t = analyze_topology(mesh);
   EXPECT_TRUE(t.watertight()) << what << ": " << t.boundary_edges << " boundary, " << t.non_manifold_edges
@@ -81,6 +83,13 @@ TEST(ProjectionMesher, Genus2AtTwoResolutions) {
   expect_valid_projection_mesh({test::genus2(), 2, 0.04, 4});
 }
 
+TEST(ProjectionMesher, CoonsBaseKeepsEveryInvariant) {
+  expect_valid_projection_mesh({test::sphere(), 0, 0.05, 8}, Settings::Base::Coons);
+  expect_valid_projection_mesh({test::torus(), 1, 0.05, 4}, Settings::Base::Coons);
+  expect_valid_projection_mesh({test::genus2(), 2, 0.04, 4}, Settings::Base::Coons);
+  expect_valid_projection_mesh({test::tanglecube(), 5, 0.1, 6}, Settings::Base::Coons);
+}
+
 TEST(ProjectionMesher, RejectsBadSettings) {
   const auto s = test::sphere();
   Settings settings;
@@ -101,11 +110,13 @@ TEST(ProjectionMesher, ReportsNoSurfaceAndNaN) {
   const Box box{Vec3::Constant(-1), Vec3::Constant(1)};
   Settings settings;
   settings.max_depth = 4;
-  EXPECT_THROW(mesh_projection(*make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z + 1.0; }, box),
-                               settings),
-               NoSurfaceError);
   EXPECT_THROW(
-      mesh_projection(*make_surface([](auto x, auto y, auto z) { return sqrt(x) + y * y + z * z - 0.5; }, box), settings),
+      mesh_projection(*make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z + 1.0; }, box),
+                      settings),
+      NoSurfaceError);
+  EXPECT_THROW(
+      mesh_projection(
+          *make_surface([](auto x, auto y, auto z) { return sqrt(x) + y * y + z * z - 0.5; }, box), settings),
       EvaluationError);
 }
 
