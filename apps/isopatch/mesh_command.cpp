@@ -102,7 +102,7 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--max-depth", o->max_depth, "Projection: largest octree depth (refinement limit)")
       ->capture_default_str();
   cmd->add_option("--refinement-levels", o->refinement_levels,
-                  "Projection: uniform refinement levels allowed when cells fail")
+                  "Projection: levels of local refinement allowed where cells fail")
       ->capture_default_str();
   cmd->add_option("--coordinates", o->coordinates, "Projection: wachspress | mean-value")->capture_default_str();
   cmd->add_option("--base", o->base, "Projection: barycentric | coons (exact face curves, C0 Coons base)")

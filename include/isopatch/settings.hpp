@@ -57,10 +57,11 @@ struct Settings {
   /// fail the single-sheet or acceptance tests are refined up to max_depth. 0 <= min <= max <= 12.
   int min_depth = 2;
   int max_depth = 8;
-  /// Until leaves of different sizes are supported, a failing cell refines every surface cell by one
-  /// level; at most this many levels are added to the starting depth (0..12). Cells still failing at
-  /// the last level are closed by fallback fans (reported in the statistics).
-  int refinement_levels = 2;
+  /// A cell whose patch is rejected (or whose topology is in doubt) is split, locally, at most this many
+  /// levels below the starting depth (and never below max_depth), 0..12; the octree stays 2:1 balanced
+  /// and coarse patches take their finer neighbours' crossings as extra (flat) corners. Cells still
+  /// failing at that depth are closed by fans over their shared boundaries (reported in the statistics).
+  int refinement_levels = 3;
   /// Generalized barycentric coordinates for the base patch and the projection directions.
   enum class Coordinates { Wachspress, MeanValue } coordinates = Coordinates::Wachspress;
   /// The base surface of each patch, from which interior vertices are projected (method.md 7).

@@ -5,6 +5,7 @@
 // (cube_cycles.hpp). Only the Simple/Complex verdict is private to a cell, so it may use any sample.
 #include "partition/partition.hpp"
 
+#include "partition/adaptive_partition.hpp"
 #include "partition/cell.hpp"
 #include "partition/cell_tests.hpp"
 #include "partition/config_table.hpp"
@@ -404,6 +405,7 @@ Partition Builder::finish() {
 
 Partition build_partition(const Surface& surface, const Box& box, const PartitionSettings& settings) {
   validate(box, settings);
+  if (settings.adaptive) return build_adaptive_partition(surface, box, settings);
   const Lattice lattice = make_lattice(box, settings.max_depth);
   return Builder(surface, settings, lattice).run();
 }

@@ -1,7 +1,9 @@
 #pragma once
 /// \file partition.hpp
-/// The octree partition of the projection mesher (method.md sections 4 and 5.1-5.2), first milestone:
-/// every surface leaf at one depth, no transitions between leaf sizes. Each surface leaf carries its
+/// The octree partition of the projection mesher (method.md sections 4 and 5.1-5.3). Uniform mode:
+/// every surface leaf at one depth, no transitions between leaf sizes. Adaptive mode: leaves of
+/// depths surface_depth..max_depth, 2:1 balanced, coarse leaves seeing their finer neighbours'
+/// lattice points (transition faces, flat corners). Each surface leaf carries its
 /// oriented loop(s) of edge crossings (the patch corners); crossings are shared by all the leaves
 /// around their edge, so patches built on the loops assemble into a closed, oriented mesh.
 
@@ -17,8 +19,17 @@
 
 namespace isopatch {
 
+/// An octree cell: its depth and its coordinates at that depth (in cell sizes from the root's lower corner).
+struct CellKey {
+  int depth = 0;
+  LatticePoint coords{};
+
+  friend auto operator<=>(const CellKey&, const CellKey&) = default;
+};
+
 struct PartitionSettings {
-  /// Depth of every surface leaf, 0..max_depth (0: the root cube is the only cell) (cells are 2^-depth of the root cube).
+  /// Depth of every surface leaf, 0..max_depth (0: the root cube is the only cell) (cells are 2^-depth of the
+  /// root cube).
   int surface_depth = 5;
   /// Depth D of the finest lattice, surface_depth..20. Keys (segments, faces) are in its coordinates,
   /// so a later adaptive partition can refine to D while sharing them.
@@ -34,6 +45,16 @@ struct PartitionSettings {
   bool use_intervals = true;
   /// When set and true, build_partition stops with LimitError at the next cell.
   const std::atomic<bool>* cancel = nullptr;
+  /// Adaptive mode (method.md 4.4, 4.5, 5.3): surface leaves start at surface_depth and are split down
+  /// to max_depth while their topology is in doubt (several loops, an ambiguous (sub-)face, a segment
+  /// crossed twice, an edge sample with the wrong sign, a loop against the gradients, a loop of fewer
+  /// than 3 or more than 12 corners) or while they contain a cell of force_split; then 2:1 balanced
+  /// across faces and edges. False: the uniform partition, exactly as before.
+  bool adaptive = false;
+  /// Adaptive mode only: cells to split (every leaf at depth <= key.depth containing the key's cell is
+  /// split, so the key's cell ends up subdivided), e.g. leaves whose patch the mesher rejected. Keys
+  /// with depth >= max_depth or outside the root are ignored.
+  std::vector<CellKey> force_split;
 };
 
 /// One corner: the crossing of f = 0 with a crossed lattice segment. Its id is its index in
@@ -73,13 +94,19 @@ inline constexpr int kComplexReasonCount = 7;
 /// Short name of a reason ("edge-test", ...), for statistics.
 const char* to_string(ComplexReason reason);
 
+/// Adaptive mode: a leaf next to finer leaves (a "transition" leaf) has corners on the finer
+/// segments of its edges and faces; a corner on a segment inside one of its faces is "flat". Side k of
+/// a loop then lies on a quarter of the leaf's face: side_faces[k] is that quarter, i.e. the face of
+/// the finer neighbour (the id both leaves compute). Crossings are always keyed by the finest segment.
 struct Leaf {
   int depth = 0;
   LatticePoint coords{};  ///< cell coordinates at `depth` (in cell sizes from the root's lower corner)
   Box box;
   LeafKind kind = LeafKind::Complex;
   ComplexReason reason = ComplexReason::None;
-  std::uint8_t config = 0;  ///< corner-sign code, bit i set when corner i (cube.hpp) is negative
+  /// Corner-sign code, bit i set when corner i (cube.hpp) is negative. For a transition leaf
+  /// (adaptive mode) informative only: its loops and verdict come from the boundary graph.
+  std::uint8_t config = 0;
   std::vector<Loop> loops;
 };
 
@@ -101,12 +128,22 @@ struct PartitionStats {
   std::uint64_t root_evaluations = 0;             ///< of which inside the root finder
   std::uint64_t gradient_evaluations = 0;         ///< evaluations of f with its gradient
   std::uint64_t interval_evaluations = 0;         ///< calls of bound() and gradient_bound()
+  // Filled in adaptive mode only (the descent counters above then come from the initial uniform
+  // descent; the evaluation counters add up both passes).
+  std::array<std::uint64_t, Lattice::kMaxDepth + 1> leaves_per_depth{};  ///< output leaves by depth
+  std::uint64_t leaves_with_flat_corners = 0;  ///< leaves with a corner inside one of their faces
+  std::uint64_t max_loop_size = 0;             ///< most corners of any loop
+  std::uint64_t adaptive_rounds = 0;           ///< analyse / split rounds until stable
+  std::uint64_t forced_splits = 0;             ///< leaves split because of force_split
+  std::uint64_t topology_splits = 0;           ///< leaves split because their topology was in doubt
+  std::uint64_t balance_splits = 0;            ///< leaves split to restore 2:1 balance
 };
 
 struct Partition {
   Lattice lattice;         ///< root cube and finest lattice (depth max_depth)
-  int surface_depth = 0;   ///< depth of every leaf
-  double cell_size = 0.0;  ///< side of a leaf cell
+  int surface_depth = 0;   ///< depth of every leaf (adaptive mode: the coarsest leaf depth)
+  double cell_size = 0.0;  ///< side of a leaf cell at surface_depth (adaptive: use Leaf::box per leaf)
+  bool adaptive = false;   ///< built in adaptive mode
   std::vector<Crossing> crossings;
   std::vector<Leaf> leaves;  ///< surface leaves (Simple, or Complex with their loops), sorted by coords
   PartitionStats stats;
@@ -130,6 +167,9 @@ struct Partition {
 /// Crossings are found once per lattice segment by the bracketed root finder (Illinois with bisection
 /// safeguard, to 1e-13 of the edge), from the negative end. The result is deterministic: crossings
 /// sorted by segment key, leaves by coordinates.
+///
+/// Adaptive mode (settings.adaptive): see PartitionSettings::adaptive and
+/// build_adaptive_partition in adaptive_partition.hpp.
 ///
 /// \throw InputError for settings out of range or an invalid box.
 /// \throw EvaluationError when f or its gradient is NaN or infinite at a point the partition needs.

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <set>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -45,8 +46,12 @@ struct Counters {
   std::size_t rejected_sides = 0;
   std::size_t fallback_cells = 0;
   std::size_t unprojected_vertices = 0;
+  std::size_t refined_patches = 0;  ///< patches of leaves deeper than the starting depth
   PatchStats patch;
 };
+
+/// Rounds of local refinement before failing cells are closed by fans.
+constexpr int kMaxRounds = 8;
 
 /// Automatic resolution aims at this many segments per side (cells of 4..8 edge lengths).
 constexpr double kAutoSegments = 8.0;
@@ -139,44 +144,65 @@ void check_vertex_budget(const Settings& s, std::size_t vertices) {
     throw LimitError("the mesh would exceed --max-vertices " + std::to_string(s.max_vertices));
 }
 
-/// Meshes one partition. Returns nullopt when a cell is rejected and `last` is false (the caller refines);
-/// with `last`, rejected and complex cells are closed by fans over their shared boundaries.
+/// Meshes one partition. A leaf whose patch or one of whose sides is rejected is listed in to_split()
+/// when it is shallower than `refinable_depth` (the caller then refines it and meshes again); deeper
+/// rejected leaves, and leaves whose topology is still in doubt, are closed by fans over their shared
+/// boundaries.
 class PartitionMesher {
  public:
   PartitionMesher(const Sampler& f, const Partition& partition, const Settings& settings, int resolution,
-                  bool last)
+                  int refinable_depth)
       : f_(f),
         part_(partition),
         settings_(settings),
         params_(projection_params(settings, resolution)),
-        last_(last) {}
+        refinable_depth_(refinable_depth) {}
 
-  std::optional<Mesh> run(Counters& counters) {
+  /// The mesh; meaningful only when to_split() is empty afterwards.
+  Mesh run(Counters& counters) {
     collect_sides();
-    if (!compute_sides(counters)) return std::nullopt;
-    for (const Leaf& leaf : part_.leaves) {
+    compute_sides(counters);
+    for (std::size_t l = 0; l < part_.leaves.size(); ++l) {
       check_cancel(settings_);
-      if (!mesh_leaf(leaf, counters)) return std::nullopt;
+      mesh_leaf(l, counters);
       check_vertex_budget(settings_, mesh_.positions.size());
     }
     if (settings_.vertex_roles) mesh_.set_attribute("role", std::move(roles_));
     return std::move(mesh_);
   }
 
+  /// Leaves to split before meshing again, sorted and unique.
+  std::vector<CellKey> to_split() const {
+    std::vector<CellKey> keys;
+    for (std::size_t l : split_leaves_) keys.push_back(CellKey{part_.leaves[l].depth, part_.leaves[l].coords});
+    return keys;
+  }
+
  private:
   std::size_t inner_points() const { return static_cast<std::size_t>(params_.resolution - 1); }
 
   void collect_sides() {
-    for (const Leaf& leaf : part_.leaves)
-      for (const Loop& loop : leaf.loops)
+    std::vector<std::pair<Side, std::size_t>> uses;  // side, leaf using it
+    for (std::size_t l = 0; l < part_.leaves.size(); ++l)
+      for (const Loop& loop : part_.leaves[l].loops)
         for (std::size_t k = 0; k < loop.corners.size(); ++k) {
           const std::uint32_t a = loop.corners[k];
           const std::uint32_t b = loop.corners[(k + 1) % loop.corners.size()];
-          sides_.push_back(Side{std::min(a, b), std::max(a, b), loop.side_faces[k]});
+          uses.emplace_back(Side{std::min(a, b), std::max(a, b), loop.side_faces[k]}, l);
         }
-    std::sort(sides_.begin(), sides_.end());
-    sides_.erase(std::unique(sides_.begin(), sides_.end()), sides_.end());
+    std::sort(uses.begin(), uses.end(), [](const auto& x, const auto& y) {
+      return x.first < y.first || (x.first == y.first && x.second < y.second);
+    });
+    for (const auto& [side, leaf] : uses) {
+      if (sides_.empty() || !(sides_.back() == side)) {
+        sides_.push_back(side);
+        side_leaves_.emplace_back();
+      }
+      side_leaves_.back().push_back(leaf);
+    }
   }
+
+  bool refinable(std::size_t leaf) const { return part_.leaves[leaf].depth < refinable_depth_; }
 
   std::size_t side_index(std::uint32_t a, std::uint32_t b) const {
     const Side key{std::min(a, b), std::max(a, b), FaceId{}};
@@ -187,19 +213,20 @@ class PartitionMesher {
   }
 
   /// Phase 1: boundary vertices of every side; vertex ids: crossings first, then sides in key order.
-  bool compute_sides(Counters& counters) {
+  void compute_sides(Counters& counters) {
     for (const Crossing& c : part_.crossings) mesh_.positions.push_back(c.position);
     roles_.assign(part_.crossings.size(), 0.0f);
     gradients_.reserve(part_.crossings.size());
     for (const Crossing& c : part_.crossings) gradients_.push_back(c.gradient);
     side_points_.reserve(sides_.size());
     side_accepted_.reserve(sides_.size());
-    for (const Side& side : sides_) {
+    for (std::size_t i = 0; i < sides_.size(); ++i) {
       check_cancel(settings_);
-      SidePoints s = sample(side);
+      SidePoints s = sample(sides_[i]);
       if (!s.accepted) {
         ++counters.rejected_sides;
-        if (!last_) return false;
+        for (std::size_t leaf : side_leaves_[i])
+          if (refinable(leaf)) split_leaves_.insert(leaf);
       }
       side_accepted_.push_back(s.accepted);
       for (const SurfacePoint& p : s.points) {
@@ -210,7 +237,6 @@ class PartitionMesher {
       side_points_.push_back(std::move(s.points));
       check_vertex_budget(settings_, mesh_.positions.size());
     }
-    return true;
   }
 
   /// The side's inner boundary vertices; with the Coons base also its face curve, kept for the patches.
@@ -262,23 +288,29 @@ class PartitionMesher {
     return true;
   }
 
-  /// Phase 2 for one leaf: a projected patch, or (at the last depth) fans when it fails.
-  bool mesh_leaf(const Leaf& leaf, Counters& counters) {
+  /// Phase 2 for one leaf: a projected patch; when it fails, a request to split the leaf or, where it
+  /// cannot be split, fans.
+  void mesh_leaf(std::size_t l, Counters& counters) {
+    if (split_leaves_.contains(l)) return;  // a side failed: the leaf is refined anyway
+    const Leaf& leaf = part_.leaves[l];
     const bool simple = !needs_refinement(leaf) && leaf.loops.front().corners.size() >= 3 &&
                         leaf.loops.front().corners.size() <= 12;
     if (simple && loop_sides_accepted(leaf.loops.front())) {
       const PatchVerdict verdict = mesh_patch(leaf, leaf.loops.front(), counters.patch);
       if (verdict == PatchVerdict::Accepted) {
         ++counters.patches_by_sides[static_cast<int>(leaf.loops.front().corners.size())];
-        return true;
+        if (leaf.depth > part_.surface_depth) ++counters.refined_patches;
+        return;
       }
       ++counters.rejected_patches;
       ++counters.rejected_by_verdict[verdict];
     }
-    if (!last_) return false;
+    if (refinable(l)) {
+      split_leaves_.insert(l);
+      return;
+    }
     ++counters.fallback_cells;
     for (const Loop& loop : leaf.loops) mesh_fan(leaf, loop, counters);
-    return true;
   }
 
   PatchVerdict mesh_patch(const Leaf& leaf, const Loop& loop, PatchStats& patch_stats) {
@@ -360,8 +392,10 @@ class PartitionMesher {
   const Partition& part_;
   const Settings& settings_;
   ProjectionParams params_;
-  bool last_;
+  int refinable_depth_;
   std::vector<Side> sides_;
+  std::vector<std::vector<std::size_t>> side_leaves_;  // per side, the leaves whose loops use it
+  std::set<std::size_t> split_leaves_;
   std::vector<std::vector<SurfacePoint>> side_points_;
   std::vector<std::vector<Vec3>> side_curves_;  // Coons base: dense face curve per side, in key order
   std::vector<bool> side_accepted_;
@@ -380,44 +414,47 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   const Sampler f(surface);
   Counters counters;
   std::uint64_t partition_values = 0, partition_gradients = 0;
-  std::size_t refinements = 0, complex_leaves = 0;
+  std::size_t refinements = 0;
   const Lattice root = make_lattice(box, 0);
-  const int first_depth = initial_depth(root, box, settings);
-  int last_depth = std::min(settings.max_depth, first_depth + settings.refinement_levels);
-  for (int depth = first_depth;; ++depth) {
+  PartitionSettings ps;
+  ps.adaptive = true;
+  ps.cancel = settings.cancel;
+  ps.surface_depth = initial_depth(root, box, settings);
+  for (int round = 0;; ++round) {
     check_cancel(settings);
-    PartitionSettings ps;
-    ps.surface_depth = depth;
-    ps.max_depth = std::max(settings.max_depth, ps.surface_depth);
-    ps.cancel = settings.cancel;
+    // Local refinement goes at most refinement_levels below the starting depth (and never past max_depth).
+    ps.max_depth = std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels);
+    ps.max_depth = std::max(ps.max_depth, ps.surface_depth);
     const Partition partition = build_partition(surface, box, ps);
     partition_values += partition.stats.value_evaluations;
     partition_gradients += partition.stats.gradient_evaluations;
-    const bool last = depth >= last_depth;
     if (settings.progress)
-      settings.progress(
-          Progress{static_cast<std::size_t>(depth), static_cast<std::size_t>(settings.max_depth)});
+      settings.progress(Progress{static_cast<std::size_t>(round), static_cast<std::size_t>(kMaxRounds)});
     if (partition.leaves.empty()) {
       // Nothing found yet: look finer (cheap where intervals or the heuristic prune), down to max_depth.
-      last_depth = std::min(settings.max_depth, std::max(last_depth, depth + 1 + settings.refinement_levels));
-      if (depth >= settings.max_depth)
+      if (ps.surface_depth >= settings.max_depth)
         throw NoSurfaceError("no surface in the box: f = 0 crosses no cell down to depth " +
-                             std::to_string(depth));
+                             std::to_string(ps.surface_depth));
+      ++ps.surface_depth;
+      ps.force_split.clear();
       continue;
     }
-    const std::size_t doubtful = leaves_needing_refinement(partition);
-    if (!last && doubtful > 0) {
-      complex_leaves += doubtful;
-      ++refinements;
-      continue;
-    }
-    const int resolution = resolution_at(root, box, settings, depth);
-    PartitionMesher mesher(f, partition, settings, resolution, last);
+    const int resolution = resolution_at(root, box, settings, ps.surface_depth);
+    // After kMaxRounds rounds of refinement, whatever still fails is closed by fans.
+    const int refinable_depth = round < kMaxRounds ? ps.max_depth : 0;
+    PartitionMesher mesher(f, partition, settings, resolution, refinable_depth);
+    // Per-round counters start afresh; rejections add up over the rounds.
+    counters.patches_by_sides.clear();
+    counters.fallback_cells = counters.unprojected_vertices = counters.refined_patches = 0;
+    counters.patch = PatchStats{};
     std::optional<Mesh> mesh = mesher.run(counters);
-    if (!mesh) {
+    if (const std::vector<CellKey> split = mesher.to_split(); !split.empty()) {
+      ps.force_split.insert(ps.force_split.end(), split.begin(), split.end());
       ++refinements;
       continue;
     }
+    const int depth = ps.surface_depth;
+    const std::size_t doubtful = leaves_needing_refinement(partition);
     mesh->triangles.shrink_to_fit();
     if (stats) {
       stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -431,7 +468,13 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
         stats->extra["patches_" + std::to_string(n)] = static_cast<double>(count);
       stats->extra["rejected_patches"] = static_cast<double>(counters.rejected_patches);
       stats->extra["rejected_sides"] = static_cast<double>(counters.rejected_sides);
-      stats->extra["complex_cells"] = static_cast<double>(complex_leaves + doubtful);
+      stats->extra["doubtful_cells"] = static_cast<double>(doubtful);
+      stats->extra["refined_patches"] = static_cast<double>(counters.refined_patches);
+      stats->extra["flat_corner_leaves"] = static_cast<double>(partition.stats.leaves_with_flat_corners);
+      for (int d = 0; d <= Lattice::kMaxDepth; ++d)
+        if (partition.stats.leaves_per_depth[static_cast<std::size_t>(d)] > 0)
+          stats->extra["leaves_depth_" + std::to_string(d)] =
+              static_cast<double>(partition.stats.leaves_per_depth[static_cast<std::size_t>(d)]);
       stats->extra["refinements"] = static_cast<double>(refinements);
       stats->extra["fallback_cells"] = static_cast<double>(counters.fallback_cells);
       stats->extra["unprojected"] = static_cast<double>(counters.unprojected_vertices);

@@ -1,0 +1,30 @@
+#pragma once
+/// \file adaptive_partition.hpp
+/// The adaptive partition (PartitionSettings::adaptive; method.md 4.4, 4.5, 5.3), called by
+/// build_partition. Algorithm:
+///  1. the uniform partition at surface_depth gives the root cells (its leaves);
+///  2. rounds until stable: 2:1 balance (faces and edges); analyse every leaf on its boundary graph;
+///     add the surface_depth cell of any uncovered cell around a crossed segment (closure); split the
+///     leaves below max_depth whose topology is in doubt or that contain a force_split cell;
+///  3. output the leaves whose boundary graph is crossed (or fails the edge test).
+///
+/// Boundary graph of a leaf (5.3): an edge is split at its midpoint when a cell around it is split
+/// (2:1 balance: by one level, so every segment is the edge of the finest leaf touching it); a face
+/// whose neighbour is split becomes 4 quarter faces, each the face of one finer neighbour. Crossings
+/// are computed per segment (shared by segment key with all leaves touching it), linked per (sub-)face
+/// polygon (face_links.hpp) and walked into loops. The leaf's corner sign code alone is not used for
+/// the verdict: a leaf is Simple when the graph gives one loop, no ambiguous (sub-)face, one sign
+/// change per crossed segment and none on the others, and the face, cone and orientation tests pass.
+/// A loop of fewer than 3 or more than 12 corners, an ambiguous polygon with more than 4 vertices, and
+/// the reasons SeveralLoops, AmbiguousFace, EdgeTest and Orientation split the leaf below max_depth.
+/// At max_depth leaves have no finer neighbours: their graph is the cube's and ambiguous faces are
+/// resolved by the face centre as in the uniform mode, identically on both sides.
+
+#include "partition/partition.hpp"
+
+namespace isopatch {
+
+/// \pre settings validated, settings.adaptive.
+Partition build_adaptive_partition(const Surface& surface, const Box& box, const PartitionSettings& settings);
+
+}  // namespace isopatch

@@ -1,0 +1,116 @@
+// Adaptive octree bookkeeping: the tree is a hash map of cells; locating a cell walks from the root
+// depth down, which is at most 21 lookups.
+#include "partition/leaf_tree.hpp"
+
+#include "partition/cube.hpp"
+#include "partition/index_map.hpp"
+
+#include <algorithm>
+#include <deque>
+
+namespace isopatch {
+
+namespace {
+
+bool in_root(int depth, const LatticePoint& c) {
+  const std::uint64_t cells = std::uint64_t{1} << depth;
+  return c[0] < cells && c[1] < cells && c[2] < cells;
+}
+
+LatticePoint ancestor(const LatticePoint& c, int levels) {
+  return {c[0] >> levels, c[1] >> levels, c[2] >> levels};
+}
+
+}  // namespace
+
+std::size_t CellKeyHash::operator()(const CellKey& key) const {
+  return static_cast<std::size_t>(mix64(half_key(key.coords) * 32 + static_cast<std::uint64_t>(key.depth)));
+}
+
+const std::array<std::array<int, 3>, 18>& face_edge_offsets() {
+  static const std::array<std::array<int, 3>, 18> offsets = [] {
+    std::array<std::array<int, 3>, 18> o{};
+    std::size_t n = 0;
+    for (int x = -1; x <= 1; ++x)
+      for (int y = -1; y <= 1; ++y)
+        for (int z = -1; z <= 1; ++z) {
+          const int nonzero = (x != 0) + (y != 0) + (z != 0);
+          if (nonzero == 1 || nonzero == 2) o[n++] = {x, y, z};
+        }
+    return o;
+  }();
+  return offsets;
+}
+
+bool LeafTree::add_root(const LatticePoint& coords) {
+  if (!in_root(min_depth_, coords) || locate(min_depth_, coords).where != Where::Outside) return false;
+  nodes_.emplace(CellKey{min_depth_, coords}, true);
+  return true;
+}
+
+LeafTree::Found LeafTree::locate(int depth, const LatticePoint& coords) const {
+  if (depth < min_depth_ || !in_root(depth, coords)) return {};
+  for (int d = min_depth_; d <= depth; ++d) {
+    const auto it = nodes_.find(CellKey{d, ancestor(coords, depth - d)});
+    if (it == nodes_.end()) return {};
+    if (it->second) return {Where::Leaf, d};
+  }
+  return {Where::Split, -1};
+}
+
+bool LeafTree::neighbour_split(const CellKey& cell, const std::array<int, 3>& offset) const {
+  LatticePoint n = cell.coords;
+  for (int a = 0; a < 3; ++a) n[a] += static_cast<std::uint32_t>(offset[a]);  // wraps: then outside
+  return locate(cell.depth, n).where == Where::Split;
+}
+
+void LeafTree::split(const CellKey& leaf) {
+  const auto it = nodes_.find(leaf);
+  if (it == nodes_.end() || !it->second || leaf.depth >= max_depth_) return;  // precondition violated
+  nodes_[leaf] = false;
+  for (const auto& o : cube::kCorner)
+    nodes_.emplace(CellKey{leaf.depth + 1,
+                           {2 * leaf.coords[0] + static_cast<std::uint32_t>(o[0]),
+                            2 * leaf.coords[1] + static_cast<std::uint32_t>(o[1]),
+                            2 * leaf.coords[2] + static_cast<std::uint32_t>(o[2])}},
+                   true);
+}
+
+std::vector<CellKey> LeafTree::balance() {
+  std::deque<CellKey> queue;
+  for (const CellKey& key : leaves())
+    if (key.depth >= min_depth_ + 2) queue.push_back(key);
+  std::vector<CellKey> splits;
+  while (!queue.empty()) {
+    const CellKey key = queue.front();
+    queue.pop_front();
+    for (const auto& offset : face_edge_offsets()) {
+      LatticePoint n = key.coords;
+      for (int a = 0; a < 3; ++a) n[a] += static_cast<std::uint32_t>(offset[a]);
+      for (;;) {
+        const Found found = locate(key.depth, n);
+        if (found.where != Where::Leaf || found.depth >= key.depth - 1) break;
+        const CellKey coarse{found.depth, ancestor(n, key.depth - found.depth)};
+        split(coarse);
+        splits.push_back(coarse);
+        for (const auto& o : cube::kCorner)
+          if (coarse.depth + 1 >= min_depth_ + 2)
+            queue.push_back(CellKey{coarse.depth + 1,
+                                    {2 * coarse.coords[0] + static_cast<std::uint32_t>(o[0]),
+                                     2 * coarse.coords[1] + static_cast<std::uint32_t>(o[1]),
+                                     2 * coarse.coords[2] + static_cast<std::uint32_t>(o[2])}});
+      }
+    }
+  }
+  return splits;
+}
+
+std::vector<CellKey> LeafTree::leaves() const {
+  std::vector<CellKey> out;
+  for (const auto& [key, leaf] : nodes_)
+    if (leaf) out.push_back(key);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace isopatch
