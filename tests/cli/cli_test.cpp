@@ -95,5 +95,37 @@ TEST(Cli, UsageErrorsExitWithTwo) {
   EXPECT_EQ(test::run_command(kCli + " frobnicate", dir).exit_code, 2);
 }
 
+TEST(Cli, MeshWithFieldsStoresCurvatureAttributes) {
+  const auto dir = test::scratch_dir("cli_fields");
+  const auto out = dir / "t.ply";
+  const auto r = test::run_command(kCli + " mesh torus --edge-length 0.1 --fields -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Mesh mesh = read_mesh(out.string());
+  for (const char* name : {"mean_curvature", "mean_curvature_exact", "gaussian_curvature", "gaussian_curvature_exact",
+                           "distance"})
+    EXPECT_NE(mesh.find_attribute(name), nullptr) << name;
+}
+
+TEST(Cli, CompareTorusPrintsTheTable) {
+  const auto dir = test::scratch_dir("cli_compare");
+  const auto r = test::run_command(kCli + " compare torus --edge-length 0.12 --images " + (dir / "img").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* word : {"method", "mc+fair", "projection", "H nRMS", "val6"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+  EXPECT_TRUE(std::filesystem::exists(dir / "img" / "compare_level0.png"));
+}
+
+TEST(Cli, ProjectionIsTheDefaultMethod) {
+  const auto dir = test::scratch_dir("cli_projection");
+  const auto out = dir / "g.ply";
+  const auto r = test::run_command(kCli + " mesh genus2 --edge-length 0.05 --base coons -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("projection"), std::string::npos);
+  EXPECT_NE(r.out.find("patches_"), std::string::npos);
+  const TopologyReport t = analyze_topology(read_mesh(out.string()));
+  EXPECT_TRUE(t.watertight());
+  EXPECT_EQ(t.genus, 2);
+}
+
 }  // namespace
 }  // namespace isopatch
