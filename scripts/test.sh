@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Quick start, command 2: install what is missing, build with warnings as errors, run the whole test suite.
+# Quick start, command 2: install what is missing, build with warnings as errors, run the whole test
+# suite; then build again with the address and undefined-behaviour sanitizers and run it once more.
+# Set ISOPATCH_SKIP_SANITIZERS=1 to skip the second pass when iterating locally.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -7,3 +9,17 @@ jobs="$(nproc)"
 cmake -S . -B build-test -G Ninja -DCMAKE_BUILD_TYPE=Release -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=ON >/dev/null
 cmake --build build-test -j"$jobs"
 ctest --test-dir build-test --output-on-failure -j"$jobs"
+if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
+  echo "isopatch: the same suite under AddressSanitizer and UndefinedBehaviorSanitizer"
+  # -O1 as the sanitizers recommend (and half the compile time of -O3).
+  cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
+        -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=OFF -DISOPATCH_SANITIZE=address,undefined >/dev/null
+  cmake --build build-sanitize -j"$jobs"
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE package
+fi
+# Fuzzing (fuzz/, libFuzzer with clang++): each target for ISOPATCH_FUZZ_SECONDS (default 30) on its seed
+# corpus. Set ISOPATCH_FUZZ_SECONDS=0 to skip.
+if [ "${ISOPATCH_FUZZ_SECONDS:-30}" != 0 ]; then
+  scripts/fuzz.sh "${ISOPATCH_FUZZ_SECONDS:-30}"
+fi

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of fuzz/ with clang++ (ASan + UBSan) and runs each for SECONDS (default
+# 60) on its committed seed corpus (fuzz/corpus/<target>/). Fails on any crash, leak, sanitizer report
+# or timeout; the failing input is kept in fuzz/crashes/<target>/.
+# Usage: scripts/fuzz.sh [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"
+targets=(fuzz_expression fuzz_mesh_reader)
+
+# clang with libFuzzer (Debian: clang + libclang-rt-14-dev), installed like scripts/install-deps.sh does.
+missing=()
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "isopatch: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+cxx="$(command -v clang++ || command -v clang++-14)"
+
+build=build-fuzz
+CXX="$cxx" cmake -S fuzz -B "$build" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" >/dev/null
+cmake --build "$build" -j"$(nproc)"
+
+status=0
+for t in "${targets[@]}"; do
+  work="$build/corpus/$t"   # grown corpus, outside the source tree
+  crashes="fuzz/crashes/$t"
+  mkdir -p "$work" "$crashes"
+  echo "isopatch: fuzzing $t for ${seconds}s"
+  if ! ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+       "$build/$t" "$work" "fuzz/corpus/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+       -max_len=4096 -artifact_prefix="$crashes/" -print_final_stats=1 >"$build/$t.log" 2>&1; then
+    echo "isopatch: $t FAILED, input kept in $crashes/:"
+    tail -n 40 "$build/$t.log"
+    status=1
+  else
+    grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|#[0-9]+ +DONE)" "$build/$t.log" || true
+  fi
+  rmdir "$crashes" 2>/dev/null || true   # keep the folder only when it holds a reproducer
+done
+rmdir fuzz/crashes 2>/dev/null || true
+exit "$status"
