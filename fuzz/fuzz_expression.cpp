@@ -21,7 +21,8 @@ void check(bool ok) {
 void exercise(const isopatch::Expression& f) {
   using isopatch::Box;
   using isopatch::Vec3;
-  const Vec3 points[] = {Vec3(0, 0, 0), Vec3(0.5, -0.25, 0.125), Vec3(-1, 1, -1), Vec3(1e-9, 2.5, -3), Vec3(1, 1, 1)};
+  const Vec3 points[] = {Vec3(0, 0, 0), Vec3(0.5, -0.25, 0.125), Vec3(-1, 1, -1), Vec3(1e-9, 2.5, -3),
+                         Vec3(1, 1, 1)};
   std::vector<Vec3> batch(std::begin(points), std::end(points));
   std::vector<double> out(batch.size());
   f.values(batch, out);
@@ -30,7 +31,8 @@ void exercise(const isopatch::Expression& f) {
     (void)f.value_gradient(batch[i]);
     (void)f.second_order(batch[i]);
     // Batch and point evaluation agree (both NaN, or equal).
-    check((std::isnan(v) && std::isnan(out[i])) || v == out[i] || std::abs(v - out[i]) <= 1e-9 * (1 + std::abs(v)));
+    check((std::isnan(v) && std::isnan(out[i])) || v == out[i] ||
+          std::abs(v - out[i]) <= 1e-9 * (1 + std::abs(v)));
   }
   const Box boxes[] = {Box{Vec3(-1, -1, -1), Vec3(1, 1, 1)}, Box{Vec3(0.25, -0.5, 0.0), Vec3(0.75, 0.0, 0.5)},
                        Box{Vec3(-3, 2, -3), Vec3(1e-9, 2.5, 1e-9)}};

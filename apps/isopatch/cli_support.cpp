@@ -37,8 +37,10 @@ void check_output_path(const std::string& path) {
   fs::path folder = fs::path(path).parent_path();
   if (folder.empty()) folder = ".";
   std::error_code ec;
-  if (!fs::is_directory(folder, ec)) throw IoError("cannot write '" + path + "': folder '" + folder.string() + "' does not exist");
-  if (::access(folder.c_str(), W_OK) != 0) throw IoError("cannot write '" + path + "': folder '" + folder.string() + "' is not writable");
+  if (!fs::is_directory(folder, ec))
+    throw IoError("cannot write '" + path + "': folder '" + folder.string() + "' does not exist");
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw IoError("cannot write '" + path + "': folder '" + folder.string() + "' is not writable");
   if (fs::is_directory(path, ec)) throw IoError("cannot write '" + path + "': it is a folder");
 }
 

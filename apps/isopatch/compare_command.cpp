@@ -30,16 +30,17 @@ struct CompareOptions {
 };
 
 void print_table(const std::string& name, const std::vector<ComparisonRow>& rows) {
-  std::printf("%s: marching cubes, MC + Laplace fairing and projection at matched vertex counts\n\n", name.c_str());
-  std::printf("%-11s %8s %9s %11s %7s %9s %8s %10s %8s\n", "method", "vertices", "time ms", "evaluations", "val6 %",
-              "min angle", "<20 %", "normal err", "H nRMS");
+  std::printf("%s: marching cubes, MC + Laplace fairing and projection at matched vertex counts\n\n",
+              name.c_str());
+  std::printf("%-11s %8s %9s %11s %7s %9s %8s %10s %8s\n", "method", "vertices", "time ms", "evaluations",
+              "val6 %", "min angle", "<20 %", "normal err", "H nRMS");
   int level = -1;
   for (const ComparisonRow& r : rows) {
     if (r.level != level && level >= 0) std::printf("\n");
     level = r.level;
     std::printf("%-11s %8zu %9.1f %11llu %7.1f %9.2f %8.1f %10.3f %8.4f\n", r.method.c_str(), r.vertices,
-                1e3 * r.seconds, static_cast<unsigned long long>(r.evaluations), 100.0 * r.valence6, r.min_angle,
-                100.0 * r.share_below_20, r.normal_error, r.h_nrms);
+                1e3 * r.seconds, static_cast<unsigned long long>(r.evaluations), 100.0 * r.valence6,
+                r.min_angle, 100.0 * r.share_below_20, r.normal_error, r.h_nrms);
   }
 }
 
@@ -81,7 +82,8 @@ void write_images(const std::string& folder, const Surface& surface, std::vector
       for (int y = 0; y < tile; ++y)
         for (int x = 0; x < tile; ++x) sheet.set(static_cast<int>(k) * tile + x, y, picture.at(x, y));
     }
-    const std::string path = (fs::path(folder) / ("compare_level" + std::to_string(rows[first].level) + ".png")).string();
+    const std::string path =
+        (fs::path(folder) / ("compare_level" + std::to_string(rows[first].level) + ".png")).string();
     write_png(sheet, path);
     std::fprintf(stderr, "wrote %s\n", path.c_str());
   }
@@ -95,8 +97,10 @@ int run_compare(const CompareOptions& o) {
   settings.fair_iterations = o.fair;
   const SurfacePtr surface = resolve_surface(o.surface, settings.base.box, parse_params(o.params));
   std::vector<ComparisonRow> rows = compare_methods(*surface, settings);
-  if (o.json) print_json(surface->name(), rows);
-  else print_table(surface->name(), rows);
+  if (o.json)
+    print_json(surface->name(), rows);
+  else
+    print_table(surface->name(), rows);
   if (!o.images.empty()) write_images(o.images, *surface, rows);
   return 0;
 }
@@ -105,12 +109,14 @@ int run_compare(const CompareOptions& o) {
 
 Runner add_compare_command(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
-  CLI::App* cmd = app.add_subcommand("compare", "Compare marching cubes, MC + fairing and projection on a surface");
+  CLI::App* cmd =
+      app.add_subcommand("compare", "Compare marching cubes, MC + fairing and projection on a surface");
   cmd->add_option("surface", o->surface, "Catalogue name, formula or @file")->required();
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value");
   cmd->add_option("--edge-length", o->edge_lengths, "Projection edge lengths, one per density level");
-  cmd->add_option("--resolution", o->resolution, "Projection: segments per patch side")->capture_default_str();
+  cmd->add_option("--resolution", o->resolution, "Projection: segments per patch side")
+      ->capture_default_str();
   cmd->add_option("--fair", o->fair, "Rounds of Laplace fairing for the mc+fair rows")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print JSON instead of a table");
   cmd->add_option("--images", o->images, "Write one picture per level (mean curvature) into this folder");

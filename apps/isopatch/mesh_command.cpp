@@ -58,9 +58,12 @@ int run_mesh(const MeshOptions& o) {
   settings.grid = o.grid;
   settings.grid_offset = o.grid_offset;
   settings.fair_iterations = o.fair;
-  if (o.edge_root == "bracketed") settings.edge_root = EdgeRoot::Bracketed;
-  else if (o.edge_root == "linear") settings.edge_root = EdgeRoot::Linear;
-  else throw InputError("unknown --edge-root '" + o.edge_root + "' (want bracketed or linear)");
+  if (o.edge_root == "bracketed")
+    settings.edge_root = EdgeRoot::Bracketed;
+  else if (o.edge_root == "linear")
+    settings.edge_root = EdgeRoot::Linear;
+  else
+    throw InputError("unknown --edge-root '" + o.edge_root + "' (want bracketed or linear)");
   settings.max_vertices = o.max_vertices;
   settings.edge_length = o.edge_length;
   settings.resolution = o.resolution;
@@ -68,12 +71,18 @@ int run_mesh(const MeshOptions& o) {
   settings.max_depth = o.max_depth;
   settings.refinement_levels = o.refinement_levels;
   settings.max_ray_angle = o.max_ray_angle;
-  if (o.coordinates == "wachspress") settings.coordinates = Settings::Coordinates::Wachspress;
-  else if (o.coordinates == "mean-value") settings.coordinates = Settings::Coordinates::MeanValue;
-  else throw InputError("unknown --coordinates '" + o.coordinates + "' (want wachspress or mean-value)");
-  if (o.base == "barycentric") settings.base = Settings::Base::Barycentric;
-  else if (o.base == "coons") settings.base = Settings::Base::Coons;
-  else throw InputError("unknown --base '" + o.base + "' (want barycentric or coons)");
+  if (o.coordinates == "wachspress")
+    settings.coordinates = Settings::Coordinates::Wachspress;
+  else if (o.coordinates == "mean-value")
+    settings.coordinates = Settings::Coordinates::MeanValue;
+  else
+    throw InputError("unknown --coordinates '" + o.coordinates + "' (want wachspress or mean-value)");
+  if (o.base == "barycentric")
+    settings.base = Settings::Base::Barycentric;
+  else if (o.base == "coons")
+    settings.base = Settings::Base::Coons;
+  else
+    throw InputError("unknown --base '" + o.base + "' (want barycentric or coons)");
 
   check_output_path(o.output);
   const SurfacePtr surface = resolve_surface(o.surface, settings.box, parse_params(o.params));
@@ -90,13 +99,17 @@ int run_mesh(const MeshOptions& o) {
 Runner add_mesh_command(CLI::App& app) {
   auto o = std::make_shared<MeshOptions>();
   CLI::App* cmd = app.add_subcommand("mesh", "Mesh an implicit surface f(x,y,z) = 0 and write the mesh");
-  cmd->add_option("surface", o->surface, "Catalogue name (see 'isopatch surfaces'), a formula, or @file")->required();
+  cmd->add_option("surface", o->surface, "Catalogue name (see 'isopatch surfaces'), a formula, or @file")
+      ->required();
   cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off or .stl")->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
-  cmd->add_option("--edge-length", o->edge_length, "Projection: target edge length (default: longest box side / 64)");
-  cmd->add_option("--resolution", o->resolution, "Projection: segments per patch side (1..64; 0: from the edge length)")->capture_default_str();
+  cmd->add_option("--edge-length", o->edge_length,
+                  "Projection: target edge length (default: longest box side / 64)");
+  cmd->add_option("--resolution", o->resolution,
+                  "Projection: segments per patch side (1..64; 0: from the edge length)")
+      ->capture_default_str();
   cmd->add_option("--min-depth", o->min_depth, "Projection: smallest octree depth of surface cells")
       ->capture_default_str();
   cmd->add_option("--max-depth", o->max_depth, "Projection: largest octree depth (refinement limit)")
@@ -104,21 +117,26 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--refinement-levels", o->refinement_levels,
                   "Projection: levels of local refinement allowed where cells fail")
       ->capture_default_str();
-  cmd->add_option("--coordinates", o->coordinates, "Projection: wachspress | mean-value")->capture_default_str();
+  cmd->add_option("--coordinates", o->coordinates, "Projection: wachspress | mean-value")
+      ->capture_default_str();
   cmd->add_option("--base", o->base, "Projection: barycentric | coons (exact face curves, C0 Coons base)")
       ->capture_default_str();
-  cmd->add_option("--max-ray-angle", o->max_ray_angle, "Projection: acceptance angle between ray and gradient")
+  cmd->add_option("--max-ray-angle", o->max_ray_angle,
+                  "Projection: acceptance angle between ray and gradient")
       ->capture_default_str();
-  cmd->add_option("--grid", o->grid, "Marching cubes: cells along the longest box axis")->capture_default_str();
+  cmd->add_option("--grid", o->grid, "Marching cubes: cells along the longest box axis")
+      ->capture_default_str();
   cmd->add_option("--edge-root", o->edge_root, "Marching cubes: bracketed | linear edge crossings")
       ->capture_default_str();
   cmd->add_option("--grid-offset", o->grid_offset, "Marching cubes: grid shift as a fraction of a cell")
       ->capture_default_str();
   cmd->add_option("--fair", o->fair, "Marching cubes: rounds of Laplace fairing with re-projection")
       ->capture_default_str();
-  cmd->add_option("--max-vertices", o->max_vertices, "Stop with an error beyond this many vertices (0: none)");
-  cmd->add_flag("--fields", o->fields,
-               "Store discrete and exact mean and Gaussian curvature and the distance to f = 0 per vertex (PLY)");
+  cmd->add_option("--max-vertices", o->max_vertices,
+                  "Stop with an error beyond this many vertices (0: none)");
+  cmd->add_flag(
+      "--fields", o->fields,
+      "Store discrete and exact mean and Gaussian curvature and the distance to f = 0 per vertex (PLY)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success");
   return [o] { return run_mesh(*o); };
 }

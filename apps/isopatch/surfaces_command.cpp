@@ -14,8 +14,10 @@ Runner add_surfaces_command(CLI::App& app) {
   return [] {
     for (const CatalogueEntry& e : catalogue()) {
       const std::string topology = e.closed ? "genus " + std::to_string(e.genus) : "open";
-      std::printf("%-13s %-9s box %s\n", std::string(e.name).c_str(), topology.c_str(), format_box(e.box).c_str());
-      std::printf("              %s%s\n", std::string(e.description).c_str(), e.smooth ? "" : " (not smooth)");
+      std::printf("%-13s %-9s box %s\n", std::string(e.name).c_str(), topology.c_str(),
+                  format_box(e.box).c_str());
+      std::printf("              %s%s\n", std::string(e.description).c_str(),
+                  e.smooth ? "" : " (not smooth)");
       std::string formula(e.formula);
       for (char& c : formula)
         if (c == '\n') c = ' ';

@@ -14,13 +14,13 @@ namespace isopatch {
 
 struct CatalogueEntry {
   std::string_view name;
-  std::string_view formula;      ///< in the expression language (expression.hpp)
+  std::string_view formula;  ///< in the expression language (expression.hpp)
   std::string_view description;
-  Box box;                       ///< default bounding box
-  int genus = 0;                 ///< expected genus of each closed component; -1 when open (clipped)
-  int components = 1;            ///< expected number of connected components
-  bool closed = true;            ///< the surface lies strictly inside its box
-  bool smooth = true;            ///< false when f = 0 has singular points (grad f = 0 on the surface)
+  Box box;             ///< default bounding box
+  int genus = 0;       ///< expected genus of each closed component; -1 when open (clipped)
+  int components = 1;  ///< expected number of connected components
+  bool closed = true;  ///< the surface lies strictly inside its box
+  bool smooth = true;  ///< false when f = 0 has singular points (grad f = 0 on the surface)
 };
 
 /// All entries, in a fixed order.

@@ -11,14 +11,14 @@ namespace isopatch {
 
 /// What kind of input was bad; each kind has its own exit code in the command-line tool.
 enum class ErrorKind {
-  Internal,        ///< a bug: an invariant did not hold
-  InvalidArgument, ///< a setting out of range (absurd resolution, bad box, ...)
-  UnknownSurface,  ///< a surface name that is not in the catalogue
-  Parse,           ///< a malformed formula
-  Io,              ///< a file that cannot be read or written, or a malformed mesh file
-  Evaluation,      ///< f returned NaN or infinity where it was evaluated
-  NoSurface,       ///< f = 0 does not cross the box
-  Limit,           ///< a resource budget (evaluations, time, vertices) was exhausted or cancelled
+  Internal,         ///< a bug: an invariant did not hold
+  InvalidArgument,  ///< a setting out of range (absurd resolution, bad box, ...)
+  UnknownSurface,   ///< a surface name that is not in the catalogue
+  Parse,            ///< a malformed formula
+  Io,               ///< a file that cannot be read or written, or a malformed mesh file
+  Evaluation,       ///< f returned NaN or infinity where it was evaluated
+  NoSurface,        ///< f = 0 does not cross the box
+  Limit,            ///< a resource budget (evaluations, time, vertices) was exhausted or cancelled
 };
 
 /// Exit code of the command-line tool for an error kind (0 is success, 1 internal, 2 usage).

@@ -15,7 +15,8 @@ namespace isopatch {
 
 struct FairingStats {
   std::uint64_t gradient_evaluations = 0;  ///< evaluations of f with its gradient (the projections)
-  std::size_t unconverged = 0;  ///< vertex projections that did not reach f = 0 in the last round (those vertices kept their position)
+  std::size_t unconverged = 0;  ///< vertex projections that did not reach f = 0 in the last round (those
+                                ///< vertices kept their position)
 };
 
 /// Applies `iterations` rounds of umbrella smoothing + projection to the vertices of `mesh` that are

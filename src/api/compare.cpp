@@ -10,7 +10,8 @@
 namespace isopatch {
 namespace {
 
-ComparisonRow measure(const Surface& surface, std::string method, int level, Mesh mesh, const MeshStats& stats) {
+ComparisonRow measure(const Surface& surface, std::string method, int level, Mesh mesh,
+                      const MeshStats& stats) {
   const QualityReport q = analyze_quality(mesh, &surface);
   ComparisonRow row;
   row.method = std::move(method);

@@ -22,7 +22,8 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
       }
       return mesh;
     }
-    case Method::Projection: return mesh_projection(surface, settings, stats);
+    case Method::Projection:
+      return mesh_projection(surface, settings, stats);
   }
   throw Error(ErrorKind::Internal, "unknown method");
 }
@@ -35,8 +36,10 @@ Method parse_method(const std::string& name) {
 
 std::string method_name(Method method) {
   switch (method) {
-    case Method::Projection: return "projection";
-    case Method::MarchingCubes: return "mc";
+    case Method::Projection:
+      return "projection";
+    case Method::MarchingCubes:
+      return "mc";
   }
   return "?";
 }

@@ -34,8 +34,8 @@ Vec3 edge_root(const Surface& surface, const Vec3& a, const Vec3& b, double fa, 
     if (mode == EdgeRoot::Linear)
       t = t_neg + (t_pos - t_neg) * (-g_neg / (g_pos - g_neg));
     else
-      t = bracketed_root([&](double u) { return checked_value(surface, a + u * (b - a), evaluations); }, t_neg,
-                         g_neg, t_pos, g_pos, 1e-13);
+      t = bracketed_root([&](double u) { return checked_value(surface, a + u * (b - a), evaluations); },
+                         t_neg, g_neg, t_pos, g_pos, 1e-13);
   }
   if (t == 0.0) return a;
   if (t == 1.0) return b;

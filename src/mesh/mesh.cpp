@@ -46,15 +46,15 @@ void Mesh::validate() const {
     const Triangle& tri = triangles[t];
     for (std::uint32_t i : tri)
       if (i >= n)
-        throw InputError("triangle " + std::to_string(t) + " refers to vertex " + std::to_string(i) +
-                         " of " + std::to_string(n));
+        throw InputError("triangle " + std::to_string(t) + " refers to vertex " + std::to_string(i) + " of " +
+                         std::to_string(n));
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2])
       throw InputError("triangle " + std::to_string(t) + " repeats a vertex");
   }
   for (const VertexAttribute& a : attributes)
     if (a.values.size() != n)
-      throw InputError("attribute '" + a.name + "' has " + std::to_string(a.values.size()) +
-                       " values for " + std::to_string(n) + " vertices");
+      throw InputError("attribute '" + a.name + "' has " + std::to_string(a.values.size()) + " values for " +
+                       std::to_string(n) + " vertices");
 }
 
 Box bounding_box(const Mesh& mesh) {

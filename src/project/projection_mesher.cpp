@@ -8,10 +8,10 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <set>
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <string>
 #include <tuple>
 
@@ -174,7 +174,8 @@ class PartitionMesher {
   /// Leaves to split before meshing again, sorted and unique.
   std::vector<CellKey> to_split() const {
     std::vector<CellKey> keys;
-    for (std::size_t l : split_leaves_) keys.push_back(CellKey{part_.leaves[l].depth, part_.leaves[l].coords});
+    for (std::size_t l : split_leaves_)
+      keys.push_back(CellKey{part_.leaves[l].depth, part_.leaves[l].coords});
     return keys;
   }
 

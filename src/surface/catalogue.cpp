@@ -18,7 +18,8 @@ Box box(double x0, double y0, double z0, double x1, double y1, double z1) {
 
 const std::array<CatalogueEntry, 11>& entries() {
   static const std::array<CatalogueEntry, 11> table = {{
-      {"sphere", "x^2 + y^2 + z^2 - 1", "unit sphere", box(-1.2, -1.2, -1.2, 1.2, 1.2, 1.2), 0, 1, true, true},
+      {"sphere", "x^2 + y^2 + z^2 - 1", "unit sphere", box(-1.2, -1.2, -1.2, 1.2, 1.2, 1.2), 0, 1, true,
+       true},
       {"ellipsoid", "x^2 + 2*y^2 + 4*z^2 - 1", "ellipsoid with semi-axes 1, 0.707, 0.5",
        box(-1.2, -0.9, -0.7, 1.2, 0.9, 0.7), 0, 1, true, true},
       {"torus", "R = 1; r = 0.4; (x^2 + y^2 + z^2 + R^2 - r^2)^2 - 4*R^2*(x^2 + y^2)",
@@ -50,7 +51,9 @@ const std::array<CatalogueEntry, 11>& entries() {
 
 }  // namespace
 
-std::span<const CatalogueEntry> catalogue() { return entries(); }
+std::span<const CatalogueEntry> catalogue() {
+  return entries();
+}
 
 const CatalogueEntry* find_in_catalogue(std::string_view name) {
   for (const CatalogueEntry& e : entries())
@@ -60,7 +63,8 @@ const CatalogueEntry* find_in_catalogue(std::string_view name) {
 
 std::vector<std::string> closest_catalogue_names(std::string_view name, std::size_t count) {
   std::vector<std::pair<std::size_t, std::string>> scored;
-  for (const CatalogueEntry& e : entries()) scored.emplace_back(edit_distance(name, e.name), std::string(e.name));
+  for (const CatalogueEntry& e : entries())
+    scored.emplace_back(edit_distance(name, e.name), std::string(e.name));
   std::stable_sort(scored.begin(), scored.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::string> out;

@@ -5,14 +5,22 @@ namespace isopatch {
 
 int exit_code(ErrorKind kind) {
   switch (kind) {
-    case ErrorKind::Internal: return 1;
-    case ErrorKind::InvalidArgument: return 3;
-    case ErrorKind::UnknownSurface: return 4;
-    case ErrorKind::Parse: return 5;
-    case ErrorKind::Io: return 6;
-    case ErrorKind::Evaluation: return 7;
-    case ErrorKind::NoSurface: return 8;
-    case ErrorKind::Limit: return 9;
+    case ErrorKind::Internal:
+      return 1;
+    case ErrorKind::InvalidArgument:
+      return 3;
+    case ErrorKind::UnknownSurface:
+      return 4;
+    case ErrorKind::Parse:
+      return 5;
+    case ErrorKind::Io:
+      return 6;
+    case ErrorKind::Evaluation:
+      return 7;
+    case ErrorKind::NoSurface:
+      return 8;
+    case ErrorKind::Limit:
+      return 9;
   }
   return 1;
 }

@@ -34,12 +34,14 @@ Box parse_box(const std::string& text) {
     if (!item.empty() && *b == '+') ++b;
     const auto [ptr, ec] = std::from_chars(b, e, value);
     if (item.empty() || ec != std::errc() || ptr != e || !std::isfinite(value))
-      throw InputError("bad box '" + text + "': '" + item + "' is not a finite number (want x0,y0,z0,x1,y1,z1)");
+      throw InputError("bad box '" + text + "': '" + item +
+                       "' is not a finite number (want x0,y0,z0,x1,y1,z1)");
     v.push_back(value);
     start = end + 1;
   }
   if (v.size() != 6)
-    throw InputError("bad box '" + text + "': want 6 numbers x0,y0,z0,x1,y1,z1, got " + std::to_string(v.size()));
+    throw InputError("bad box '" + text + "': want 6 numbers x0,y0,z0,x1,y1,z1, got " +
+                     std::to_string(v.size()));
   Box box{Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5])};
   for (int a = 0; a < 3; ++a)
     if (!(box.lo[a] < box.hi[a]))
@@ -51,8 +53,8 @@ Box parse_box(const std::string& text) {
 std::string format_box(const Box& box) {
   std::ostringstream out;
   out.precision(17);
-  out << box.lo.x() << ',' << box.lo.y() << ',' << box.lo.z() << ',' << box.hi.x() << ',' << box.hi.y()
-      << ',' << box.hi.z();
+  out << box.lo.x() << ',' << box.lo.y() << ',' << box.lo.z() << ',' << box.hi.x() << ',' << box.hi.y() << ','
+      << box.hi.z();
   return out.str();
 }
 

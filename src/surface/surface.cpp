@@ -10,8 +10,12 @@ void Surface::values(std::span<const Vec3> points, std::span<double> out) const 
   for (std::size_t i = 0; i < points.size(); ++i) out[i] = value(points[i]);
 }
 
-std::optional<Interval> Surface::bound(const Box&) const { return std::nullopt; }
+std::optional<Interval> Surface::bound(const Box&) const {
+  return std::nullopt;
+}
 
-std::optional<IntervalGradient> Surface::gradient_bound(const Box&) const { return std::nullopt; }
+std::optional<IntervalGradient> Surface::gradient_bound(const Box&) const {
+  return std::nullopt;
+}
 
 }  // namespace isopatch

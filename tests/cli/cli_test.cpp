@@ -14,7 +14,9 @@ namespace {
 
 const std::string kCli = ISOPATCH_CLI;
 
-int count_lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+int count_lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
 
 TEST(Cli, MeshesCatalogueSurfaceWithMarchingCubes) {
   const auto dir = test::scratch_dir("cli_mc");
@@ -36,7 +38,9 @@ TEST(Cli, MeshesFormulaWithBox) {
   const auto dir = test::scratch_dir("cli_formula");
   const auto out = dir / "s.ply";
   const auto r = test::run_command(
-      kCli + " mesh \"x^2+y^2+z^2-1\" --box -1.3,-1.2,-1.1,1.2,1.3,1.25 --method mc --grid 40 -o " + out.string(), dir);
+      kCli + " mesh \"x^2+y^2+z^2-1\" --box -1.3,-1.2,-1.1,1.2,1.3,1.25 --method mc --grid 40 -o " +
+          out.string(),
+      dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const TopologyReport t = analyze_topology(read_mesh(out.string()));
   EXPECT_TRUE(t.watertight());
@@ -70,7 +74,8 @@ TEST(Cli, BadInputGivesOneLineAndDistinctExitCode) {
       {"mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Parse},
       {"mesh \"x^2+y^2+z^2+1\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::NoSurface},
       {"mesh \"sqrt(x)+y\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Evaluation},
-      {"mesh @" + (dir / "missing.txt").string() + " --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Io},
+      {"mesh @" + (dir / "missing.txt").string() + " --box -1,-1,-1,1,1,1 --method mc" + ok_out,
+       ErrorKind::Io},
   };
   for (const BadCase& c : cases) {
     const auto r = test::run_command(kCli + " " + c.args, dir);
@@ -82,8 +87,8 @@ TEST(Cli, BadInputGivesOneLineAndDistinctExitCode) {
 
 TEST(Cli, ParseErrorPointsAtTheColumn) {
   const auto dir = test::scratch_dir("cli_parse");
-  const auto r = test::run_command(kCli + " mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc -o " +
-                                       (dir / "m.ply").string(), dir);
+  const auto r = test::run_command(
+      kCli + " mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc -o " + (dir / "m.ply").string(), dir);
   EXPECT_EQ(r.exit_code, exit_code(ErrorKind::Parse));
   EXPECT_NE(r.err.find("column 3"), std::string::npos) << r.err;
 }
@@ -101,14 +106,15 @@ TEST(Cli, MeshWithFieldsStoresCurvatureAttributes) {
   const auto r = test::run_command(kCli + " mesh torus --edge-length 0.1 --fields -o " + out.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Mesh mesh = read_mesh(out.string());
-  for (const char* name : {"mean_curvature", "mean_curvature_exact", "gaussian_curvature", "gaussian_curvature_exact",
-                           "distance"})
+  for (const char* name : {"mean_curvature", "mean_curvature_exact", "gaussian_curvature",
+                           "gaussian_curvature_exact", "distance"})
     EXPECT_NE(mesh.find_attribute(name), nullptr) << name;
 }
 
 TEST(Cli, CompareTorusPrintsTheTable) {
   const auto dir = test::scratch_dir("cli_compare");
-  const auto r = test::run_command(kCli + " compare torus --edge-length 0.12 --images " + (dir / "img").string(), dir);
+  const auto r =
+      test::run_command(kCli + " compare torus --edge-length 0.12 --images " + (dir / "img").string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* word : {"method", "mc+fair", "projection", "H nRMS", "val6"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
@@ -118,7 +124,8 @@ TEST(Cli, CompareTorusPrintsTheTable) {
 TEST(Cli, ProjectionIsTheDefaultMethod) {
   const auto dir = test::scratch_dir("cli_projection");
   const auto out = dir / "g.ply";
-  const auto r = test::run_command(kCli + " mesh genus2 --edge-length 0.05 --base coons -o " + out.string(), dir);
+  const auto r =
+      test::run_command(kCli + " mesh genus2 --edge-length 0.05 --base coons -o " + out.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("projection"), std::string::npos);
   EXPECT_NE(r.out.find("patches_"), std::string::npos);

@@ -209,8 +209,8 @@ TEST(PartitionTests, DisablingTestsKeepsLeavesAndMakesMoreSimple) {
 
 TEST(PartitionSettings, DepthZeroMakesTheRootCubeTheOnlyCell) {
   // A sphere clipped by the unit cube around one corner: one leaf, one triangle loop.
-  const auto surface =
-      make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 0.36; }, Box{Vec3::Zero(), Vec3::Ones()});
+  const auto surface = make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 0.36; },
+                                    Box{Vec3::Zero(), Vec3::Ones()});
   PartitionSettings s;
   s.surface_depth = 0;
   s.max_depth = 0;

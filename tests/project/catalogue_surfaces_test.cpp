@@ -34,7 +34,8 @@ TEST_P(CatalogueSurface, MeshesAreClosedOrientedAndOnTheSurface) {
     settings.vertex_roles = true;
     MeshStats stats;
     const Mesh mesh = mesh_projection(*surface, settings, &stats);
-    const std::string what = std::string(entry.name) + " /" + std::to_string(static_cast<int>(size.divisions));
+    const std::string what =
+        std::string(entry.name) + " /" + std::to_string(static_cast<int>(size.divisions));
     const TopologyReport t = analyze_topology(mesh);
     EXPECT_TRUE(t.watertight()) << what;
     EXPECT_TRUE(t.manifold()) << what;
@@ -56,8 +57,8 @@ TEST_P(CatalogueSurface, MeshesAreClosedOrientedAndOnTheSurface) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ClosedSurfaces, CatalogueSurface,
-                         ::testing::Values("sphere", "ellipsoid", "torus", "tanglecube", "genus2", "double_torus",
-                                           "blobby", "cassini"));
+                         ::testing::Values("sphere", "ellipsoid", "torus", "tanglecube", "genus2",
+                                           "double_torus", "blobby", "cassini"));
 
 TEST(ChmutovSurface, MeshIsClosedWithTheRightGenus) {
   // Known shortfall: chmutov6's sheets come within a small fraction of a cell of each other near its

@@ -73,7 +73,8 @@ void expect_better_than_mc(const Surface& s, const CellComparison& c) {
 
 TEST(SingleCell, ThreeSidedPatchBeatsMarchingCubes) {
   // An eighth of a sphere around corner 0: the surface crosses the 3 edges at that corner.
-  const auto s = make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 0.36; }, kCell, "corner");
+  const auto s =
+      make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 0.36; }, kCell, "corner");
   const CellComparison c = mesh_cell(*s, 12, 16);
   EXPECT_EQ(c.projection_stats.extra.at("patches_3"), 1.0);
   expect_better_than_mc(*s, c);
@@ -83,7 +84,8 @@ TEST(SingleCell, SixSidedPatchBeatsMarchingCubes) {
   // Corner 0 and its three neighbours inside: a tripod configuration, a curved hexagon.
   const auto s = make_surface(
       [](auto x, auto y, auto z) {
-        return x + y + z - 1.5 + 0.4 * ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) + (z - 0.5) * (z - 0.5));
+        return x + y + z - 1.5 +
+               0.4 * ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) + (z - 0.5) * (z - 0.5));
       },
       kCell, "tripod");
   const CellComparison c = mesh_cell(*s, 10, 16);

@@ -10,10 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <optional>
@@ -25,7 +25,9 @@ namespace {
 
 constexpr Method kMethods[] = {Method::Projection, Method::MarchingCubes};
 
-Box cube(double half) { return Box{Vec3::Constant(-half), Vec3::Constant(half)}; }
+Box cube(double half) {
+  return Box{Vec3::Constant(-half), Vec3::Constant(half)};
+}
 
 /// Modest settings: a 24-cell grid for marching cubes, an edge length of 1/16 of the longest box
 /// side for projection (so every case runs in well under a second).
@@ -152,8 +154,8 @@ void expect_error(const Outcome& o, ErrorKind kind, const std::string& part = ""
   }
 }
 
-#define FOR_EACH_METHOD                   \
-  for (const Method method : kMethods)    \
+#define FOR_EACH_METHOD                \
+  for (const Method method : kMethods) \
     if (SCOPED_TRACE(method_name(method)); true)
 
 // ---- Surfaces through lattice points --------------------------------------------------------------
@@ -421,8 +423,8 @@ TEST(HardCases, DISABLED_VerticesStayInsideTheBox) {
   // the plane: one cell past the hi faces, and grid_offset * cell past the lo faces.
   // Expected: every vertex inside the box (up to rounding).
   const Box half{Vec3(-1.6, -1.6, 0.0), Vec3(1.6, 1.6, 0.6)};
-  const std::pair<std::string, Box> cases[] = {{"x", cube(1)}, {"x^2+y^2+z^2-1", cube(0.7)},
-                                               {"(x^2+y^2+z^2+1-0.16)^2-4*(x^2+y^2)", half}};
+  const std::pair<std::string, Box> cases[] = {
+      {"x", cube(1)}, {"x^2+y^2+z^2-1", cube(0.7)}, {"(x^2+y^2+z^2+1-0.16)^2-4*(x^2+y^2)", half}};
   for (const auto& [formula, box] : cases) {
     SCOPED_TRACE(formula);
     FOR_EACH_METHOD {
@@ -460,8 +462,8 @@ TEST(HardCases, DISABLED_EvaluatesOnlyInsideTheBox) {
 TEST(HardCases, DISABLED_TwoCloseSheetsKeepTheirTopology) {
   // Concentric spheres 0.5 and 0.52 in [-1,1]^3 (edge length 1/8, grid 24): both runs give closed
   // manifold meshes, but projection gives 23 components of total genus 13 (924 fallback cells) and
-  // marching cubes 66 components with genus 3. Expected: two components of genus 0, or an error saying the sheets are
-  // not resolved (for projection, whose interval tests can see two sheets in a cell).
+  // marching cubes 66 components with genus 3. Expected: two components of genus 0, or an error saying the
+  // sheets are not resolved (for projection, whose interval tests can see two sheets in a cell).
   const std::string formula = "(x^2+y^2+z^2-0.25)*(x^2+y^2+z^2-0.2704)";
   FOR_EACH_METHOD {
     const Outcome o = run(formula, cube(1), method);

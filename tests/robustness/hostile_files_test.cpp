@@ -40,8 +40,9 @@ std::vector<Hostile> hostile_files() {
   std::vector<Hostile> files;
   const Mesh tet = tetrahedron();
   // Truncated valid files: cut in the middle of the data.
-  for (const auto& [ext, format] : {std::pair{".obj", MeshFormat::Obj}, std::pair{".off", MeshFormat::Off},
-                                    std::pair{".stl", MeshFormat::Stl}, std::pair{".ply", MeshFormat::PlyBinary}}) {
+  for (const auto& [ext, format] :
+       {std::pair{".obj", MeshFormat::Obj}, std::pair{".off", MeshFormat::Off},
+        std::pair{".stl", MeshFormat::Stl}, std::pair{".ply", MeshFormat::PlyBinary}}) {
     const std::string full = encode_mesh(tet, format);
     files.push_back({std::string("truncated") + ext, full.substr(0, full.size() * 2 / 3)});
   }
@@ -50,15 +51,17 @@ std::vector<Hostile> hostile_files() {
     files.push_back({"truncated_ascii.ply", full.substr(0, full.size() - 12)});
   }
   // Lying headers: counts far beyond the bytes.
-  files.push_back({"lying.ply",
-                   "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
-                   "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                   "end_header\n" + std::string(24, '\0')});
+  files.push_back(
+      {"lying.ply",
+       "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n"
+       "property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+       "end_header\n" +
+           std::string(24, '\0')});
   files.push_back({"lying.off", "OFF\n1000000000 1000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"});
   {
     std::string stl(80, ' ');
     put<std::uint32_t>(stl, 4000000000u);  // triangles claimed
-    stl += std::string(50, '\0');           // one triangle's worth
+    stl += std::string(50, '\0');          // one triangle's worth
     files.push_back({"lying.stl", stl});
   }
   files.push_back({"index_out_of_range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99\n"});
@@ -71,15 +74,19 @@ std::vector<Hostile> hostile_files() {
     state = state * 1664525u + 1013904223u;
     garbage.push_back(static_cast<char>(state >> 24));
   }
-  for (const char* ext : {".obj", ".ply", ".off", ".stl"}) files.push_back({std::string("garbage") + ext, garbage});
+  for (const char* ext : {".obj", ".ply", ".off", ".stl"})
+    files.push_back({std::string("garbage") + ext, garbage});
   files.push_back({"empty.ply", ""});
   files.push_back({"empty.off", ""});
-  files.push_back({"header_only.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n"});
+  files.push_back(
+      {"header_only.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n"});
   files.push_back({"text.stl", "solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\nendloop\n"});
   return files;
 }
 
-int count_lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+int count_lines(const std::string& s) {
+  return static_cast<int>(std::count(s.begin(), s.end(), '\n'));
+}
 
 TEST(HostileFiles, AnalyzeExitsWithIoCodeAndOneLine) {
   const auto dir = test::scratch_dir("robust_hostile");

@@ -5,8 +5,9 @@
 #include <cstdio>
 
 int main() {
-  auto sphere = isopatch::make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 1.0; },
-                                       isopatch::Box{isopatch::Vec3::Constant(-1.2), isopatch::Vec3::Constant(1.2)});
+  auto sphere =
+      isopatch::make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 1.0; },
+                             isopatch::Box{isopatch::Vec3::Constant(-1.2), isopatch::Vec3::Constant(1.2)});
   isopatch::Settings settings;
   settings.method = isopatch::Method::MarchingCubes;
   settings.grid = 16;
