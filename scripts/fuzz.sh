@@ -2,10 +2,15 @@
 # Builds the libFuzzer targets of fuzz/ with clang++ (ASan + UBSan) and runs each for SECONDS (default
 # 60) on its committed seed corpus (fuzz/corpus/<target>/). Fails on any crash, leak, sanitizer report
 # or timeout; the failing input is kept in fuzz/crashes/<target>/.
-# Usage: scripts/fuzz.sh [SECONDS]
+# Usage: scripts/fuzz.sh [SECONDS] [RUNS]
+# With RUNS (CI passes one) the search is reproducible: a fixed seed and a fixed number of inputs, with
+# SECONDS only as a cap; without it, each target simply runs for SECONDS with a random seed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
+runs="${2:-}"
+limits=(-max_total_time="$seconds")
+[ -n "$runs" ] && limits+=(-seed=1 -runs="$runs")
 targets=(fuzz_expression fuzz_mesh_reader)
 
 # clang with libFuzzer (Debian: clang + libclang-rt-14-dev), installed like scripts/install-deps.sh does.
@@ -34,7 +39,7 @@ for t in "${targets[@]}"; do
   mkdir -p "$work" "$crashes"
   echo "isopatch: fuzzing $t for ${seconds}s"
   if ! ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-       "$build/$t" "$work" "fuzz/corpus/$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+       "$build/$t" "$work" "fuzz/corpus/$t" "${limits[@]}" -timeout=10 -rss_limit_mb=2048 \
        -max_len=4096 -artifact_prefix="$crashes/" -print_final_stats=1 >"$build/$t.log" 2>&1; then
     echo "isopatch: $t FAILED, input kept in $crashes/:"
     tail -n 40 "$build/$t.log"

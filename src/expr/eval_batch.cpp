@@ -122,9 +122,9 @@ void run_instruction(const Instruction& in, double* regs, std::size_t partial) {
     case Op::Hypot:
       return map2(o, a, b, n, [](double u, double v) { return std::hypot(u, v); });
     case Op::Min:
-      return map2(o, a, b, n, [](double u, double v) { return v < u ? v : u; });
+      return map2(o, a, b, n, [](double u, double v) { return (v < u || v != v) ? v : u; });
     case Op::Max:
-      return map2(o, a, b, n, [](double u, double v) { return u < v ? v : u; });
+      return map2(o, a, b, n, [](double u, double v) { return (u < v || v != v) ? v : u; });
   }
 }
 

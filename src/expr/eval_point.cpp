@@ -66,11 +66,11 @@ ValueGradient run_gradient(const Tape& t, Dual* r, const Vec3& p) {
         o.v = a.v - b.v;
         for (int k = 0; k < 3; ++k) o.g[k] = a.g[k] - b.g[k];
         break;
-      case Op::Min:
-        o = b.v < a.v ? b : a;
+      case Op::Min:  // NaN from either side propagates, as in scalar.hpp
+        o = (b.v < a.v || b.v != b.v) ? b : a;
         break;
       case Op::Max:
-        o = a.v < b.v ? b : a;
+        o = (a.v < b.v || b.v != b.v) ? b : a;
         break;
       // The cheap ops of polynomials inline; each is binary_/unary_derivatives written out.
       case Op::Mul:
@@ -133,11 +133,11 @@ SecondOrder run_second_order(const Tape& t, Jet2* r, const Vec3& p) {
         for (int k = 0; k < 6; ++k) o.h[k] = a.h[k] + s * b.h[k];
         break;
       }
-      case Op::Min:
-        o = b.v < a.v ? b : a;
+      case Op::Min:  // NaN from either side propagates, as in scalar.hpp
+        o = (b.v < a.v || b.v != b.v) ? b : a;
         break;
       case Op::Max:
-        o = a.v < b.v ? b : a;
+        o = (a.v < b.v || b.v != b.v) ? b : a;
         break;
       case Op::Mul:
       case Op::Div:

@@ -84,10 +84,12 @@ inline double apply(Op op, double a, double b, double c) {
       return std::atan2(a, b);
     case Op::Hypot:
       return std::hypot(a, b);
+    // min and max propagate NaN from either side (f is undefined where any part of it is), so point,
+    // batch and interval evaluation agree on where f is defined.
     case Op::Min:
-      return b < a ? b : a;
+      return (b < a || b != b) ? b : a;
     case Op::Max:
-      return a < b ? b : a;
+      return (a < b || b != b) ? b : a;
   }
   return std::nan("");
 }

@@ -178,6 +178,9 @@ Mesh read_body(const PlyHeader& header, Source& source, Place& place) {
   for (const PlyElement& e : header.elements)
     if (e.name == "vertex") vertex = &e;
   if (!vertex) fail(name, "has no 'vertex' element");
+  // Without properties a vertex takes no bytes, so check_counts() cannot bound its count: refuse it
+  // before anything is allocated (x, y and z are required anyway).
+  if (vertex->properties.empty()) fail(name, "the 'vertex' element has no properties (x, y, z are required)");
   if (vertex->count > std::numeric_limits<std::uint32_t>::max()) fail(name, "too many vertices");
   const auto vertex_count = static_cast<std::size_t>(vertex->count);
 

@@ -121,5 +121,24 @@ TEST(ExpressionCompile, EvaluatesConcurrently) {
   EXPECT_EQ(mismatches[0] + mismatches[1], 0);
 }
 
+TEST(ExpressionCompile, MinAndMaxPropagateNaNAlike) {
+  // Found by fuzz_expression: min(a, NaN) used to return a, so a point could take a finite value where
+  // part of f is undefined and fall outside the (sound) interval bound of the defined points.
+  const Expression f = parse_expression("min(z^2.5, x) + max(x, sqrt(z))");
+  const Vec3 p(0.5, 0.0, -1.0);  // z^2.5 and sqrt(z) are NaN there
+  EXPECT_TRUE(std::isnan(f.value(p)));
+  std::vector<Vec3> batch{p, Vec3(0.5, 0.0, 1.0)};
+  std::vector<double> out(2);
+  f.values(batch, out);
+  EXPECT_TRUE(std::isnan(out[0]));
+  EXPECT_DOUBLE_EQ(out[1], f.value(batch[1]));
+  EXPECT_TRUE(std::isnan(f.value_gradient(p).value));
+  EXPECT_TRUE(std::isnan(f.second_order(p).value));
+  const Expression g = parse_expression("min(x^2+y^2+z^2.5, abs(- x^2*y)^2+z^2-9-9, max(abs(x)-1.5, abs(- x^2*y)^2+z^2-9, -2))");
+  const Interval bound = g.bound(Box{Vec3::Constant(-1), Vec3::Constant(1)});
+  const double v = g.value(Vec3(-1, 1, -1));
+  EXPECT_TRUE(std::isnan(v) || bound.contains(v));
+}
+
 }  // namespace
 }  // namespace isopatch

@@ -211,6 +211,15 @@ TEST(MeshIoMalformed, ElementsWithoutPropertiesCostNothing) {
   EXPECT_EQ(m.vertex_count(), 3u);
 }
 
+TEST(MeshIoMalformed, VertexElementWithoutPropertiesIsRejectedBeforeAllocating) {
+  // Found by fuzz_mesh_reader: a property-less vertex element has no size per item, so its count was
+  // not bounded by the file size and 300 million positions were allocated.
+  expect_rejected("ply\nformat ascii 1.0\nelement vertex 321000000\nend_header\n", MeshFormat::PlyAscii,
+                  "no properties");
+  expect_rejected("ply\nformat binary_little_endian 1.0\nelement vertex 321000000\nend_header\n",
+                  MeshFormat::PlyBinary, "no properties");
+}
+
 TEST(MeshIoMalformed, IndicesOutOfRangeAreRejected) {
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   expect_rejected(obj + "f 1 2 4\n", MeshFormat::Obj, "vertex 4 but 3 vertices");
