@@ -26,7 +26,7 @@ inline UnaryDerivatives unary_derivatives(Op op, double a, double c) {
       return {ipow(a, n), c * ipow(a, n - 1), c * (c - 1.0) * ipow(a, n - 2)};
     }
     case Op::PowC:
-      return {std::pow(a, c), c * std::pow(a, c - 1.0), c * (c - 1.0) * std::pow(a, c - 2.0)};
+      return {strict_pow(a, c), c * std::pow(a, c - 1.0), c * (c - 1.0) * std::pow(a, c - 2.0)};
     case Op::AddC:
       return {a + c, 1.0, 0.0};
     case Op::MulC:
@@ -107,7 +107,7 @@ inline BinaryDerivatives binary_derivatives(Op op, double a, double b) {
       return {f, inv, fb, 0.0, -(inv * inv), -2.0 * fb * inv};
     }
     case Op::Pow: {
-      const double f = std::pow(a, b), la = std::log(a), pm1 = std::pow(a, b - 1.0);
+      const double f = strict_pow(a, b), la = std::log(a), pm1 = std::pow(a, b - 1.0);
       const double fb = f * la;
       return {f, b * pm1, fb, b * (b - 1.0) * std::pow(a, b - 2.0), pm1 * (1.0 + b * la), fb * la};
     }
@@ -117,7 +117,7 @@ inline BinaryDerivatives binary_derivatives(Op op, double a, double b) {
       return {std::atan2(a, b), b / r2, -(a / r2), faa, (a * a - b * b) / r4, -faa};
     }
     case Op::Hypot: {
-      const double h = std::hypot(a, b), h3 = h * h * h;
+      const double h = strict_hypot(a, b), h3 = h * h * h;
       return {h, a / h, b / h, b * b / h3, -(a * b) / h3, a * a / h3};
     }
     default:

@@ -70,7 +70,7 @@ void run_instruction(const Instruction& in, double* regs, std::size_t partial) {
     case Op::Powi:
       return block_ipow(o, a, static_cast<unsigned>(c), n);
     case Op::PowC:
-      return map1(o, a, n, [c](double v) { return std::pow(v, c); });
+      return map1(o, a, n, [c](double v) { return strict_pow(v, c); });
     case Op::AddC:
       return map1(o, a, n, [c](double v) { return v + c; });
     case Op::MulC:
@@ -116,11 +116,11 @@ void run_instruction(const Instruction& in, double* regs, std::size_t partial) {
     case Op::Div:
       return map2(o, a, b, n, [](double u, double v) { return u / v; });
     case Op::Pow:
-      return map2(o, a, b, n, [](double u, double v) { return std::pow(u, v); });
+      return map2(o, a, b, n, [](double u, double v) { return strict_pow(u, v); });
     case Op::Atan2:
       return map2(o, a, b, n, [](double u, double v) { return std::atan2(u, v); });
     case Op::Hypot:
-      return map2(o, a, b, n, [](double u, double v) { return std::hypot(u, v); });
+      return map2(o, a, b, n, [](double u, double v) { return strict_hypot(u, v); });
     case Op::Min:
       return map2(o, a, b, n, [](double u, double v) { return (v < u || v != v) ? v : u; });
     case Op::Max:

@@ -9,6 +9,20 @@
 
 namespace isopatch::expr {
 
+/// pow and hypot with NaN from either argument propagating. IEEE makes pow(1, NaN) = 1 and
+/// hypot(inf, NaN) = inf; f would then be finite at a point where part of it is undefined, while the
+/// interval extension (sound over the defined points only) says nothing there.
+/// pow of a negative base is defined for finite integer exponents only (IEEE gives pow(-inf, -5.5) = 0
+/// and pow(-0.5, inf) = 0; the interval extension leaves such points out).
+inline double strict_pow(double a, double b) {
+  if (a != a || b != b) return a + b;
+  if (a < 0.0 && (b != std::trunc(b) || !std::isfinite(b))) return std::nan("");
+  return std::pow(a, b);
+}
+inline double strict_hypot(double a, double b) {
+  return (a != a || b != b) ? a + b : std::hypot(a, b);
+}
+
 /// x^n for n >= 0 by repeated squaring (x^2 = x*x, x^3 = x*(x*x), x^4 = (x*x)*(x*x), ...).
 inline double ipow(double x, unsigned n) {
   double r = 1.0;
@@ -33,7 +47,7 @@ inline double apply(Op op, double a, double b, double c) {
     case Op::Powi:
       return ipow(a, static_cast<unsigned>(c));
     case Op::PowC:
-      return std::pow(a, c);
+      return strict_pow(a, c);
     case Op::AddC:
       return a + c;
     case Op::MulC:
@@ -79,11 +93,11 @@ inline double apply(Op op, double a, double b, double c) {
     case Op::Div:
       return a / b;
     case Op::Pow:
-      return std::pow(a, b);
+      return strict_pow(a, b);
     case Op::Atan2:
       return std::atan2(a, b);
     case Op::Hypot:
-      return std::hypot(a, b);
+      return strict_hypot(a, b);
     // min and max propagate NaN from either side (f is undefined where any part of it is), so point,
     // batch and interval evaluation agree on where f is defined.
     case Op::Min:

@@ -134,10 +134,28 @@ TEST(ExpressionCompile, MinAndMaxPropagateNaNAlike) {
   EXPECT_DOUBLE_EQ(out[1], f.value(batch[1]));
   EXPECT_TRUE(std::isnan(f.value_gradient(p).value));
   EXPECT_TRUE(std::isnan(f.second_order(p).value));
-  const Expression g = parse_expression("min(x^2+y^2+z^2.5, abs(- x^2*y)^2+z^2-9-9, max(abs(x)-1.5, abs(- x^2*y)^2+z^2-9, -2))");
+  const Expression g = parse_expression(
+      "min(x^2+y^2+z^2.5, abs(- x^2*y)^2+z^2-9-9, max(abs(x)-1.5, abs(- x^2*y)^2+z^2-9, -2))");
   const Interval bound = g.bound(Box{Vec3::Constant(-1), Vec3::Constant(1)});
   const double v = g.value(Vec3(-1, 1, -1));
   EXPECT_TRUE(std::isnan(v) || bound.contains(v));
+}
+
+TEST(ExpressionCompile, PowAndHypotAreUndefinedWhereAnyPartIs) {
+  // Found by fuzz_expression: IEEE's pow(1, NaN) = 1, pow(-inf, -5.5) = 0, pow(-0.5, inf) = 0 and
+  // hypot(inf, NaN) = inf made f finite where the interval extension (rightly) calls it undefined.
+  const Vec3 p(0.5, -0.5, -1.0);
+  for (const char* formula : {"1^sqrt(z)", "(0.9 - x^-68719476736)^(x - 6)", "(y)^(1/0 + x)",
+                              "hypot(1/0 + x, sqrt(z))", "x^(0/0)"}) {
+    const Expression f = parse_expression(formula);
+    EXPECT_TRUE(std::isnan(f.value(p))) << formula;
+    std::vector<Vec3> batch{p};
+    std::vector<double> out(1);
+    f.values(batch, out);
+    EXPECT_TRUE(std::isnan(out[0])) << formula;
+    EXPECT_TRUE(std::isnan(f.second_order(p).value)) << formula;
+  }
+  EXPECT_DOUBLE_EQ(parse_expression("(-2)^3 + x^2").value(Vec3(3, 0, 0)), 1.0);  // integer powers stay
 }
 
 }  // namespace
