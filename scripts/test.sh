@@ -20,7 +20,7 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
 fi
 # Fuzz targets (fuzz/, libFuzzer with clang++, ASan + UBSan): CI replays every committed corpus input,
 # including the regressions the fuzzers found, deterministically. Open-ended searches are run by hand
-# (scripts/fuzz.sh SECONDS): one open finding is kept in fuzz/known_failures/. ISOPATCH_FUZZ=0 skips this.
+# (scripts/fuzz.sh SECONDS, or SECONDS RUNS for a seeded one). ISOPATCH_FUZZ=0 skips this.
 if [ "${ISOPATCH_FUZZ:-1}" != 0 ]; then
   scripts/fuzz.sh 120 0
 fi
