@@ -15,9 +15,10 @@
 /// come from the Coons patch over those curves and are projected along the interpolated unit gradients of
 /// the corners.
 ///
-/// This milestone keeps every surface cell at one depth: a rejection refines all cells (the result is
-/// denser than asked; the summary reports the depth used). At Settings::max_depth, cells that still
-/// fail are closed by a fan over their shared boundary (counted as fallback cells).
+/// The octree is adaptive: a cell whose patch is rejected, or whose topology is in doubt, is split
+/// locally (2:1 balanced; a coarse patch takes its finer neighbours' crossings as extra flat corners, so
+/// patches have up to 12 sides), at most Settings::refinement_levels below the starting depth. Cells
+/// that still fail there are closed by a fan over their shared boundary (counted as fallback cells).
 
 #include <isopatch/mesh.hpp>
 #include <isopatch/settings.hpp>
