@@ -33,6 +33,10 @@ std::map<std::string, double> parse_params(const std::vector<std::string>& items
 
 void check_output_path(const std::string& path) {
   format_from_path(path);  // throws IoError for an unknown extension
+  check_writable_location(path);
+}
+
+void check_writable_location(const std::string& path) {
   namespace fs = std::filesystem;
   fs::path folder = fs::path(path).parent_path();
   if (folder.empty()) folder = ".";

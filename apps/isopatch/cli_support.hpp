@@ -14,6 +14,10 @@ std::map<std::string, double> parse_params(const std::vector<std::string>& items
 /// and is writable. \throw IoError otherwise.
 void check_output_path(const std::string& path);
 
+/// Checks that the folder of `path` exists and is writable and that `path` is not a folder.
+/// \throw IoError otherwise.
+void check_writable_location(const std::string& path);
+
 /// "12345" -> "12,345" style grouping for counts in summaries.
 std::string group_digits(unsigned long long n);
 

@@ -6,8 +6,6 @@
 #include <isopatch/render.hpp>
 #include <isopatch/resolve_surface.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -106,14 +104,7 @@ void check_png_path(const std::string& path) {
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension != ".png") throw IoError("cannot write '" + path + "': the picture must be a .png file");
-  fs::path folder = fs::path(path).parent_path();
-  if (folder.empty()) folder = ".";
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec))
-    throw IoError("cannot write '" + path + "': folder '" + folder.string() + "' does not exist");
-  if (::access(folder.c_str(), W_OK) != 0)
-    throw IoError("cannot write '" + path + "': folder '" + folder.string() + "' is not writable");
-  if (fs::is_directory(path, ec)) throw IoError("cannot write '" + path + "': it is a folder");
+  check_writable_location(path);
 }
 
 RenderOptions to_render_options(const RenderCommandOptions& o, const Show& show) {
