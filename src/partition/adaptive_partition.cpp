@@ -5,6 +5,7 @@
 #include "partition/adaptive_partition.hpp"
 
 #include "partition/cell.hpp"
+#include "partition/cell_checks.hpp"
 #include "partition/cell_tests.hpp"
 #include "partition/face_links.hpp"
 #include "partition/index_map.hpp"
@@ -401,60 +402,27 @@ ComplexReason AdaptiveBuilder::classify(const Cell& cell, const Analysis& a, boo
 // Face test (method.md 4.3.3) on every face whose boundary graph holds crossings; face_crossed is
 // indexed by axis * 2 + side.
 bool AdaptiveBuilder::face_test(const Cell& cell, const std::array<bool, 6>& face_crossed) {
-  for (int f = 0; f < 6; ++f) {
-    if (!face_crossed[static_cast<std::size_t>(cube::kFaceAxis[f] * 2 + cube::kFaceSide[f])]) continue;
-    std::array<Vec3, 5> g;
-    for (int k = 0; k < 4; ++k) g[k] = cache_.gradient(cell.corner_half(cube::kFace[f][k]));
-    g[4] = cache_.gradient(cell.face_centre_half(f));
-    if (!in_plane_gradients_agree(g, cube::kFaceAxis[f])) return false;
-  }
+  for (int f = 0; f < 6; ++f)
+    if (face_crossed[static_cast<std::size_t>(cube::kFaceAxis[f] * 2 + cube::kFaceSide[f])] &&
+        !face_gradients_agree(cache_, cell, f))
+      return false;
   return true;
 }
 
 bool AdaptiveBuilder::cone_test(const Cell& cell, const std::vector<Loop>& loops) {
-  std::vector<Vec3> g;
-  for (int i = 0; i < 8; ++i) g.push_back(cache_.gradient(cell.corner_half(i)));
-  g.push_back(cache_.gradient(cell.centre_half()));
-  for (int f = 0; f < 6; ++f) g.push_back(cache_.gradient(cell.face_centre_half(f)));
-  for (const Loop& loop : loops)
-    for (std::uint32_t c : loop.corners) g.push_back(crossings_[c].gradient);
-  return gradients_within_cone(g, cos_cone_);
+  return cell_gradients_within_cone(cache_, cell, loops, crossings_, cos_cone_);
 }
 
 bool AdaptiveBuilder::oriented_along_gradient(const Loop& loop) const {
-  std::vector<Vec3> points;
-  Vec3 mean = Vec3::Zero();
-  for (std::uint32_t c : loop.corners) {
-    points.push_back(crossings_[c].position);
-    const double norm = crossings_[c].gradient.norm();
-    if (norm > 0.0) mean += crossings_[c].gradient / norm;
-  }
-  return newell_normal(points).dot(mean) > 0.0;
+  return loop_oriented_along_gradient(loop, crossings_);
 }
 
 // As Builder::crossing in build_partition.cpp: once per segment, from its negative end.
 std::uint32_t AdaptiveBuilder::crossing(const SegmentKey& key) {
   if (const auto index = crossing_index_.find(key)) return *index;
-  Vec3 a = lattice_.point(key.start);
-  Vec3 b = lattice_.point(key.end());
-  double fa = cache_.value(twice(key.start));
-  double fb = cache_.value(twice(key.end()));
-  if (!is_negative(fa)) {
-    std::swap(a, b);
-    std::swap(fa, fb);
-  }
-  const Vec3 ab = b - a;
-  auto phi = [&](double t) {
-    ++stats_.root_evaluations;
-    return sampler_.value(a + t * ab);
-  };
-  const double t = bracketed_root(phi, 0.0, fa, 1.0, fb, kRootTolerance, kRootIterations);
-  Crossing c;
-  c.segment = key;
-  c.position = a + t * ab;
-  c.direction = ab.normalized();
-  c.gradient = sampler_.value_gradient(c.position).gradient;
-  crossings_.push_back(c);
+  crossings_.push_back(segment_crossing(sampler_, lattice_, key, cache_.value(twice(key.start)),
+                                        cache_.value(twice(key.end())), kRootTolerance, kRootIterations,
+                                        stats_.root_evaluations));
   return crossing_index_.insert(key).first;
 }
 

@@ -7,6 +7,7 @@
 
 #include "partition/adaptive_partition.hpp"
 #include "partition/cell.hpp"
+#include "partition/cell_checks.hpp"
 #include "partition/cell_tests.hpp"
 #include "partition/config_table.hpp"
 #include "partition/cube_cycles.hpp"
@@ -308,11 +309,7 @@ bool Builder::face_test(const Cell& cell, std::uint16_t crossed) {
   for (int f = 0; f < 6; ++f) {
     bool face_crossed = false;
     for (int e : cube::kFaceEdge[f]) face_crossed = face_crossed || ((crossed >> e) & 1u) != 0;
-    if (!face_crossed) continue;
-    std::array<Vec3, 5> g;
-    for (int k = 0; k < 4; ++k) g[k] = cache_.gradient(cell.corner_half(cube::kFace[f][k]));
-    g[4] = cache_.gradient(cell.face_centre_half(f));
-    if (!in_plane_gradients_agree(g, cube::kFaceAxis[f])) return false;
+    if (face_crossed && !face_gradients_agree(cache_, cell, f)) return false;
   }
   return true;
 }
@@ -320,53 +317,21 @@ bool Builder::face_test(const Cell& cell, std::uint16_t crossed) {
 // Normal-cone test (method.md 4.3.4): gradients at the corners, the centre, the face centres and the
 // loop corners within the cone's half-angle of their mean direction.
 bool Builder::cone_test(const Cell& cell, const std::vector<Loop>& loops) {
-  std::vector<Vec3> g;
-  g.reserve(15 + 6);
-  for (int i = 0; i < 8; ++i) g.push_back(cache_.gradient(cell.corner_half(i)));
-  g.push_back(cache_.gradient(cell.centre_half()));
-  for (int f = 0; f < 6; ++f) g.push_back(cache_.gradient(cell.face_centre_half(f)));
-  for (const Loop& loop : loops)
-    for (std::uint32_t c : loop.corners) g.push_back(crossings_[c].gradient);
-  return gradients_within_cone(g, cos_cone_);
+  return cell_gradients_within_cone(cache_, cell, loops, crossings_, cos_cone_);
 }
 
 // Method.md 5.2 step 5 as a check: the loops are already oriented by the signs (cube_cycles.hpp),
 // which neighbours agree on by construction; here we only ask whether the geometry agrees.
 bool Builder::oriented_along_gradient(const Loop& loop) const {
-  std::vector<Vec3> points;
-  Vec3 mean = Vec3::Zero();
-  for (std::uint32_t c : loop.corners) {
-    points.push_back(crossings_[c].position);
-    const double norm = crossings_[c].gradient.norm();
-    if (norm > 0.0) mean += crossings_[c].gradient / norm;
-  }
-  return newell_normal(points).dot(mean) > 0.0;
+  return loop_oriented_along_gradient(loop, crossings_);
 }
 
 // Corner on a crossed segment (method.md 5.1), computed once per segment from its negative end A:
 // phi(t) = f(A + t (B - A)) on [0, 1], Illinois with bisection safeguard, to 1e-13 in t.
 std::uint32_t Builder::crossing(const SegmentKey& key, double start_value, double end_value) {
   if (const auto index = crossing_index_.find(key)) return *index;
-  Vec3 a = lattice_.point(key.start);
-  Vec3 b = lattice_.point(key.end());
-  double fa = start_value;
-  double fb = end_value;
-  if (!is_negative(fa)) {
-    std::swap(a, b);
-    std::swap(fa, fb);
-  }
-  const Vec3 ab = b - a;
-  auto phi = [&](double t) {
-    ++stats_.root_evaluations;
-    return sampler_.value(a + t * ab);
-  };
-  const double t = bracketed_root(phi, 0.0, fa, 1.0, fb, kRootTolerance, kRootIterations);
-  Crossing c;
-  c.segment = key;
-  c.position = a + t * ab;
-  c.direction = ab.normalized();
-  c.gradient = sampler_.value_gradient(c.position).gradient;
-  crossings_.push_back(c);
+  crossings_.push_back(segment_crossing(sampler_, lattice_, key, start_value, end_value, kRootTolerance,
+                                        kRootIterations, stats_.root_evaluations));
   return crossing_index_.insert(key).first;
 }
 
