@@ -10,6 +10,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "progress_line.hpp"
 
 namespace isopatch::cli {
 namespace {
@@ -26,6 +27,7 @@ struct MeshOptions {
   int fair = 0;
   std::size_t max_vertices = 0;
   bool quiet = false;
+  bool progress = false;
   bool fields = false;
   Settings defaults;
   std::optional<double> edge_length;
@@ -36,6 +38,8 @@ struct MeshOptions {
   std::string coordinates = "wachspress";
   std::string base = "barycentric";
   double max_ray_angle = defaults.max_ray_angle;
+  std::optional<int> remesh;
+  std::optional<double> max_error;
 };
 
 void print_summary(const std::string& surface_name, const Settings& settings, const MeshStats& stats,
@@ -71,6 +75,8 @@ int run_mesh(const MeshOptions& o) {
   settings.max_depth = o.max_depth;
   settings.refinement_levels = o.refinement_levels;
   settings.max_ray_angle = o.max_ray_angle;
+  settings.remesh_iterations = o.remesh;
+  settings.max_error = o.max_error;
   if (o.coordinates == "wachspress")
     settings.coordinates = Settings::Coordinates::Wachspress;
   else if (o.coordinates == "mean-value")
@@ -87,7 +93,14 @@ int run_mesh(const MeshOptions& o) {
   check_output_path(o.output);
   const SurfacePtr surface = resolve_surface(o.surface, settings.box, parse_params(o.params));
   MeshStats stats;
+  std::optional<ProgressLine> line;  // ended (newline) before anything else is printed, also on errors
+  if (progress_wanted(o.progress, o.quiet)) {
+    line.emplace(stderr, method_name(settings.method),
+                 settings.method == Method::MarchingCubes ? "slabs" : "partition rounds");
+    settings.progress = [&line](const Progress& p) { line->update(p); };
+  }
   Mesh mesh = mesh_surface(*surface, settings, &stats);
+  line.reset();
   if (o.fields) attach_fields(mesh, *surface);
   write_mesh(mesh, o.output);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
@@ -132,12 +145,21 @@ Runner add_mesh_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--fair", o->fair, "Marching cubes: rounds of Laplace fairing with re-projection")
       ->capture_default_str();
+  cmd->add_option("--remesh", o->remesh,
+                  "Rounds of surface-bound clean-up: split, collapse, flip, relax, re-project "
+                  "(default: 6 for projection, 0 for mc; 0: the paper's method alone)");
+  cmd->add_option("--max-error", o->max_error,
+                  "Curvature-adapted sizes: triangle centroids stay within this distance of f = 0 "
+                  "(edges at most --edge-length)");
   cmd->add_option("--max-vertices", o->max_vertices,
                   "Stop with an error beyond this many vertices (0: none)");
   cmd->add_flag(
       "--fields", o->fields,
       "Store discrete and exact mean and Gaussian curvature and the distance to f = 0 per vertex (PLY)");
-  cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success");
+  cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success (and no progress line)");
+  cmd->add_flag(
+      "--progress", o->progress,
+      "Show a progress line on stderr even when it is not a terminal (default: only on a terminal)");
   return [o] { return run_mesh(*o); };
 }
 

@@ -26,6 +26,15 @@ struct PointCurvature {
 PointCurvature analytic_curvature(const SecondOrder& sample);
 /// Same, evaluating surface.second_order(p).
 PointCurvature analytic_curvature(const Surface& surface, const Vec3& p);
+/// Largest absolute principal curvature max(|k1|, |k2|) = |H| + sqrt(max(H^2 - K, 0)) of the level set
+/// through p; +infinity where the gradient vanishes or the derivatives are not finite.
+double max_abs_principal_curvature(const Surface& surface, const Vec3& p);
+
+/// The edge length whose equilateral triangles on a surface of largest principal curvature
+/// `max_abs_curvature` keep their centroids within `max_error` of the surface, with room for edges up
+/// to 4/3 of it (the remesher's tolerance): sqrt(3 * max_error / kappa). Infinite when the curvature is
+/// zero. \pre max_error > 0, max_abs_curvature >= 0.
+double size_for_error(double max_abs_curvature, double max_error);
 
 /// Discrete curvature of a triangle mesh at every vertex (Meyer, Desbrun, Schroeder, Barr 2003,
 /// "Discrete differential-geometry operators for triangulated 2-manifolds").

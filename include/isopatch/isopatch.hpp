@@ -18,6 +18,8 @@ namespace isopatch {
 
 /// Meshes the zero set of `surface` inside settings.box (or surface.box()) with settings.method.
 /// The result is an indexed triangle mesh oriented with normals along grad f. Fills `stats` when given.
+/// Before meshing, f identically zero on the box (interval bound [0, 0], or f and grad f exactly 0 at
+/// a 16^3 grid of samples) is rejected at once with NoSurfaceError ("... f is identically zero ...").
 /// \throw InputError, EvaluationError, NoSurfaceError, LimitError (see the method's own header).
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats = nullptr);
 

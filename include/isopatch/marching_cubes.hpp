@@ -15,8 +15,9 @@
 
 namespace isopatch {
 
-/// Meshes surface.box() (or settings.box) on a cubic grid of settings.grid cells along the longest
-/// axis (see marching_cubes_grid()). One z-slab of cells at a time: two layers of samples are kept,
+/// Meshes surface.box() (or settings.box) on a grid of settings.grid cubic cells along the longest
+/// axis, whose outer planes are the box faces (see marching_cubes_grid()): f is evaluated only in the
+/// closed box, and every vertex lies in it. One z-slab of cells at a time: two layers of samples are kept,
 /// so working memory is O(N^2). Vertices sit on the crossed grid edges, one per edge, placed by
 /// settings.edge_root; with EdgeRoot::Bracketed they lie on f = 0 to ~1e-13 of a cell.
 /// settings.progress is called and settings.cancel checked once per slab. `stats` (optional)
@@ -25,18 +26,29 @@ namespace isopatch {
 /// NoSurfaceError if no grid edge is crossed; LimitError on cancel or max_vertices.
 Mesh marching_cubes(const Surface& surface, const Settings& settings, MeshStats* stats = nullptr);
 
-/// The lattice marching_cubes() samples: point (i, j, k) is origin + cell * (i, j, k) for
-/// 0 <= i <= cells[0], 0 <= j <= cells[1], 0 <= k <= cells[2].
+/// The lattice marching_cubes() samples: point (i, j, k) is (planes[0][i], planes[1][j], planes[2][k])
+/// for 0 <= i <= cells[0], 0 <= j <= cells[1], 0 <= k <= cells[2]. Every point lies in the closed box.
 struct McGrid {
-  Vec3 origin = Vec3::Zero();
-  double cell = 0.0;           ///< edge length of the cubic cells
-  std::array<int, 3> cells{};  ///< cells along x, y, z
+  /// Lattice plane coordinates per axis, increasing; the first is box.lo, the last box.hi.
+  std::array<std::vector<double>, 3> planes;
+  double cell = 0.0;           ///< edge length of the inner (cubic) cells
+  std::array<int, 3> cells{};  ///< cells along x, y, z: planes[a].size() - 1
+
+  /// Lattice point (i, j, k). \pre the indices are in range.
+  Vec3 point(int i, int j, int k) const {
+    return Vec3(planes[0][static_cast<std::size_t>(i)], planes[1][static_cast<std::size_t>(j)],
+                planes[2][static_cast<std::size_t>(k)]);
+  }
 };
 
-/// The grid for `box`: cell = longest box side / settings.grid; the origin is box.lo shifted back by
-/// settings.grid_offset * cell * (0.1234, 0.5678, 0.9012), and each axis has the fewest cells that
-/// reach box.hi from there (up to 1e-9 of a cell), so with an offset the grid usually has one cell
-/// more than the box along each axis and overhangs it by less than a cell.
+/// The grid for `box`: cell = longest box side / settings.grid. The outer lattice planes are the box
+/// faces, so f is evaluated only in the closed box and every vertex lies in it. The inner planes along
+/// axis a are box.lo[a] + (m - sigma[a]) * cell for the integers m with cell / 2 <= (m - sigma[a]) *
+/// cell < box side - cell / 2, where sigma = settings.grid_offset * (0.1234, 0.5678, 0.9012) shifts them
+/// off dyadic positions. Inner cells are cubes of side `cell`; the outermost layer on each side is
+/// between cell / 2 and 3 cell / 2 thick. The longest axis has exactly settings.grid cells. With offset
+/// 0 the inner planes are box.lo + m * cell (the outer layers are full cells when the side is a multiple
+/// of cell).
 /// \throw InputError unless 1 <= settings.grid <= 4096, 0 <= settings.grid_offset < 1, box.valid().
 McGrid marching_cubes_grid(const Box& box, const Settings& settings);
 

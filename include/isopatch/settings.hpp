@@ -31,6 +31,9 @@ struct Progress {
   std::size_t total = 0;  ///< work units in all
 };
 
+/// Rounds of remeshing applied to projection meshes when Settings::remesh_iterations is empty.
+inline constexpr int kDefaultRemeshIterations = 6;
+
 struct Settings {
   Method method = Method::Projection;
   /// The region to mesh; the surface's default box when empty. Must be valid().
@@ -47,7 +50,8 @@ struct Settings {
   int fair_iterations = 0;
 
   // --- Projection (Sipos & Salvi 2021) ---------------------------------------------------------
-  /// Target edge length of the output. Empty: the longest box side / 64. Must be > 0.
+  /// Target edge length of the output (with max_error: the largest). Empty: see default_edge_length.
+  /// Must be > 0.
   std::optional<double> edge_length;
   /// Segments per patch side (the template resolution r), 1..64; 0 (default): chosen per depth as the
   /// cell size over the edge length (4..8 at the starting depth, at least 2 after refinement).
@@ -82,6 +86,15 @@ struct Settings {
   /// centre (ring templates), 4 centre of a fallback fan.
   bool vertex_roles = false;
 
+  // --- Whole-surface clean-up (remesh.hpp) ------------------------------------------------------
+  /// Rounds of surface-bound remeshing (split, collapse, flip, relax, project) applied to the output,
+  /// 0..100. Empty (default): 6 for projection, 0 for marching cubes. 0 gives the paper's method alone.
+  std::optional<int> remesh_iterations;
+  /// When set: a curvature-adapted size field keeps the distance of triangle centroids from f = 0 below
+  /// this bound (edge lengths sqrt(3 eps / kappa_max), at most edge_length, graded); the projection
+  /// octree refines where the field asks for smaller cells. Must be > 0.
+  std::optional<double> max_error;
+
   // --- Budgets and control ----------------------------------------------------------------------
   /// Abort with LimitError when the output would exceed this many vertices. 0: no limit.
   std::size_t max_vertices = 0;
@@ -90,6 +103,13 @@ struct Settings {
   /// When set and true, the mesher stops with LimitError("cancelled") at the next check.
   const std::atomic<bool>* cancel = nullptr;
 };
+
+/// The target edge length of the projection mesher, or with max_error the largest size the size field
+/// may ask for: Settings::edge_length when given, else the longest side of `box` / 64 (/ 16 with
+/// max_error).
+inline double default_edge_length(const Settings& s, const Box& box) {
+  return s.edge_length.value_or(box.size().maxCoeff() / (s.max_error ? 16.0 : 64.0));
+}
 
 /// What a mesher did, for summaries and benchmarks.
 struct MeshStats {

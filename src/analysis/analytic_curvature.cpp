@@ -1,8 +1,7 @@
-// Exact curvature of level sets (Goldman 2005) and the per-vertex fields built from it.
+// Per-vertex fields of exact (src/surface/level_set_curvature.cpp) and discrete curvature.
 #include <isopatch/curvature.hpp>
 
-#include <Eigen/Geometry>
-
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -11,19 +10,6 @@
 namespace isopatch {
 namespace {
 
-// The adjugate (transposed cofactor matrix): its columns are cross products of the rows of m. It
-// stays finite and meaningful when m is singular, which the inverse would not.
-Mat3 adjugate(const Mat3& m) {
-  const Vec3 r0 = m.row(0).transpose();
-  const Vec3 r1 = m.row(1).transpose();
-  const Vec3 r2 = m.row(2).transpose();
-  Mat3 adj;
-  adj.col(0) = r1.cross(r2);
-  adj.col(1) = r2.cross(r0);
-  adj.col(2) = r0.cross(r1);
-  return adj;
-}
-
 std::vector<float> to_float(const std::vector<double>& values) {
   std::vector<float> out(values.size());
   for (std::size_t i = 0; i < values.size(); ++i) out[i] = static_cast<float>(values[i]);
@@ -31,25 +17,6 @@ std::vector<float> to_float(const std::vector<double>& values) {
 }
 
 }  // namespace
-
-PointCurvature analytic_curvature(const SecondOrder& sample) {
-  const Vec3& g = sample.gradient;
-  const Mat3& h = sample.hessian;
-  const double g2 = g.squaredNorm();
-  if (!(g2 > 0.0) || !std::isfinite(g2)) {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    return {nan, nan};
-  }
-  const double g1 = std::sqrt(g2);
-  PointCurvature c;
-  c.mean = (g2 * h.trace() - g.dot(h * g)) / (2.0 * g2 * g1);
-  c.gaussian = g.dot(adjugate(h) * g) / (g2 * g2);
-  return c;
-}
-
-PointCurvature analytic_curvature(const Surface& surface, const Vec3& p) {
-  return analytic_curvature(surface.second_order(p));
-}
 
 CurvatureFields curvature_fields(const Mesh& mesh, const Surface& surface) {
   DiscreteCurvature discrete = discrete_curvature(mesh);  // checks the mesh

@@ -1,12 +1,83 @@
 // The single entry point: dispatch on Settings::method.
+#include <isopatch/error.hpp>
 #include <isopatch/fairing.hpp>
 #include <isopatch/isopatch.hpp>
+#include <isopatch/remesh.hpp>
 
+#include <algorithm>
 #include <chrono>
+
+#include <cmath>
+#include <string>
+#include <vector>
+#include "surface/zero_function.hpp"
 
 namespace isopatch {
 
+namespace {
+
+/// The median edge length of `mesh` (0 for a mesh without triangles).
+double median_edge_length(const Mesh& mesh) {
+  std::vector<double> lengths;
+  lengths.reserve(mesh.triangles.size() * 3);
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      lengths.push_back((mesh.positions[t[static_cast<std::size_t>(i)]] -
+                         mesh.positions[t[static_cast<std::size_t>((i + 1) % 3)]])
+                            .norm());
+  if (lengths.empty()) return 0.0;
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2),
+                   lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+/// The remeshing settings derived from the mesher's: the requested edge length (else the output's
+/// median edge length) and, with max_error, sizes between 1/2048 of the longest box side and that length.
+RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings& s, int iterations) {
+  RemeshSettings r;
+  r.iterations = iterations;
+  r.box = box;
+  r.cancel = s.cancel;
+  r.edge_length = s.max_error ? default_edge_length(s, box) : s.edge_length.value_or(median_edge_length(mesh));
+  if (s.max_error) {
+    r.max_error = s.max_error;
+    r.min_edge_length = std::min(r.edge_length, box.size().maxCoeff() / 2048.0);
+  }
+  return r;
+}
+
+/// Applies the surface-bound clean-up of remesh.hpp when Settings asks for it (see remesh_iterations).
+void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, MeshStats* stats) {
+  const int iterations = settings.remesh_iterations.value_or(
+      settings.method == Method::Projection ? kDefaultRemeshIterations : 0);
+  if (iterations == 0 || mesh.triangles.empty()) return;
+  const auto start = std::chrono::steady_clock::now();
+  const Box box = settings.box.value_or(surface.box());
+  const RemeshStats r = remesh_on_surface(mesh, surface, remesh_settings(mesh, box, settings, iterations));
+  if (!stats) return;
+  stats->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stats->gradient_evaluations += r.gradient_evaluations;
+  stats->vertices = mesh.vertex_count();
+  stats->triangles = mesh.triangle_count();
+  stats->extra["remesh_iterations"] = iterations;
+  stats->extra["remesh_splits"] = static_cast<double>(r.splits);
+  stats->extra["remesh_collapses"] = static_cast<double>(r.collapses);
+  stats->extra["remesh_flips"] = static_cast<double>(r.flips);
+  stats->extra["remesh_repairs"] = static_cast<double>(r.repairs);
+  stats->extra["remesh_rejected_moves"] = static_cast<double>(r.rejected_moves);
+  stats->extra["hessian_evaluations"] = static_cast<double>(r.hessian_evaluations);
+}
+
+}  // namespace
+
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
+  // f = 0 everywhere is no surface, and neither mesher could tell quickly (see zero_function.hpp).
+  reject_zero_function(surface, settings.box.value_or(surface.box()));
+  if (settings.remesh_iterations && (*settings.remesh_iterations < 0 || *settings.remesh_iterations > 100))
+    throw InputError("remesh iterations must be between 0 and 100, got " +
+                     std::to_string(*settings.remesh_iterations));
+  if (settings.max_error && !(std::isfinite(*settings.max_error) && *settings.max_error > 0.0))
+    throw InputError("the maximum error must be a positive number");
   switch (settings.method) {
     case Method::MarchingCubes: {
       Mesh mesh = marching_cubes(surface, settings, stats);
@@ -20,10 +91,14 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
           stats->extra["fair_unconverged"] = static_cast<double>(fairing.unconverged);
         }
       }
+      clean_up(mesh, surface, settings, stats);
       return mesh;
     }
-    case Method::Projection:
-      return mesh_projection(surface, settings, stats);
+    case Method::Projection: {
+      Mesh mesh = mesh_projection(surface, settings, stats);
+      clean_up(mesh, surface, settings, stats);
+      return mesh;
+    }
   }
   throw Error(ErrorKind::Internal, "unknown method");
 }

@@ -39,7 +39,8 @@ Vec3 edge_root(const Surface& surface, const Vec3& a, const Vec3& b, double fa, 
   }
   if (t == 0.0) return a;
   if (t == 1.0) return b;
-  return a + t * (b - a);
+  // Clamped to the segment's bounding box: rounding must not push the point past b (a box face).
+  return (a + t * (b - a)).cwiseMax(a.cwiseMin(b)).cwiseMin(a.cwiseMax(b));
 }
 
 }  // namespace isopatch::mc

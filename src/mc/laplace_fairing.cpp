@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "surface/project_point.hpp"
 #include "surface/sampler.hpp"
 
 namespace isopatch {
@@ -47,22 +48,6 @@ Adjacency build_adjacency(const Mesh& mesh) {
     adj.offsets.push_back(adj.neighbours.size());
   }
   return adj;
-}
-
-/// Newton steps along the gradient; false when |f|/|g| does not drop below the tolerance.
-bool project_to_surface(const Sampler& f, Vec3& p, double tolerance, double max_step) {
-  for (int it = 0; it < 30; ++it) {
-    const ValueGradient vg = f.value_gradient(p);
-    const double g2 = vg.gradient.squaredNorm();
-    if (!(g2 > 0.0)) return false;
-    const double distance = std::abs(vg.value) / std::sqrt(g2);
-    if (distance <= tolerance) return true;
-    Vec3 step = vg.value / g2 * vg.gradient;
-    const double length = step.norm();
-    if (length > max_step) step *= max_step / length;
-    p -= step;
-  }
-  return false;
 }
 
 }  // namespace

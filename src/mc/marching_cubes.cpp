@@ -61,10 +61,7 @@ class SlabMesher {
   std::uint64_t evaluations() const { return evaluations_; }
 
  private:
-  Vec3 point(int i, int j, int k) const {
-    return grid_.origin +
-           grid_.cell * Vec3(static_cast<double>(i), static_cast<double>(j), static_cast<double>(k));
-  }
+  Vec3 point(int i, int j, int k) const { return grid_.point(i, j, k); }
   std::size_t at(int i, int j) const { return static_cast<std::size_t>(j) * (nx_ + 1) + i; }
 
   void sample_layer(int k, int slot) {

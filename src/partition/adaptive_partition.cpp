@@ -274,6 +274,7 @@ Analysis AdaptiveBuilder::analyse(const CellKey& key) {
   a.leaf.depth = key.depth;
   a.leaf.coords = key.coords;
   a.leaf.box = lattice_.cell_box(key.depth, key.coords);
+  if (!lattice_.inside(key.depth, key.coords)) return a;  // outside the box: empty
   for (int i = 0; i < 8; ++i)
     if (is_negative(cache_.value(cell.corner_half(i))))
       a.leaf.config = static_cast<std::uint8_t>(a.leaf.config | (1u << i));

@@ -144,6 +144,7 @@ void Builder::close_holes() {
       if (coords[u] >= cells || coords[v] >= cells || !known.insert(half_key(coords)).second) continue;
       check_cancel();
       ++stats_.cells_recovered;
+      if (!lattice_.inside(depth, coords)) continue;
       const Cell cell = Cell::make(lattice_, depth, coords);
       std::array<double, 8> values{};
       surface_cell(cell, values, corner_signs(cell, values));
@@ -167,6 +168,7 @@ void Builder::check_cancel() const {
 
 void Builder::visit(const Cell& cell) {
   check_cancel();
+  if (!lattice_.inside(cell.depth, cell.coords)) return;  // outside the box
   ++stats_.cells_visited;
   bool bounded = false;
   if (settings_.use_intervals) {

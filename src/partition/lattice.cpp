@@ -28,9 +28,9 @@ double Lattice::unit() const {
 
 Vec3 Lattice::half_point(const LatticePoint& h) const {
   const double half_unit = std::ldexp(size, -(max_depth + 1));
-  return Vec3(origin.x() + static_cast<double>(h[0]) * half_unit,
-              origin.y() + static_cast<double>(h[1]) * half_unit,
-              origin.z() + static_cast<double>(h[2]) * half_unit);
+  return Vec3(std::clamp(origin.x() + static_cast<double>(h[0]) * half_unit, clip.lo.x(), clip.hi.x()),
+              std::clamp(origin.y() + static_cast<double>(h[1]) * half_unit, clip.lo.y(), clip.hi.y()),
+              std::clamp(origin.z() + static_cast<double>(h[2]) * half_unit, clip.lo.z(), clip.hi.z()));
 }
 
 Vec3 Lattice::point(const LatticePoint& p) const {
@@ -43,6 +43,11 @@ Box Lattice::cell_box(int depth, const LatticePoint& cell) const {
   return Box{point(lo), point({lo[0] + s, lo[1] + s, lo[2] + s})};
 }
 
+bool Lattice::inside(int depth, const LatticePoint& cell) const {
+  const Box b = cell_box(depth, cell);
+  return (b.lo.array() < b.hi.array()).all();
+}
+
 Lattice make_lattice(const Box& box, int max_depth) {
   if (!box.valid()) throw InputError("partition: the box must be finite with lo < hi on every axis");
   if (max_depth < 0 || max_depth > Lattice::kMaxDepth)
@@ -53,6 +58,7 @@ Lattice make_lattice(const Box& box, int max_depth) {
   lattice.size = 1.02 * box.size().maxCoeff();
   const Vec3 offset = 1e-3 * lattice.size * Vec3(0.1234, 0.5678, 0.9012);
   lattice.origin = box.centre() - Vec3::Constant(0.5 * lattice.size) + offset;
+  lattice.clip = box;
   return lattice;
 }
 

@@ -10,6 +10,7 @@
 #include <compare>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace isopatch {
 
@@ -23,6 +24,10 @@ struct Lattice {
   Vec3 origin = Vec3::Zero();
   double size = 1.0;  ///< side of the root cube
   int max_depth = 0;  ///< D, 0..kMaxDepth
+  /// The user's box: every position is clamped into it, so f is never evaluated outside it. Cells that
+  /// straddle the box become the part inside; cells outside it are flat (see Lattice::inside).
+  Box clip{Vec3::Constant(-std::numeric_limits<double>::infinity()),
+           Vec3::Constant(std::numeric_limits<double>::infinity())};
 
   static constexpr int kMaxDepth = 20;
 
@@ -34,13 +39,16 @@ struct Lattice {
   Vec3 half_point(const LatticePoint& h) const;
   /// The point with finest coordinates p; bit-identical to half_point(2p).
   Vec3 point(const LatticePoint& p) const;
-  /// The box of the cell with coordinates `cell` at `depth` (cell sizes from the root's lower corner).
+  /// The box of the cell with coordinates `cell` at `depth` (cell sizes from the root's lower corner),
+  /// clamped to `clip`.
   Box cell_box(int depth, const LatticePoint& cell) const;
+  /// Whether the cell has a part of positive volume inside `clip` (cells outside are skipped).
+  bool inside(int depth, const LatticePoint& cell) const;
 };
 
 /// The root cube of method.md 4.1: `box` made cubic (its longest side), grown by 2% and shifted by
 /// the non-dyadic offset 1e-3 * size * (0.1234, 0.5678, 0.9012), so symmetric surfaces do not pass
-/// through lattice points. The result still contains `box`.
+/// through lattice points. The result still contains `box`, and clips its positions to `box`.
 /// \throw InputError if !box.valid() or max_depth is outside 0..Lattice::kMaxDepth.
 Lattice make_lattice(const Box& box, int max_depth);
 

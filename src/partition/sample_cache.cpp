@@ -18,7 +18,10 @@ SampleCache::Sample& SampleCache::sample(const LatticePoint& h) {
 Vec3 SampleCache::gradient(const LatticePoint& h) {
   Sample& s = sample(h);
   if (!s.has_gradient) {
-    s.gradient = sampler_.value_gradient(lattice_.half_point(h)).gradient;
+    // A gradient that is not finite (f not differentiable there, e.g. sqrt at the edge of its domain
+    // on a box face) is kept as it is: the sampling tests treat it as failing (no pruning, no single
+    // sheet), while the crossings that need it raise EvaluationError themselves.
+    s.gradient = sampler_.value_gradient_unchecked(lattice_.half_point(h)).gradient;
     s.has_gradient = true;
   }
   return s.gradient;

@@ -28,7 +28,9 @@ class SampleCache {
   /// f at the half-lattice point h, evaluated once. \throw EvaluationError when not finite.
   double value(const LatticePoint& h) { return sample(h).value; }
   /// grad f at the half-lattice point h, evaluated once on first request. The value at h is always
-  /// the one of value(h), whichever is asked first. \throw EvaluationError when not finite.
+  /// the one of value(h), whichever is asked first. May be NaN or infinite (f not differentiable
+  /// there): callers treat such a gradient as failing their test. \throw EvaluationError when the
+  /// value at h is not finite.
   Vec3 gradient(const LatticePoint& h);
 
   /// f at the segment_samples points strictly inside the segment, t = k / (n + 1), k = 1..n, from

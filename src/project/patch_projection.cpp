@@ -11,6 +11,9 @@ bool triangles_agree_with_gradient(const PatchTemplate& patch, const std::vector
     const SurfacePoint& a = points[static_cast<std::size_t>(t[0])];
     const SurfacePoint& b = points[static_cast<std::size_t>(t[1])];
     const SurfacePoint& c = points[static_cast<std::size_t>(t[2])];
+    // Template vertices merged onto one side point (a side with fewer segments) give triangles that
+    // are dropped from the mesh: they cannot flip.
+    if (a.position == b.position || b.position == c.position || c.position == a.position) continue;
     const Vec3 normal = (b.position - a.position).cross(c.position - a.position);
     if (!(normal.dot(a.gradient.normalized() + b.gradient.normalized() + c.gradient.normalized()) > 0.0))
       return false;

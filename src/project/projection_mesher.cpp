@@ -1,12 +1,15 @@
 // The projection mesher for whole surfaces (see include/isopatch/projection.hpp). Three phases per
 // partition, each a loop over independent items, so they can later run in parallel with the same
 // output: (1) the boundary vertices of every shared side, (2) every patch, (3) assembly by IDs.
+#include <isopatch/curvature.hpp>
 #include <isopatch/error.hpp>
 #include <isopatch/projection.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -85,7 +88,7 @@ ProjectionParams projection_params(const Settings& s, int resolution) {
 }
 
 double target_edge(const Box& box, const Settings& s) {
-  return s.edge_length.value_or(box.size().maxCoeff() / 64.0);
+  return default_edge_length(s, box);
 }
 
 /// With a fixed resolution r: the depth whose cells are closest (in log scale) to r * edge length.
@@ -96,14 +99,6 @@ int initial_depth(const Lattice& lattice, const Box& box, const Settings& s) {
                                         : std::ceil(std::log2(lattice.size / (edge * kAutoSegments)) - 1e-9);
   return static_cast<int>(
       std::clamp(depth, static_cast<double>(s.min_depth), static_cast<double>(s.max_depth)));
-}
-
-/// Segments per side at `depth`: the fixed resolution, or the cell size over the target edge length.
-int resolution_at(const Lattice& lattice, const Box& box, const Settings& s, int depth) {
-  if (s.resolution > 0) return s.resolution;
-  const double cell = std::ldexp(lattice.size, -depth);
-  const double r = std::round(cell / target_edge(box, s));
-  return static_cast<int>(std::clamp(r, 2.0, static_cast<double>(PatchTemplate::kMaxResolution)));
 }
 
 CoordinateKind coordinate_kind(const Settings& s) {
@@ -135,6 +130,33 @@ std::size_t leaves_needing_refinement(const Partition& partition) {
       std::count_if(partition.leaves.begin(), partition.leaves.end(), needs_refinement));
 }
 
+/// The target edge length at a point: the requested (or default) edge length, or with max_error the
+/// curvature-adapted size (remesh.hpp size_for_error) between 1/2048 of the longest box side and it.
+std::function<double(const Vec3&)> size_function(const Surface& surface, const Box& box, const Settings& s) {
+  const double edge = target_edge(box, s);
+  if (!s.max_error) return [edge](const Vec3&) { return edge; };
+  const double smallest = std::min(edge, box.size().maxCoeff() / 2048.0);
+  const double eps = *s.max_error;
+  return [&surface, edge, smallest, eps](const Vec3& p) {
+    return std::clamp(size_for_error(max_abs_principal_curvature(surface, p), eps), smallest, edge);
+  };
+}
+
+/// Surface leaves shallower than `max_depth` whose cell is longer than kAutoSegments times the
+/// smallest target size at their corners.
+std::vector<CellKey> leaves_too_large_for(const Partition& partition,
+                                          const std::function<double(const Vec3&)>& size_at, int max_depth) {
+  std::vector<CellKey> keys;
+  for (const Leaf& leaf : partition.leaves) {
+    if (leaf.depth >= max_depth) continue;
+    double h = std::numeric_limits<double>::infinity();
+    for (const Loop& loop : leaf.loops)
+      for (std::uint32_t c : loop.corners) h = std::min(h, size_at(partition.crossings[c].position));
+    if (leaf.box.size().maxCoeff() > kAutoSegments * h) keys.push_back(CellKey{leaf.depth, leaf.coords});
+  }
+  return keys;
+}
+
 void check_cancel(const Settings& s) {
   if (s.cancel && s.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
 }
@@ -150,13 +172,17 @@ void check_vertex_budget(const Settings& s, std::size_t vertices) {
 /// boundaries.
 class PartitionMesher {
  public:
+  /// `resolution` > 0: every side gets that many segments; 0: each side gets its own count from its
+  /// length and the target size at its ends (`size_at`).
   PartitionMesher(const Sampler& f, const Partition& partition, const Settings& settings, int resolution,
-                  int refinable_depth)
+                  int refinable_depth, std::function<double(const Vec3&)> size_at)
       : f_(f),
         part_(partition),
         settings_(settings),
-        params_(projection_params(settings, resolution)),
-        refinable_depth_(refinable_depth) {}
+        params_(projection_params(settings, std::max(resolution, 1))),
+        fixed_resolution_(resolution),
+        refinable_depth_(refinable_depth),
+        size_at_(std::move(size_at)) {}
 
   /// The mesh; meaningful only when to_split() is empty afterwards.
   Mesh run(Counters& counters) {
@@ -171,6 +197,13 @@ class PartitionMesher {
     return std::move(mesh_);
   }
 
+  /// Smallest and largest segment count over the sides (0, 0 without sides).
+  std::pair<int, int> segment_range() const {
+    if (side_segments_.empty()) return {0, 0};
+    const auto [lo, hi] = std::minmax_element(side_segments_.begin(), side_segments_.end());
+    return {*lo, *hi};
+  }
+
   /// Leaves to split before meshing again, sorted and unique.
   std::vector<CellKey> to_split() const {
     std::vector<CellKey> keys;
@@ -180,7 +213,36 @@ class PartitionMesher {
   }
 
  private:
-  std::size_t inner_points() const { return static_cast<std::size_t>(params_.resolution - 1); }
+  /// Segments of side s (shared by both its patches).
+  int segments(std::size_t s) const { return side_segments_[s]; }
+
+  /// Segments per side for a leaf: the fixed resolution, or its cell size over the smallest target size
+  /// at its corners (at least 1), so leaves of one depth share one template resolution and deeper leaves
+  /// get proportionally fewer segments.
+  int leaf_resolution(std::size_t l) {
+    if (fixed_resolution_ > 0) return fixed_resolution_;
+    const Leaf& leaf = part_.leaves[l];
+    double h = std::numeric_limits<double>::infinity();
+    for (const Loop& loop : leaf.loops)
+      for (std::uint32_t c : loop.corners) h = std::min(h, crossing_size(c));
+    const double cell = part_.lattice.unit() * part_.lattice.step(leaf.depth);
+    const double r = std::round(cell / h);
+    return static_cast<int>(std::clamp(r, 1.0, static_cast<double>(PatchTemplate::kMaxResolution)));
+  }
+
+  /// The segment count of side i: the smallest resolution of the leaves that share it, so the finer
+  /// neighbour keeps its regular template and the coarser one merges boundary vertices.
+  int side_segments(std::size_t i) {
+    int k = PatchTemplate::kMaxResolution;
+    for (std::size_t l : side_leaves_[i]) k = std::min(k, leaf_resolution(l));
+    return k;
+  }
+
+  double crossing_size(std::uint32_t c) {
+    if (crossing_sizes_.empty()) crossing_sizes_.assign(part_.crossings.size(), -1.0);
+    if (crossing_sizes_[c] < 0.0) crossing_sizes_[c] = size_at_(part_.crossings[c].position);
+    return crossing_sizes_[c];
+  }
 
   void collect_sides() {
     std::vector<std::pair<Side, std::size_t>> uses;  // side, leaf using it
@@ -221,9 +283,12 @@ class PartitionMesher {
     for (const Crossing& c : part_.crossings) gradients_.push_back(c.gradient);
     side_points_.reserve(sides_.size());
     side_accepted_.reserve(sides_.size());
+    side_offsets_.reserve(sides_.size());
     for (std::size_t i = 0; i < sides_.size(); ++i) {
       check_cancel(settings_);
-      SidePoints s = sample(sides_[i]);
+      side_segments_.push_back(side_segments(i));
+      side_offsets_.push_back(mesh_.positions.size());
+      SidePoints s = sample(sides_[i], side_segments_.back());
       if (!s.accepted) {
         ++counters.rejected_sides;
         for (std::size_t leaf : side_leaves_[i])
@@ -241,12 +306,14 @@ class PartitionMesher {
   }
 
   /// The side's inner boundary vertices; with the Coons base also its face curve, kept for the patches.
-  SidePoints sample(const Side& side) {
+  SidePoints sample(const Side& side, int segments) {
     const Crossing& from = part_.crossings[side.from];
     const Crossing& to = part_.crossings[side.to];
+    ProjectionParams params = params_;
+    params.resolution = segments;
     if (settings_.base == Settings::Base::Barycentric)
-      return sample_side(f_, part_.lattice, from, to, side.face, params_);
-    FaceCurve curve = trace_face_curve(f_, part_.lattice, from, to, side.face, params_);
+      return sample_side(f_, part_.lattice, from, to, side.face, params);
+    FaceCurve curve = trace_face_curve(f_, part_.lattice, from, to, side.face, params);
     side_curves_.push_back(std::move(curve.dense));
     return SidePoints{std::move(curve.points), curve.accepted};
   }
@@ -274,12 +341,15 @@ class PartitionMesher {
     return std::make_unique<CoonsPatch>(std::move(curves));
   }
 
-  /// Global id of inner point i (1..r-1, counted from corner a) of the side from crossing a to b.
+  /// Global id of point i (0..k, counted from corner a; 0 and k are the corners) of the side from
+  /// crossing a to b with k segments.
   std::uint32_t side_vertex(std::uint32_t a, std::uint32_t b, int i) const {
     const std::size_t s = side_index(a, b);
-    const std::size_t j =
-        a < b ? static_cast<std::size_t>(i) : static_cast<std::size_t>(params_.resolution - i);
-    return static_cast<std::uint32_t>(part_.crossings.size() + s * inner_points() + (j - 1));
+    const int k = segments(s);
+    if (i <= 0) return a;
+    if (i >= k) return b;
+    const std::size_t j = a < b ? static_cast<std::size_t>(i) : static_cast<std::size_t>(k - i);
+    return static_cast<std::uint32_t>(side_offsets_[s] + (j - 1));
   }
 
   bool loop_sides_accepted(const Loop& loop) const {
@@ -316,7 +386,13 @@ class PartitionMesher {
 
   PatchVerdict mesh_patch(const Leaf& leaf, const Loop& loop, PatchStats& patch_stats) {
     const int n = static_cast<int>(loop.corners.size());
-    const auto patch = patch_template(n, params_.resolution, coordinate_kind(settings_));
+    // The template has as many segments per side as the loop's longest side count; a side with fewer
+    // takes, for template vertex i, its point round(i k / r): coinciding template vertices merge and the
+    // triangles between them vanish (method.md 15, option 1).
+    int r = 1;
+    for (std::size_t k = 0; k < loop.corners.size(); ++k)
+      r = std::max(r, segments(side_index(loop.corners[k], loop.corners[(k + 1) % loop.corners.size()])));
+    const auto patch = patch_template(n, r, coordinate_kind(settings_));
     std::vector<Vec3> d;
     const std::unique_ptr<BaseSurface> base = base_surface(loop, d);
     std::vector<std::uint32_t> ids(patch->vertex_count(), 0);
@@ -327,7 +403,12 @@ class PartitionMesher {
       const auto k = static_cast<std::size_t>(tag.side);
       const std::uint32_t a = loop.corners[k];
       const std::uint32_t b = loop.corners[(k + 1) % loop.corners.size()];
-      ids[v] = tag.kind == VertexTag::Kind::Corner ? a : side_vertex(a, b, tag.index);
+      if (tag.kind == VertexTag::Kind::Corner) {
+        ids[v] = a;
+      } else {
+        const int count = segments(side_index(a, b));
+        ids[v] = side_vertex(a, b, (2 * tag.index * count + r) / (2 * r));
+      }
       points[v] = {mesh_.positions[ids[v]], gradients_[ids[v]]};
     }
     const PatchVerdict verdict = project_patch(f_, *patch, *base, d, leaf.box, params_, points, patch_stats);
@@ -339,9 +420,11 @@ class PartitionMesher {
       gradients_.push_back(points[v].gradient);
       roles_.push_back(static_cast<int>(v) == patch->centre() ? 3.0f : 2.0f);
     }
-    for (const TemplateTriangle& t : patch->triangles())
-      mesh_.triangles.push_back({ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])],
-                                 ids[static_cast<std::size_t>(t[2])]});
+    for (const TemplateTriangle& t : patch->triangles()) {
+      const Triangle tri{ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])],
+                         ids[static_cast<std::size_t>(t[2])]};
+      if (tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0]) mesh_.triangles.push_back(tri);
+    }
     return PatchVerdict::Accepted;
   }
 
@@ -353,7 +436,7 @@ class PartitionMesher {
       const std::uint32_t a = loop.corners[k];
       const std::uint32_t b = loop.corners[(k + 1) % loop.corners.size()];
       polygon.push_back(a);
-      for (int i = 1; i < params_.resolution; ++i) polygon.push_back(side_vertex(a, b, i));
+      for (int i = 1; i < segments(side_index(a, b)); ++i) polygon.push_back(side_vertex(a, b, i));
     }
     Vec3 centre = Vec3::Zero();
     Vec3 normal = Vec3::Zero();
@@ -368,7 +451,9 @@ class PartitionMesher {
     // by half its size (a fallback cell is a poor fit by definition; its fan must still close it).
     RayMarchSettings march;
     march.steps = params_.march_steps;
-    const Box region{leaf.box.lo - 0.5 * leaf.box.size(), leaf.box.hi + 0.5 * leaf.box.size()};
+    const Box& clip = part_.lattice.clip;
+    const Box region{(leaf.box.lo - 0.5 * leaf.box.size()).cwiseMax(clip.lo),
+                     (leaf.box.hi + 0.5 * leaf.box.size()).cwiseMin(clip.hi)};
     const double f_centre = f_.value(centre);
     std::optional<RayHit> hit;
     if (normal.norm() > 0.0) hit = march_to_surface(f_, centre, f_centre, normal, region, march);
@@ -393,7 +478,12 @@ class PartitionMesher {
   const Partition& part_;
   const Settings& settings_;
   ProjectionParams params_;
+  int fixed_resolution_;
   int refinable_depth_;
+  std::function<double(const Vec3&)> size_at_;
+  std::vector<double> crossing_sizes_;    // target size at each crossing, -1 until asked
+  std::vector<int> side_segments_;        // per side, in key order
+  std::vector<std::size_t> side_offsets_; // per side, the mesh id of its first inner point
   std::vector<Side> sides_;
   std::vector<std::vector<std::size_t>> side_leaves_;  // per side, the leaves whose loops use it
   std::set<std::size_t> split_leaves_;
@@ -421,10 +511,13 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   ps.adaptive = true;
   ps.cancel = settings.cancel;
   ps.surface_depth = initial_depth(root, box, settings);
+  const std::function<double(const Vec3&)> size_at = size_function(surface, box, settings);
   for (int round = 0;; ++round) {
     check_cancel(settings);
     // Local refinement goes at most refinement_levels below the starting depth (and never past max_depth).
-    ps.max_depth = std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels);
+    // (A size field may refine down to max_depth.)
+    ps.max_depth = settings.max_error ? settings.max_depth
+                                      : std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels);
     ps.max_depth = std::max(ps.max_depth, ps.surface_depth);
     const Partition partition = build_partition(surface, box, ps);
     partition_values += partition.stats.value_evaluations;
@@ -440,10 +533,20 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       ps.force_split.clear();
       continue;
     }
-    const int resolution = resolution_at(root, box, settings, ps.surface_depth);
+    // Sides get their own segment counts unless the resolution is fixed.
+    const int resolution = settings.resolution;
+    if (settings.max_error && round < kMaxRounds) {
+      // The size field asks for cells of at most kAutoSegments local edge lengths.
+      std::vector<CellKey> split = leaves_too_large_for(partition, size_at, ps.max_depth);
+      if (!split.empty()) {
+        ps.force_split.insert(ps.force_split.end(), split.begin(), split.end());
+        ++refinements;
+        continue;
+      }
+    }
     // After kMaxRounds rounds of refinement, whatever still fails is closed by fans.
     const int refinable_depth = round < kMaxRounds ? ps.max_depth : 0;
-    PartitionMesher mesher(f, partition, settings, resolution, refinable_depth);
+    PartitionMesher mesher(f, partition, settings, resolution, refinable_depth, size_at);
     // Per-round counters start afresh; rejections add up over the rounds.
     counters.patches_by_sides.clear();
     counters.fallback_cells = counters.unprojected_vertices = counters.refined_patches = 0;
@@ -465,6 +568,8 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       stats->triangles = mesh->triangle_count();
       stats->extra["depth"] = depth;
       stats->extra["resolution"] = resolution;
+      stats->extra["side_segments_min"] = mesher.segment_range().first;
+      stats->extra["side_segments_max"] = mesher.segment_range().second;
       for (const auto& [n, count] : counters.patches_by_sides)
         stats->extra["patches_" + std::to_string(n)] = static_cast<double>(count);
       stats->extra["rejected_patches"] = static_cast<double>(counters.rejected_patches);

@@ -17,6 +17,8 @@ class Sampler {
   double value(const Vec3& p) const;
   /// f(p) and grad f(p). \throw EvaluationError if either is not finite.
   ValueGradient value_gradient(const Vec3& p) const;
+  /// f(p) and grad f(p), counted but not checked: either may be NaN or infinite.
+  ValueGradient value_gradient_unchecked(const Vec3& p) const;
 
   const Surface& surface() const { return surface_; }
   std::uint64_t value_count() const { return values_.load(std::memory_order_relaxed); }

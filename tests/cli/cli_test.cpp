@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <regex>
 
 #include "run_command.hpp"
 
@@ -132,6 +133,76 @@ TEST(Cli, ProjectionIsTheDefaultMethod) {
   const TopologyReport t = analyze_topology(read_mesh(out.string()));
   EXPECT_TRUE(t.watertight());
   EXPECT_EQ(t.genus, 2);
+}
+
+/// The last "done/total <unit>" state drawn on a progress line, or {-1, -1}.
+std::pair<long, long> last_progress(const std::string& err, const std::string& unit) {
+  const std::regex state("(\\d+)/(\\d+) " + unit);
+  std::pair<long, long> last{-1, -1};
+  for (auto it = std::sregex_iterator(err.begin(), err.end(), state); it != std::sregex_iterator(); ++it)
+    last = {std::stol((*it)[1]), std::stol((*it)[2])};
+  return last;
+}
+
+TEST(Cli, ProgressFlagDrawsOneUpdatingLineOnStderr) {
+  const auto dir = test::scratch_dir("cli_progress");
+  const auto out = dir / "torus.ply";
+  const auto r =
+      test::run_command(kCli + " mesh torus --method mc --grid 48 --progress -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("isopatch: mc "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find('\r'), std::string::npos);  // updates overwrite the line
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;       // ... which is ended once
+  EXPECT_EQ(r.err.back(), '\n');
+  const auto [done, total] = last_progress(r.err, "slabs");
+  EXPECT_GT(total, 0) << r.err;
+  EXPECT_EQ(done, total) << r.err;  // the final state is always drawn
+  EXPECT_NE(r.out.find("vertices"), std::string::npos);
+  const TopologyReport t = analyze_topology(read_mesh(out.string()));  // the mesh is still written
+  EXPECT_TRUE(t.watertight());
+  EXPECT_EQ(t.genus, 1);
+
+  // Projection, quiet: nothing on stdout, the progress line on stderr.
+  const auto sphere = dir / "sphere.ply";
+  const auto q =
+      test::run_command(kCli + " mesh sphere --edge-length 0.2 --progress -q -o " + sphere.string(), dir);
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  EXPECT_TRUE(q.out.empty()) << q.out;
+  EXPECT_NE(q.err.find("isopatch: projection "), std::string::npos) << q.err;
+  EXPECT_GT(last_progress(q.err, "partition rounds").second, 0) << q.err;
+  EXPECT_GT(read_mesh(sphere.string()).vertex_count(), 0u);
+}
+
+TEST(Cli, ProgressOnlyOnATerminalByDefault) {
+  const auto dir = test::scratch_dir("cli_tty_progress");
+  const std::string mesh = kCli + " mesh torus --method mc --grid 24 -o " + (dir / "t.ply").string();
+  // Not a terminal (stderr is a file): no progress line.
+  const auto plain = test::run_command(mesh, dir);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_TRUE(plain.err.empty()) << plain.err;
+  // A terminal (util-linux `script` runs the tool on a pseudo-terminal): progress, unless --quiet.
+  if (test::run_command("command -v script", dir).exit_code != 0)
+    GTEST_SKIP() << "no 'script' to fake a terminal";
+  const auto tty = test::run_command("script -qec '" + mesh + "' /dev/null", dir);
+  ASSERT_EQ(tty.exit_code, 0) << tty.out << tty.err;
+  EXPECT_NE(tty.out.find("isopatch: mc "), std::string::npos) << tty.out;
+  EXPECT_EQ(last_progress(tty.out, "slabs").first, last_progress(tty.out, "slabs").second) << tty.out;
+  const auto quiet = test::run_command("script -qec '" + mesh + " --quiet' /dev/null", dir);
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.out << quiet.err;
+  EXPECT_EQ(quiet.out.find("slabs"), std::string::npos) << quiet.out;
+}
+
+TEST(Cli, ProgressLineEndsBeforeAnErrorMessage) {
+  // The torus's lowest slabs are empty, so progress is drawn before the vertex budget runs out.
+  const auto dir = test::scratch_dir("cli_progress_error");
+  const auto r = test::run_command(
+      kCli + " mesh torus --method mc --grid 48 --max-vertices 10 --progress -o " + (dir / "t.ply").string(),
+      dir);
+  EXPECT_EQ(r.exit_code, exit_code(ErrorKind::Limit)) << r.err;
+  ASSERT_EQ(count_lines(r.err), 2) << r.err;  // the progress line, then the error on a line of its own
+  const std::string second = r.err.substr(r.err.find('\n') + 1);
+  EXPECT_EQ(second.rfind("isopatch: marching cubes: more than 10 vertices", 0), 0u) << r.err;
+  EXPECT_GT(last_progress(r.err, "slabs").first, 0) << r.err;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <isopatch/error.hpp>
 #include <isopatch/marching_cubes.hpp>
+#include <isopatch/resolve_surface.hpp>
 #include <isopatch/topology.hpp>
 
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace isopatch {
 namespace {
@@ -100,6 +102,12 @@ TEST(MarchingCubes, LinearEdgesGiveValidMeshesToo) {
   }
 }
 
+/// True when x is one of the lattice planes of `axis`.
+bool on_lattice_plane(const McGrid& grid, int axis, double x) {
+  const std::vector<double>& planes = grid.planes[static_cast<std::size_t>(axis)];
+  return std::binary_search(planes.begin(), planes.end(), x);
+}
+
 TEST(MarchingCubes, VerticesLieOnGridEdges) {
   const SurfacePtr s = test::torus();
   Settings settings;
@@ -108,12 +116,7 @@ TEST(MarchingCubes, VerticesLieOnGridEdges) {
   const McGrid grid = marching_cubes_grid(s->box(), settings);
   for (const Vec3& p : mesh.positions) {
     int on_lattice = 0;
-    for (int a = 0; a < 3; ++a) {
-      const double index = std::round((p[a] - grid.origin[a]) / grid.cell);
-      EXPECT_GE(index, 0.0);
-      EXPECT_LE(index, grid.cells[a]);
-      if (p[a] == (grid.origin + grid.cell * Vec3::Constant(index))[a]) ++on_lattice;
-    }
+    for (int a = 0; a < 3; ++a) on_lattice += on_lattice_plane(grid, a, p[a]) ? 1 : 0;
     EXPECT_GE(on_lattice, 2) << p.transpose();
   }
 }
@@ -161,9 +164,10 @@ TEST(MarchingCubes, ClippedSurfaceHasBoundaryOnlyOnTheGridFaces) {
   EXPECT_EQ(r.components[0].boundary_loops, 1u);
   EXPECT_EQ(r.components[0].genus, 0);  // an eighth of a sphere is a disk
 
-  // Every boundary edge lies in one outer plane of the grid.
+  // Every boundary edge lies in one outer plane of the grid: a box face.
   auto on_plane = [&](const Vec3& p, int axis) {
-    return p[axis] == grid.origin[axis] || p[axis] == grid.origin[axis] + grid.cell * grid.cells[axis];
+    const std::vector<double>& planes = grid.planes[static_cast<std::size_t>(axis)];
+    return p[axis] == planes.front() || p[axis] == planes.back();
   };
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
   for (const Triangle& t : mesh.triangles)
@@ -181,26 +185,112 @@ TEST(MarchingCubes, ClippedSurfaceHasBoundaryOnlyOnTheGridFaces) {
   EXPECT_EQ(boundary, r.boundary_edges);
 }
 
-TEST(MarchingCubes, GridCoversTheBox) {
+TEST(MarchingCubes, GridFitsTheBox) {
   const Box box{Vec3(-1, -2, 0), Vec3(3, 1, 0.5)};
   for (double offset : {0.0, 1e-3, 0.5, 0.999})
     for (int n : {1, 7, 64}) {
+      SCOPED_TRACE("offset " + std::to_string(offset) + " grid " + std::to_string(n));
       Settings settings;
       settings.grid = n;
       settings.grid_offset = offset;
       const McGrid g = marching_cubes_grid(box, settings);
       EXPECT_DOUBLE_EQ(g.cell, 4.0 / n);
-      for (int a = 0; a < 3; ++a) {
-        EXPECT_LE(g.origin[a], box.lo[a]);
-        EXPECT_GT(g.origin[a], box.lo[a] - g.cell);
-        EXPECT_GE(g.origin[a] + g.cell * g.cells[a], box.hi[a] - 1e-9 * g.cell);
-        EXPECT_LT(g.origin[a] + g.cell * (g.cells[a] - 1), box.hi[a]);  // no cell to spare
-      }
-      if (offset == 0.0) {
-        EXPECT_EQ(g.cells[0], n);
-        EXPECT_EQ(g.origin, box.lo);
+      EXPECT_EQ(g.cells[0], n);  // the longest axis
+      for (std::size_t a = 0; a < 3; ++a) {
+        const std::vector<double>& planes = g.planes[a];
+        ASSERT_EQ(planes.size(), static_cast<std::size_t>(g.cells[a]) + 1);
+        ASSERT_GE(planes.size(), 2u);
+        EXPECT_EQ(planes.front(), box.lo[a]);  // the outer planes are the box faces
+        EXPECT_EQ(planes.back(), box.hi[a]);
+        for (std::size_t i = 1; i + 2 < planes.size(); ++i)
+          EXPECT_NEAR(planes[i + 1] - planes[i], g.cell, 1e-12);  // inner cells are cubes
+        if (planes.size() > 2) {  // the outer layers: between half a cell and one and a half
+          for (const double layer : {planes[1] - planes[0], planes.back() - planes[planes.size() - 2]}) {
+            EXPECT_GE(layer, 0.5 * g.cell - 1e-12);
+            EXPECT_LT(layer, 1.5 * g.cell + 1e-12);
+          }
+        } else {
+          EXPECT_LT(box.hi[a] - box.lo[a], 1.5 * g.cell + 1e-12);
+        }
+        if (offset == 0.0) {
+          for (std::size_t i = 0; i + 1 < planes.size(); ++i) {
+            EXPECT_EQ(planes[i], box.lo[a] + g.cell * static_cast<double>(i));
+          }
+        }
       }
     }
+}
+
+TEST(MarchingCubes, OffsetMovesTheInnerPlanesOffDyadicPoints) {
+  // [-1, 1]^3 at grid 8: without offset the inner planes are the dyadic -0.75, ..., 0.75 (0 among
+  // them); with the default offset none of them is 0 and they are shifted by different amounts per axis.
+  const Box box{Vec3::Constant(-1), Vec3::Constant(1)};
+  Settings settings;
+  settings.grid = 8;
+  const McGrid g = marching_cubes_grid(box, settings);
+  for (std::size_t a = 0; a < 3; ++a) {
+    EXPECT_EQ(g.cells[a], 8);
+    for (std::size_t i = 1; i < 8; ++i) EXPECT_NE(g.planes[a][i], -1.0 + 0.25 * static_cast<double>(i));
+    EXPECT_FALSE(std::binary_search(g.planes[a].begin(), g.planes[a].end(), 0.0));
+  }
+  EXPECT_NE(g.planes[0][1] - (-0.75), g.planes[1][1] - (-0.75));
+}
+
+/// Every vertex in the closed box (no tolerance: the grid's outer planes are the faces).
+void expect_inside(const Mesh& mesh, const Box& box) {
+  ASSERT_GT(mesh.vertex_count(), 0u);
+  for (const Vec3& p : mesh.positions)
+    ASSERT_TRUE((p.array() >= box.lo.array()).all() && (p.array() <= box.hi.array()).all())
+        << p.transpose() << " outside " << format_box(box);
+}
+
+TEST(MarchingCubes, VerticesOfClippedSurfacesLieInTheBox) {
+  // Open surfaces cut by the box: the gyroid (catalogue box), the plane x = 0.1 and a sphere cut by a
+  // box that is not a cube, with and without offset, both edge placements.
+  const SurfacePtr gyroid = catalogue_surface("gyroid");
+  const SurfacePtr plane = resolve_surface("x - 0.1", Box{Vec3::Constant(-1), Vec3::Constant(1)});
+  const SurfacePtr sphere = test::sphere();
+  const Box slab{Vec3(-0.7, -0.3, -0.9), Vec3(0.8, 0.35, 0.2)};
+  for (double offset : {1e-3, 0.0, 0.7})
+    for (EdgeRoot root : {EdgeRoot::Bracketed, EdgeRoot::Linear}) {
+      SCOPED_TRACE("offset " + std::to_string(offset));
+      Settings settings;
+      settings.grid = 20;
+      settings.grid_offset = offset;
+      settings.edge_root = root;
+      expect_inside(marching_cubes(*gyroid, settings), gyroid->box());
+      expect_inside(marching_cubes(*plane, settings), plane->box());
+      settings.box = slab;
+      expect_inside(marching_cubes(*sphere, settings), slab);
+    }
+}
+
+TEST(MarchingCubes, EvaluatesOnlyInTheBox) {
+  // sqrt(x + 1) is NaN for x < -1, just outside the box; the surface is the plane x = -0.75.
+  const Box box{Vec3::Constant(-1), Vec3::Constant(1)};
+  const SurfacePtr s = resolve_surface("sqrt(x+1)-0.5", box);
+  for (double offset : {1e-3, 0.999}) {
+    Settings settings;
+    settings.grid = 16;
+    settings.grid_offset = offset;
+    const Mesh mesh = marching_cubes(*s, settings);
+    expect_inside(mesh, box);
+    for (const Vec3& p : mesh.positions) EXPECT_NEAR(p.x(), -0.75, 1e-12);
+    const TopologyReport r = analyze_topology(mesh);
+    EXPECT_TRUE(r.manifold());
+    EXPECT_EQ(r.components.size(), 1u);
+  }
+  // A callable that is NaN outside the box on every side; f > 0 near the centre, < 0 at the corners.
+  const SurfacePtr guarded = make_surface(
+      [](auto x, auto y, auto z) {
+        using std::sqrt;
+        return sqrt(1.0 - x) + sqrt(1.0 + x) + sqrt(1.0 - y) + sqrt(1.0 + y) + sqrt(1.0 - z) + sqrt(1.0 + z) -
+               5.5;
+      },
+      box);
+  Settings settings;
+  settings.grid = 12;
+  expect_inside(marching_cubes(*guarded, settings), box);
 }
 
 TEST(MarchingCubes, BadSettingsAreInputErrors) {

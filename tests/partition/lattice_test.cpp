@@ -18,11 +18,15 @@ TEST(Lattice, RootCubeCoversTheBoxAndIsShifted) {
   const Box box{Vec3(-1.0, -0.5, -0.25), Vec3(1.0, 0.5, 0.25)};
   const Lattice lattice = make_lattice(box, 6);
   EXPECT_DOUBLE_EQ(lattice.size, 2.04);
-  const Box root = lattice.cell_box(0, {0, 0, 0});
+  const Box root{lattice.origin, lattice.origin + Vec3::Constant(lattice.size)};
   EXPECT_TRUE(root.contains(box.lo));
   EXPECT_TRUE(root.contains(box.hi));
   // Not centred: the non-dyadic offset moves the root off the symmetric position on every axis.
   for (int a = 0; a < 3; ++a) EXPECT_NE(root.centre()[a], box.centre()[a]);
+  // Positions are clipped to the box: the root cell as the partition sees it is the box itself.
+  const Box clipped = lattice.cell_box(0, {0, 0, 0});
+  EXPECT_EQ(clipped.lo, box.lo);
+  EXPECT_EQ(clipped.hi, box.hi);
   EXPECT_THROW(make_lattice(box, 21), InputError);
   EXPECT_THROW(make_lattice(Box{Vec3::Zero(), Vec3(1, 0, 1)}, 3), InputError);
 }
@@ -37,8 +41,30 @@ TEST(Lattice, HalfAndFinestCoordinatesGiveIdenticalBits) {
     EXPECT_EQ(a.y(), b.y());
     EXPECT_EQ(a.z(), b.z());
   }
-  const Box cell = lattice.cell_box(20, {5, 6, 7});
+  const Box cell = lattice.cell_box(20, {1u << 19, 1u << 18, 1u << 19});
   EXPECT_NEAR(cell.size().x(), lattice.unit(), 1e-15);
+}
+
+TEST(Lattice, NeverLeavesTheBoxAndFlattensCellsOutsideIt) {
+  const Box box{Vec3(-1.0, -0.5, -0.25), Vec3(1.0, 0.5, 0.25)};
+  const Lattice lattice = make_lattice(box, 4);
+  int inside = 0, outside = 0;
+  for (std::uint32_t i = 0; i < 16; ++i)
+    for (std::uint32_t j = 0; j < 16; ++j)
+      for (std::uint32_t k = 0; k < 16; ++k) {
+        const Box cell = lattice.cell_box(4, {i, j, k});
+        EXPECT_TRUE(box.contains(cell.lo) && box.contains(cell.hi));
+        if (lattice.inside(4, {i, j, k})) {
+          ++inside;
+          EXPECT_TRUE((cell.lo.array() < cell.hi.array()).all());
+        } else {
+          ++outside;
+          EXPECT_FALSE((cell.lo.array() < cell.hi.array()).all());
+        }
+      }
+  // The box spans the whole root along x, about half of it along y and a quarter along z.
+  EXPECT_GT(outside, 0);
+  EXPECT_GT(inside, 16 * 8 * 4 - 1);
 }
 
 TEST(Lattice, HalfKeysAreInjectiveAtTheExtremes) {

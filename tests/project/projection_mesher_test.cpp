@@ -143,7 +143,9 @@ TEST(ProjectionMesher, AutomaticResolutionFollowsTheEdgeLength) {
   const double ratio = static_cast<double>(m2.vertex_count()) / static_cast<double>(m1.vertex_count());
   EXPECT_GT(ratio, 2.5);
   EXPECT_LT(ratio, 6.0);
-  EXPECT_GE(a.extra.at("resolution"), 2.0);
+  EXPECT_EQ(a.extra.at("resolution"), 0.0);  // automatic: per side
+  EXPECT_GE(a.extra.at("side_segments_max"), 2.0);
+  EXPECT_GE(a.extra.at("side_segments_min"), 1.0);
 }
 
 }  // namespace

@@ -1,0 +1,134 @@
+"""Quality report driver (called by scripts/quality_report.sh): meshes every public surface at three
+sizes with projection, marching cubes and CGAL's Surface_mesher at matched vertex counts, analyses
+every mesh with `isopatch analyze` and writes docs/quality.md. Every number comes from this run.
+"""
+
+import argparse
+import glob
+import json
+import os
+import re
+import sys
+
+import machine
+import markdown
+import matching
+import runs
+import targets
+from surfaces import PUBLIC_SURFACES
+
+SIZES = [("small", 2000), ("medium", 10000), ("large", 40000)]
+TIMING_REPEATS = 3  # projection and marching cubes are timed this often (minimum kept); CGAL once
+
+
+def log(message: str) -> None:
+    print(f"[quality] {message}", file=sys.stderr, flush=True)
+
+
+def catalogue(tool: str) -> dict[str, str]:
+    """name -> box of `isopatch surfaces`."""
+    code, stdout, err = runs.run_command([tool, "surfaces"], 60)
+    if code != 0:
+        log(f"isopatch surfaces failed ({err.strip()}); every surface is taken as given")
+        return {}
+    return {m.group(1): m.group(2) for m in re.finditer(r"^(\w+)\s.*\bbox\s+(\S+)", stdout, re.MULTILINE)}
+
+
+def longest_side(box: str | None) -> float:
+    try:
+        v = [float(x) for x in box.split(",")]
+        return max(v[3] - v[0], v[4] - v[1], v[5] - v[2])
+    except (AttributeError, ValueError, IndexError):
+        return 2.0
+
+
+def describe(run: runs.Run) -> str:
+    return f"{run.system:10s} {run.knob:18s} " + (f"{run.vertices} vertices, {run.ms:.1f} ms" if run.ok else
+                                                   f"FAILED {run.error}")
+
+
+def finish(run: runs.Run, tool: str, surface: list[str], again, tag: str, work: str) -> runs.Run:
+    """Times the chosen run again (projection, MC), analyses it and removes the other trial meshes."""
+    if run.ok and again is not None:
+        for _ in range(TIMING_REPEATS - 1):
+            runs.repeat_timing(run, again)
+    runs.analyze(tool, run, surface)
+    for path in glob.glob(os.path.join(work, f"{tag}-*.ply")):
+        if path != run.mesh:
+            os.remove(path)
+    log("chose " + describe(run) + ("" if run.analysis or not run.ok else f" (analysis failed: {run.analysis_error})"))
+    return run
+
+
+def measure_surface(spec, args, names, work):
+    surface = spec.cli_args(set(names))
+    side = longest_side(names.get(spec.name, spec.box))
+    groups, cgal_runs, projection_runs = [], [], []
+    sizes = SIZES[:1] if args.quick else SIZES
+    for label, target in sizes:
+        tag = f"{spec.name}-{label}"
+        p = matching.match_projection(args.tool, surface, target, side, work, f"{tag}-projection",
+                                      projection_runs)
+        p = finish(p, args.tool, surface, lambda p=p: runs.projection(args.tool, surface, p.value, p.mesh),
+                   f"{tag}-projection", work)
+        count = p.vertices if p.ok else target
+        m = matching.match_mc(args.tool, surface, count, work, f"{tag}-mc")
+        m = finish(m, args.tool, surface, lambda m=m: runs.marching_cubes(args.tool, surface, int(m.value), m.mesh),
+                   f"{tag}-mc", work)
+        by_system = {"projection": p, "mc": m}
+        if args.peer:
+            reference = p if p.ok and p.analysis else (m if m.ok and m.analysis else None)
+            radius = matching.cgal_first_radius(cgal_runs, reference, count, side)
+            c = matching.match_cgal(args.peer, surface, count, radius, work, f"{tag}-cgal")
+            c = finish(c, args.tool, surface, None, f"{tag}-cgal", work)
+            cgal_runs.append(c)
+        else:
+            c = runs.Run("cgal", "–", 0.0, error="CGAL peer not built (CGAL not found)")
+        by_system["cgal"] = c
+        groups.append((label, by_system))
+    checks = targets.check(spec, groups) if spec.targeted else []
+    return spec, surface, groups, checks
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--tool", required=True, help="the isopatch command-line tool")
+    parser.add_argument("--peer", default="", help="isopatch_cgal_peer (empty: no CGAL rows)")
+    parser.add_argument("--out", required=True, help="the Markdown report to write")
+    parser.add_argument("--work", required=True, help="folder for the meshes and results.json")
+    parser.add_argument("--repo", default=".", help="repository root (for the commit in the header)")
+    parser.add_argument("--quick", action="store_true", help="one size (about 2k vertices), for smoke tests")
+    parser.add_argument("--surfaces", default="", help="comma-separated subset of the public surfaces")
+    parser.add_argument("--command", default="scripts/quality_report.sh", help="the command shown in the header")
+    args = parser.parse_args()
+
+    start = runs.now()
+    os.makedirs(args.work, exist_ok=True)
+    names = catalogue(args.tool)
+    wanted = [s for s in args.surfaces.split(",") if s]
+    unknown = set(wanted) - {s.name for s in PUBLIC_SURFACES}
+    if unknown:
+        log(f"unknown surface(s): {', '.join(sorted(unknown))}")
+        return 2
+    results = []
+    for spec in PUBLIC_SURFACES:
+        if wanted and spec.name not in wanted:
+            continue
+        log(f"--- {spec.name}")
+        results.append(measure_surface(spec, args, names, args.work))
+
+    seconds = runs.now() - start
+    header = machine.header(args.repo, args.command, seconds, bool(args.peer), args.quick)
+    cgal_note = "" if args.peer else "CGAL was not built, so the checks against CGAL are n/a."
+    with open(args.out, "w", encoding="utf-8") as f:
+        f.write(markdown.document(header, results, cgal_note))
+    with open(os.path.join(args.work, "results.json"), "w", encoding="utf-8") as f:
+        json.dump([{"surface": spec.name, "args": surface,
+                    "groups": [{"size": label, "runs": {k: vars(r) for k, r in by.items()}} for label, by in groups],
+                    "targets": checks} for spec, surface, groups, checks in results], f, indent=1)
+    log(f"wrote {args.out} in {seconds / 60:.1f} min")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

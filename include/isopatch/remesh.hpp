@@ -1,0 +1,66 @@
+#pragma once
+/// \file remesh.hpp
+/// Surface-bound clean-up of a triangle mesh of f = 0: isotropic remeshing in the manner of Botsch &
+/// Kobbelt 2004 ("A remeshing approach to multiresolution modeling", SGP) restricted to the implicit
+/// surface: long edges are split, short edges collapsed, edges flipped towards valence 6 (4 on the
+/// boundary), vertices relaxed tangentially and every moved or new vertex projected back onto f = 0 by
+/// Newton steps along grad f, so vertices stay on the surface. A final pass removes the remaining
+/// triangles with a small angle (flip of the longest edge, else collapse of the shortest).
+///
+/// On a mesh from the projection mesher, which is regular inside its patches, the operations act
+/// almost only along patch seams and in tiny corner patches (method.md 15, option 4): see
+/// docs/whole-surface-quality.md for the measurements against the alternatives.
+///
+/// Sizes: a uniform target edge length, or a curvature-adapted size field for a chordal error bound
+/// (size_for_error in curvature.hpp), graded so that sizes at neighbouring vertices differ by a bounded factor.
+/// Boundary edges (a surface cut open by its box) and their vertices are kept as they are.
+
+#include <isopatch/geometry.hpp>
+#include <isopatch/mesh.hpp>
+#include <isopatch/surface.hpp>
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+namespace isopatch {
+
+struct RemeshSettings {
+  /// Target edge length h (uniform sizes), or the largest size when max_error is set. Must be > 0.
+  double edge_length = 0.0;
+  /// When set (> 0): sizes from the analytic curvature so that the distance of triangle centroids from
+  /// f = 0 stays below this bound (curvature.hpp size_for_error), clamped to [min_edge_length, edge_length].
+  std::optional<double> max_error;
+  /// The smallest size the curvature-adapted field may ask for (near singular points). Must be > 0
+  /// and <= edge_length when max_error is set.
+  double min_edge_length = 0.0;
+  /// Largest ratio between the sizes at the two ends of an edge, relative to the edge length:
+  /// h(v) <= h(u) + grading * |u - v|. In (0, 1].
+  double grading = 0.3;
+  /// Rounds of split / collapse / flip / relax, 0..100; 0 leaves the mesh unchanged.
+  int iterations = 4;
+  /// Vertices never leave this box (moves that would are skipped). Empty: no constraint.
+  std::optional<Box> box;
+  /// When set and true, stops with LimitError("cancelled") at the next check.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+struct RemeshStats {
+  std::size_t splits = 0;
+  std::size_t collapses = 0;
+  std::size_t flips = 0;
+  std::size_t repairs = 0;        ///< small-angle triangles removed by the final pass
+  std::size_t rejected_moves = 0; ///< relaxation moves skipped (fold, projection failure, box)
+  std::uint64_t gradient_evaluations = 0;
+  std::uint64_t hessian_evaluations = 0;
+};
+
+/// Remeshes `mesh`, a mesh of `surface` (vertices on f = 0, triangles oriented along grad f), in place.
+/// Per-vertex attributes are carried over for surviving vertices; vertices created by splits take the
+/// value of the first edge end, except for an attribute named "role", where they get 5.
+/// \throw InputError for invalid settings; EvaluationError if f or its derivatives are not finite at a
+///        vertex; LimitError("cancelled").
+RemeshStats remesh_on_surface(Mesh& mesh, const Surface& surface, const RemeshSettings& settings);
+
+}  // namespace isopatch

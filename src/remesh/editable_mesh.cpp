@@ -1,0 +1,183 @@
+// Local edits with incidence lists (see editable_mesh.hpp).
+#include "remesh/editable_mesh.hpp"
+
+#include <isopatch/error.hpp>
+
+#include <algorithm>
+#include <map>
+
+namespace isopatch {
+
+std::optional<std::uint32_t> opposite(const Triangle& t, std::uint32_t a, std::uint32_t b) {
+  for (int i = 0; i < 3; ++i)
+    if (t[static_cast<std::size_t>(i)] == a && t[static_cast<std::size_t>((i + 1) % 3)] == b)
+      return t[static_cast<std::size_t>((i + 2) % 3)];
+  return std::nullopt;
+}
+
+EditableMesh::EditableMesh(const Mesh& mesh, std::vector<Vec3> vertex_normals)
+    : positions(mesh.positions),
+      normals(std::move(vertex_normals)),
+      locked(mesh.positions.size(), false),
+      triangles(mesh.triangles),
+      triangle_alive(mesh.triangles.size(), true),
+      incident(mesh.positions.size()) {
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+    for (std::uint32_t v : triangles[t]) incident[v].push_back(t);
+  for (const VertexAttribute& a : mesh.attributes) {
+    attribute_names.push_back(a.name);
+    attributes.push_back(a.values);
+  }
+  // A vertex is locked when one of its edges has a number of triangles other than two.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const Triangle& t : triangles)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  for (const auto& [edge, count] : uses)
+    if (count != 2) locked[edge.first] = locked[edge.second] = true;
+}
+
+std::optional<EditableMesh::Edge> EditableMesh::interior_edge(std::uint32_t a, std::uint32_t b) const {
+  Edge e;
+  e.a = a;
+  e.b = b;
+  int ab = 0, ba = 0, other = 0;
+  for (std::uint32_t t : incident[a]) {
+    const Triangle& tri = triangles[t];
+    if (std::find(tri.begin(), tri.end(), b) == tri.end()) continue;
+    if (const auto c = opposite(tri, a, b)) {
+      e.c = *c;
+      e.t_ab = t;
+      ++ab;
+    } else if (const auto d = opposite(tri, b, a)) {
+      e.d = *d;
+      e.t_ba = t;
+      ++ba;
+    } else {
+      ++other;
+    }
+  }
+  if (ab != 1 || ba != 1 || other != 0 || e.c == e.d) return std::nullopt;
+  return e;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> EditableMesh::edges() const {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> list;
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    if (!triangle_alive[t]) continue;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = triangles[t][static_cast<std::size_t>(i)];
+      const std::uint32_t b = triangles[t][static_cast<std::size_t>((i + 1) % 3)];
+      list.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(list.begin(), list.end());
+  list.erase(std::unique(list.begin(), list.end()), list.end());
+  return list;
+}
+
+std::vector<std::uint32_t> EditableMesh::neighbours(std::uint32_t v) const {
+  std::vector<std::uint32_t> list;
+  for (std::uint32_t t : incident[v])
+    for (std::uint32_t w : triangles[t])
+      if (w != v) list.push_back(w);
+  std::sort(list.begin(), list.end());
+  list.erase(std::unique(list.begin(), list.end()), list.end());
+  return list;
+}
+
+bool EditableMesh::adjacent(std::uint32_t a, std::uint32_t b) const {
+  for (std::uint32_t t : incident[a]) {
+    const Triangle& tri = triangles[t];
+    if (std::find(tri.begin(), tri.end(), b) != tri.end()) return true;
+  }
+  return false;
+}
+
+void EditableMesh::replace_vertex(std::uint32_t t, std::uint32_t from, std::uint32_t to) {
+  for (std::uint32_t& v : triangles[t])
+    if (v == from) v = to;
+}
+
+void EditableMesh::detach(std::uint32_t v, std::uint32_t t) {
+  auto& list = incident[v];
+  const auto it = std::find(list.begin(), list.end(), t);
+  if (it != list.end()) list.erase(it);
+}
+
+std::uint32_t EditableMesh::add_triangle(const Triangle& t) {
+  const auto id = static_cast<std::uint32_t>(triangles.size());
+  triangles.push_back(t);
+  triangle_alive.push_back(true);
+  for (std::uint32_t v : t) incident[v].push_back(id);
+  return id;
+}
+
+std::uint32_t EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n) {
+  const auto m = static_cast<std::uint32_t>(positions.size());
+  positions.push_back(p);
+  normals.push_back(n);
+  locked.push_back(false);
+  incident.emplace_back();
+  for (std::size_t k = 0; k < attributes.size(); ++k)
+    attributes[k].push_back(attribute_names[k] == "role" ? 5.0f : attributes[k][e.a]);
+  // (a, b, c) -> (a, m, c) + (m, b, c); (b, a, d) -> (b, m, d) + (m, a, d).
+  replace_vertex(e.t_ab, e.b, m);
+  detach(e.b, e.t_ab);
+  incident[m].push_back(e.t_ab);
+  add_triangle({m, e.b, e.c});
+  replace_vertex(e.t_ba, e.a, m);
+  detach(e.a, e.t_ba);
+  incident[m].push_back(e.t_ba);
+  add_triangle({m, e.a, e.d});
+  return m;
+}
+
+void EditableMesh::collapse(const Edge& e, const Vec3& p, const Vec3& n) {
+  for (std::uint32_t t : {e.t_ab, e.t_ba}) {
+    triangle_alive[t] = false;
+    for (std::uint32_t v : triangles[t]) detach(v, t);
+  }
+  for (std::uint32_t t : incident[e.a]) {
+    replace_vertex(t, e.a, e.b);
+    incident[e.b].push_back(t);
+  }
+  incident[e.a].clear();
+  positions[e.b] = p;
+  normals[e.b] = n;
+}
+
+void EditableMesh::flip(const Edge& e) {
+  // (a, b, c) + (b, a, d) -> (a, d, c) + (b, c, d).
+  triangles[e.t_ab] = {e.a, e.d, e.c};
+  triangles[e.t_ba] = {e.b, e.c, e.d};
+  detach(e.b, e.t_ab);
+  detach(e.a, e.t_ba);
+  incident[e.d].push_back(e.t_ab);
+  incident[e.c].push_back(e.t_ba);
+}
+
+Mesh EditableMesh::to_mesh() const {
+  Mesh mesh;
+  std::vector<std::uint32_t> index(positions.size(), UINT32_MAX);
+  for (std::uint32_t v = 0; v < positions.size(); ++v) {
+    if (!alive(v)) continue;
+    index[v] = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.push_back(positions[v]);
+  }
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+    if (triangle_alive[t])
+      mesh.triangles.push_back({index[triangles[t][0]], index[triangles[t][1]], index[triangles[t][2]]});
+  for (std::size_t k = 0; k < attributes.size(); ++k) {
+    std::vector<float> values;
+    values.reserve(mesh.positions.size());
+    for (std::uint32_t v = 0; v < positions.size(); ++v)
+      if (alive(v)) values.push_back(attributes[k][v]);
+    mesh.set_attribute(attribute_names[k], std::move(values));
+  }
+  return mesh;
+}
+
+}  // namespace isopatch

@@ -1,0 +1,67 @@
+#pragma once
+// A triangle mesh that supports local edits (edge split, collapse and flip) with vertex-to-triangle
+// incidence kept up to date. Removed triangles and vertices are marked dead and dropped by to_mesh().
+// The surface normals (unit gradients) are stored per vertex for the validity checks of the remesher.
+
+#include <isopatch/mesh.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace isopatch {
+
+class EditableMesh {
+ public:
+  /// Copies `mesh` and builds the incidence. \pre `mesh` is valid; `normals` has one unit vector per
+  /// vertex (the surface normal there).
+  EditableMesh(const Mesh& mesh, std::vector<Vec3> normals);
+
+  /// An interior edge a -> b: the triangle holding the directed edge a -> b with its third vertex c,
+  /// and the triangle holding b -> a with its third vertex d.
+  struct Edge {
+    std::uint32_t a = 0, b = 0, c = 0, d = 0;
+    std::uint32_t t_ab = 0, t_ba = 0;
+  };
+  /// The edge between a and b when it has exactly two triangles, consistently oriented.
+  std::optional<Edge> interior_edge(std::uint32_t a, std::uint32_t b) const;
+  /// Every undirected edge between live vertices, once, as (smaller, larger).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges() const;
+  /// Distinct neighbours of v.
+  std::vector<std::uint32_t> neighbours(std::uint32_t v) const;
+  /// Neighbours of v, counted from its triangles: one more than their number on the boundary (one fan).
+  std::size_t valence(std::uint32_t v) const { return incident[v].size() + (locked[v] ? 1 : 0); }
+  bool adjacent(std::uint32_t a, std::uint32_t b) const;
+
+  /// Splits the edge at the new vertex (position p, normal n); returns its id. Attributes are copied
+  /// from e.a.
+  std::uint32_t split(const Edge& e, const Vec3& p, const Vec3& n);
+  /// Removes e.a, merging it into e.b, which moves to (p, n). \pre the link condition holds.
+  void collapse(const Edge& e, const Vec3& p, const Vec3& n);
+  /// Replaces a-b by c-d.
+  void flip(const Edge& e);
+
+  std::size_t vertex_slots() const { return positions.size(); }
+  bool alive(std::uint32_t v) const { return !incident[v].empty(); }
+  /// The mesh of live triangles and referenced vertices, attributes carried along.
+  Mesh to_mesh() const;
+
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;
+  std::vector<bool> locked;  ///< on a boundary edge at construction: never moved or removed
+  std::vector<Triangle> triangles;
+  std::vector<bool> triangle_alive;
+  std::vector<std::vector<std::uint32_t>> incident;  ///< live triangles per vertex
+  std::vector<std::vector<float>> attributes;        ///< per attribute, per vertex slot
+  std::vector<std::string> attribute_names;
+
+ private:
+  void replace_vertex(std::uint32_t t, std::uint32_t from, std::uint32_t to);
+  void detach(std::uint32_t v, std::uint32_t t);
+  std::uint32_t add_triangle(const Triangle& t);
+};
+
+/// Third vertex of triangle t opposite the directed edge a -> b, or nullopt when t does not hold a -> b.
+std::optional<std::uint32_t> opposite(const Triangle& t, std::uint32_t a, std::uint32_t b);
+
+}  // namespace isopatch

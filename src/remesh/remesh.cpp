@@ -1,0 +1,360 @@
+// Surface-bound isotropic remeshing (Botsch & Kobbelt 2004), see include/isopatch/remesh.hpp.
+#include <isopatch/error.hpp>
+#include <isopatch/remesh.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "remesh/editable_mesh.hpp"
+#include "remesh/size_field.hpp"
+#include "surface/project_point.hpp"
+#include "surface/sampler.hpp"
+
+namespace isopatch {
+namespace {
+
+/// A triangle is valid when its normal lies within about 72 degrees of the surface normal at each of
+/// its vertices: no fold, no flipped orientation, no bridge between two sheets.
+constexpr double kMinNormalDot = 0.3;
+/// Triangles below this smallest angle are removed by the final pass (degrees).
+constexpr double kRepairAngle = 20.0;
+/// Edge length thresholds relative to the target size. The projection mesh is regular inside its
+/// patches and its edges already follow the target, so only clear outliers are split or collapsed:
+/// Botsch & Kobbelt's 4/3 and 4/5 rewire most seams and cost valence-6 vertices and curvature accuracy
+/// (docs/whole-surface-quality.md). With a chordal error bound, edges longer than 4/3 of the size are split,
+/// as size_for_error assumes.
+constexpr double kSplitFactor = 2.0;
+constexpr double kErrorSplitFactor = 4.0 / 3.0;
+constexpr double kCollapseFactor = 0.1;
+
+double smallest_angle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const Vec3 p[3] = {p0, p1, p2};
+  double smallest = std::numbers::pi;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 u = p[(i + 1) % 3] - p[i];
+    const Vec3 v = p[(i + 2) % 3] - p[i];
+    smallest = std::min(smallest, std::atan2(u.cross(v).norm(), u.dot(v)));
+  }
+  return smallest * 180.0 / std::numbers::pi;
+}
+
+class Remesher {
+ public:
+  Remesher(const Surface& surface, EditableMesh& mesh, const RemeshSettings& settings, double tolerance)
+      : f_(surface), mesh_(mesh), settings_(settings), sizes_(surface, settings), tolerance_(tolerance) {}
+
+  RemeshStats run() {
+    sizes_.update(mesh_);
+    for (int it = 0; it < settings_.iterations; ++it) {
+      split_long_edges();
+      sizes_.update(mesh_);
+      collapse_short_edges();
+      sizes_.update(mesh_);
+      flip_towards_valence_six();
+      relax();
+      sizes_.update(mesh_);
+    }
+    for (int round = 0; round < 3; ++round) {
+      if (repair_small_angles() == 0) break;
+      sizes_.update(mesh_);
+      relax();
+    }
+    repair_small_angles();
+    stats_.gradient_evaluations = f_.gradient_count();
+    stats_.hessian_evaluations = sizes_.hessian_evaluations();
+    return stats_;
+  }
+
+ private:
+  void check_cancel() const {
+    if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
+  }
+
+  bool in_box(const Vec3& p) const {
+    if (!settings_.box) return true;
+    return (p.array() >= settings_.box->lo.array()).all() && (p.array() <= settings_.box->hi.array()).all();
+  }
+
+  /// p moved onto f = 0 (steps at most max_step), with its unit normal; false on failure or outside the box.
+  bool project(Vec3& p, Vec3& normal, double max_step) const {
+    Vec3 gradient;
+    if (!project_to_surface(f_, p, tolerance_, max_step, &gradient)) return false;
+    if (!in_box(p)) return false;
+    normal = gradient.normalized();
+    return true;
+  }
+
+  bool triangle_ok(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& n0, const Vec3& n1,
+                   const Vec3& n2) const {
+    const Vec3 cross = (p1 - p0).cross(p2 - p0);
+    const double norm = cross.norm();
+    const double scale = std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()});
+    if (!(norm > 1e-12 * scale)) return false;
+    const Vec3 n = cross / norm;
+    return n.dot(n0) >= kMinNormalDot && n.dot(n1) >= kMinNormalDot && n.dot(n2) >= kMinNormalDot;
+  }
+
+  /// Triangle t with vertex `from` at position p and normal n (and others as they are).
+  bool triangle_ok_with(std::uint32_t t, std::uint32_t from, const Vec3& p, const Vec3& n) const {
+    Vec3 q[3], m[3];
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t v = mesh_.triangles[t][static_cast<std::size_t>(i)];
+      q[i] = v == from ? p : mesh_.positions[v];
+      m[i] = v == from ? n : mesh_.normals[v];
+    }
+    return triangle_ok(q[0], q[1], q[2], m[0], m[1], m[2]);
+  }
+
+  bool triangle_ok(const Triangle& t) const {
+    return triangle_ok(mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]], mesh_.normals[t[0]],
+                       mesh_.normals[t[1]], mesh_.normals[t[2]]);
+  }
+
+  double smallest_angle(const Triangle& t) const {
+    return isopatch::smallest_angle(mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]]);
+  }
+
+  double length(std::uint32_t a, std::uint32_t b) const { return (mesh_.positions[a] - mesh_.positions[b]).norm(); }
+
+  double split_factor() const { return settings_.max_error ? kErrorSplitFactor : kSplitFactor; }
+
+  bool try_split(std::uint32_t a, std::uint32_t b) {
+    const auto e = mesh_.interior_edge(a, b);
+    if (!e) return false;
+    Vec3 p = 0.5 * (mesh_.positions[a] + mesh_.positions[b]);
+    Vec3 n;
+    if (!project(p, n, length(a, b))) return false;
+    const auto& P = mesh_.positions;
+    const auto& N = mesh_.normals;
+    if (!triangle_ok(P[e->a], p, P[e->c], N[e->a], n, N[e->c]) ||
+        !triangle_ok(p, P[e->b], P[e->c], n, N[e->b], N[e->c]) ||
+        !triangle_ok(P[e->b], p, P[e->d], N[e->b], n, N[e->d]) ||
+        !triangle_ok(p, P[e->a], P[e->d], n, N[e->a], N[e->d]))
+      return false;
+    mesh_.split(*e, p, n);
+    ++stats_.splits;
+    return true;
+  }
+
+  void split_long_edges() {
+    check_cancel();
+    std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
+    for (const auto& [a, b] : mesh_.edges()) {
+      const double l = length(a, b);
+      if (l > split_factor() * sizes_.edge(a, b)) work.push_back({-l, {a, b}});
+    }
+    std::sort(work.begin(), work.end());
+    for (const auto& [key, edge] : work) try_split(edge.first, edge.second);
+  }
+
+  /// Collapses a into b (or b into a when a is locked); `max_length` bounds the new edges.
+  bool try_collapse(std::uint32_t a, std::uint32_t b, double max_length) {
+    if (mesh_.locked[a] && mesh_.locked[b]) return false;
+    if (mesh_.locked[a]) std::swap(a, b);
+    const auto e = mesh_.interior_edge(a, b);
+    if (!e) return false;
+    // Link condition: a and b share exactly the neighbours c and d.
+    const std::vector<std::uint32_t> na = mesh_.neighbours(a), nb = mesh_.neighbours(b);
+    std::vector<std::uint32_t> common;
+    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+    if (common.size() != 2) return false;
+    if (mesh_.valence(e->c) <= 3 || mesh_.valence(e->d) <= 3) return false;
+    if (na.size() + nb.size() - 4 > 9) return false;
+    Vec3 p = mesh_.positions[b], n = mesh_.normals[b];
+    if (!mesh_.locked[b]) {
+      p = 0.5 * (mesh_.positions[a] + mesh_.positions[b]);
+      if (!project(p, n, length(a, b))) return false;
+    }
+    for (const auto* list : {&na, &nb})
+      for (std::uint32_t x : *list)
+        if (x != a && x != b && (mesh_.positions[x] - p).norm() > max_length) return false;
+    for (std::uint32_t v : {a, b})
+      for (std::uint32_t t : mesh_.incident[v]) {
+        if (t == e->t_ab || t == e->t_ba) continue;
+        Triangle tri = mesh_.triangles[t];
+        for (std::uint32_t& w : tri)
+          if (w == a) w = b;
+        Vec3 q[3], m[3];
+        for (int i = 0; i < 3; ++i) {
+          const std::uint32_t w = tri[static_cast<std::size_t>(i)];
+          q[i] = w == b ? p : mesh_.positions[w];
+          m[i] = w == b ? n : mesh_.normals[w];
+        }
+        if (!triangle_ok(q[0], q[1], q[2], m[0], m[1], m[2])) return false;
+      }
+    mesh_.collapse(*e, p, n);
+    ++stats_.collapses;
+    return true;
+  }
+
+  void collapse_short_edges() {
+    check_cancel();
+    std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
+    for (const auto& [a, b] : mesh_.edges()) {
+      const double l = length(a, b);
+      if (l < kCollapseFactor * sizes_.edge(a, b)) work.push_back({l, {a, b}});
+    }
+    std::sort(work.begin(), work.end());
+    for (const auto& [l, edge] : work) {
+      const auto [a, b] = edge;
+      if (!mesh_.alive(a) || !mesh_.alive(b) || !mesh_.adjacent(a, b)) continue;
+      const double h = sizes_.edge(a, b);
+      if (length(a, b) >= kCollapseFactor * h) continue;
+      try_collapse(a, b, split_factor() * h);
+    }
+  }
+
+  int target_valence(std::uint32_t v) const { return mesh_.locked[v] ? 4 : 6; }
+
+  /// Flips e when its two new triangles are valid and `accept` (given the smallest angles of the old
+  /// and new pairs) agrees.
+  template <class Accept>
+  bool try_flip(const EditableMesh::Edge& e, Accept accept) {
+    if (mesh_.adjacent(e.c, e.d)) return false;
+    if (mesh_.valence(e.a) <= 3 || mesh_.valence(e.b) <= 3) return false;
+    const Triangle t1{e.a, e.d, e.c}, t2{e.b, e.c, e.d};
+    if (!triangle_ok(t1) || !triangle_ok(t2)) return false;
+    const double before = std::min(smallest_angle(mesh_.triangles[e.t_ab]), smallest_angle(mesh_.triangles[e.t_ba]));
+    const double after = std::min(smallest_angle(t1), smallest_angle(t2));
+    if (!accept(before, after)) return false;
+    mesh_.flip(e);
+    return true;
+  }
+
+  void flip_towards_valence_six() {
+    check_cancel();
+    for (const auto& [a, b] : mesh_.edges()) {
+      const auto e = mesh_.interior_edge(a, b);
+      if (!e) continue;
+      auto deviation = [&](std::uint32_t v, int change) {
+        const int d = static_cast<int>(mesh_.valence(v)) + change - target_valence(v);
+        return d * d;
+      };
+      const int before = deviation(e->a, 0) + deviation(e->b, 0) + deviation(e->c, 0) + deviation(e->d, 0);
+      const int after = deviation(e->a, -1) + deviation(e->b, -1) + deviation(e->c, 1) + deviation(e->d, 1);
+      if (after >= before) continue;
+      if (try_flip(*e, [](double old_angle, double new_angle) {
+            return new_angle >= std::min(old_angle, kRepairAngle) || new_angle > 30.0;
+          }))
+        ++stats_.flips;
+    }
+  }
+
+  /// Tangential relaxation towards the area-weighted centroid of the incident triangles, then back onto
+  /// f = 0 (Gauss-Seidel order; a move that would fold a triangle or leave the box is skipped).
+  void relax() {
+    check_cancel();
+    for (std::uint32_t v = 0; v < mesh_.vertex_slots(); ++v) {
+      if (!mesh_.alive(v) || mesh_.locked[v]) continue;
+      Vec3 centroid = Vec3::Zero();
+      double area = 0.0;
+      for (std::uint32_t t : mesh_.incident[v]) {
+        const Triangle& tri = mesh_.triangles[t];
+        const Vec3& p0 = mesh_.positions[tri[0]];
+        const Vec3& p1 = mesh_.positions[tri[1]];
+        const Vec3& p2 = mesh_.positions[tri[2]];
+        const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
+        centroid += a * (p0 + p1 + p2) / 3.0;
+        area += a;
+      }
+      if (!(area > 0.0)) continue;
+      centroid /= area;
+      const Vec3& p = mesh_.positions[v];
+      const Vec3& n = mesh_.normals[v];
+      Vec3 move = centroid - p;
+      move -= n * n.dot(move);
+      Vec3 q = p + move;
+      Vec3 nq;
+      if (!project(q, nq, std::max(move.norm(), sizes_.at(v)))) {
+        ++stats_.rejected_moves;
+        continue;
+      }
+      bool ok = true;
+      for (std::uint32_t t : mesh_.incident[v]) ok = ok && triangle_ok_with(t, v, q, nq);
+      if (!ok) {
+        ++stats_.rejected_moves;
+        continue;
+      }
+      mesh_.positions[v] = q;
+      mesh_.normals[v] = nq;
+    }
+  }
+
+  /// Removes triangles whose smallest angle is below kRepairAngle: flip the longest edge when that
+  /// raises the smallest angle of the pair, else collapse the shortest edge. Returns the changes made.
+  std::size_t repair_small_angles() {
+    check_cancel();
+    std::size_t changes = 0;
+    for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!mesh_.triangle_alive[t]) continue;
+      const Triangle tri = mesh_.triangles[t];
+      if (smallest_angle(tri) >= kRepairAngle) continue;
+      int longest = 0, shortest = 0;
+      double lmax = -1.0, lmin = INFINITY;
+      for (int i = 0; i < 3; ++i) {
+        const double l = length(tri[static_cast<std::size_t>(i)], tri[static_cast<std::size_t>((i + 1) % 3)]);
+        if (l > lmax) lmax = l, longest = i;
+        if (l < lmin) lmin = l, shortest = i;
+      }
+      const std::uint32_t a = tri[static_cast<std::size_t>(longest)];
+      const std::uint32_t b = tri[static_cast<std::size_t>((longest + 1) % 3)];
+      if (const auto e = mesh_.interior_edge(a, b);
+          e && try_flip(*e, [](double old_angle, double new_angle) { return new_angle > old_angle; })) {
+        ++changes;
+        continue;
+      }
+      const std::uint32_t c = tri[static_cast<std::size_t>(shortest)];
+      const std::uint32_t d = tri[static_cast<std::size_t>((shortest + 1) % 3)];
+      if (try_collapse(c, d, 2.0 * sizes_.edge(c, d))) ++changes;
+    }
+    stats_.repairs += changes;
+    return changes;
+  }
+
+  Sampler f_;
+  EditableMesh& mesh_;
+  const RemeshSettings& settings_;
+  SizeField sizes_;
+  double tolerance_;
+  RemeshStats stats_;
+};
+
+void check(const RemeshSettings& s) {
+  if (!(std::isfinite(s.edge_length) && s.edge_length > 0.0))
+    throw InputError("remesh: the edge length must be a positive number");
+  if (s.max_error) {
+    if (!(std::isfinite(*s.max_error) && *s.max_error > 0.0))
+      throw InputError("remesh: the maximum error must be a positive number");
+    if (!(s.min_edge_length > 0.0 && s.min_edge_length <= s.edge_length))
+      throw InputError("remesh: the smallest size must be positive and at most the edge length");
+  }
+  if (!(s.grading > 0.0 && s.grading <= 1.0)) throw InputError("remesh: grading must lie in (0, 1]");
+  if (s.iterations < 0 || s.iterations > 100) throw InputError("remesh: iterations must be between 0 and 100");
+}
+
+}  // namespace
+
+RemeshStats remesh_on_surface(Mesh& mesh, const Surface& surface, const RemeshSettings& settings) {
+  check(settings);
+  if (settings.iterations == 0 || mesh.triangles.empty()) return {};
+  mesh.validate();
+  const Sampler f(surface);
+  std::vector<Vec3> normals(mesh.positions.size(), Vec3::Zero());
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3 g = f.value_gradient(mesh.positions[v]).gradient;
+    if (g.norm() > 0.0) normals[v] = g.normalized();
+  }
+  EditableMesh editable(mesh, std::move(normals));
+  const double tolerance = 1e-13 * std::max(bounding_box(mesh).diagonal(), 1e-300);
+  Remesher remesher(surface, editable, settings, tolerance);
+  RemeshStats stats = remesher.run();
+  stats.gradient_evaluations += f.gradient_count();
+  mesh = editable.to_mesh();
+  return stats;
+}
+
+}  // namespace isopatch

@@ -1,0 +1,48 @@
+// Uniform and curvature-adapted sizes (see size_field.hpp and remesh.hpp).
+#include "remesh/size_field.hpp"
+
+#include <isopatch/curvature.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace isopatch {
+
+double SizeField::raw(const Vec3& p) {
+  if (!settings_.max_error) return settings_.edge_length;
+  ++hessians_;
+  const double h = size_for_error(max_abs_principal_curvature(surface_, p), *settings_.max_error);
+  return std::clamp(h, settings_.min_edge_length, settings_.edge_length);
+}
+
+void SizeField::update(const EditableMesh& mesh) {
+  const std::size_t n = mesh.vertex_slots();
+  raw_.resize(n, std::numeric_limits<double>::quiet_NaN());
+  raw_at_.resize(n, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+  graded_.assign(n, settings_.edge_length);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (!mesh.alive(v)) continue;
+    if (std::isnan(raw_[v]) || raw_at_[v] != mesh.positions[v]) {
+      raw_[v] = raw(mesh.positions[v]);
+      raw_at_[v] = mesh.positions[v];
+    }
+    graded_[v] = raw_[v];
+  }
+  if (!settings_.max_error) return;
+  // Grading: h(v) <= h(u) + grading |u - v| along edges, by relaxation sweeps until nothing changes.
+  const auto edges = mesh.edges();
+  for (int sweep = 0; sweep < 64; ++sweep) {
+    bool changed = false;
+    for (const auto& [a, b] : edges) {
+      const double length = (mesh.positions[a] - mesh.positions[b]).norm();
+      const double limit_a = graded_[b] + settings_.grading * length;
+      const double limit_b = graded_[a] + settings_.grading * length;
+      if (graded_[a] > limit_a) graded_[a] = limit_a, changed = true;
+      if (graded_[b] > limit_b) graded_[b] = limit_b, changed = true;
+    }
+    if (!changed) break;
+  }
+}
+
+}  // namespace isopatch

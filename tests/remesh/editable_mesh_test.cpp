@@ -1,0 +1,103 @@
+// Local edits of EditableMesh on an octahedron: every edit keeps the mesh closed, manifold and
+// consistently oriented, with the Euler characteristic of a sphere.
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include "remesh/editable_mesh.hpp"
+
+namespace isopatch {
+namespace {
+
+Mesh octahedron() {
+  Mesh m;
+  m.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  return m;
+}
+
+EditableMesh editable(const Mesh& m) {
+  std::vector<Vec3> normals;
+  for (const Vec3& p : m.positions) normals.push_back(p.normalized());
+  return EditableMesh(m, normals);
+}
+
+void expect_closed_sphere(const Mesh& m) {
+  const TopologyReport t = analyze_topology(m);
+  EXPECT_TRUE(t.watertight());
+  EXPECT_TRUE(t.manifold());
+  EXPECT_TRUE(t.consistently_oriented());
+  EXPECT_EQ(t.euler_characteristic, 2);
+  EXPECT_EQ(t.unreferenced_vertices, 0u);
+}
+
+TEST(EditableMesh, FindsInteriorEdgesWithTheirOppositeVertices) {
+  const EditableMesh m = editable(octahedron());
+  const auto e = m.interior_edge(0, 2);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->c, 4u);  // (0, 2, 4) holds 0 -> 2
+  EXPECT_EQ(e->d, 5u);  // (2, 0, 5) holds 2 -> 0
+  EXPECT_FALSE(m.interior_edge(0, 1));  // opposite vertices share no edge
+  EXPECT_EQ(m.valence(0), 4u);
+  EXPECT_EQ(m.edges().size(), 12u);
+  for (std::uint32_t v = 0; v < 6; ++v) EXPECT_FALSE(m.locked[v]);
+}
+
+TEST(EditableMesh, SplitAddsOneVertexAndTwoTriangles) {
+  EditableMesh m = editable(octahedron());
+  const auto e = m.interior_edge(0, 2);
+  ASSERT_TRUE(e);
+  const std::uint32_t v = m.split(*e, Vec3(0.5, 0.5, 0), Vec3(1, 1, 0).normalized());
+  EXPECT_EQ(v, 6u);
+  EXPECT_EQ(m.valence(v), 4u);
+  EXPECT_FALSE(m.adjacent(0, 2));
+  const Mesh out = m.to_mesh();
+  EXPECT_EQ(out.vertex_count(), 7u);
+  EXPECT_EQ(out.triangle_count(), 10u);
+  expect_closed_sphere(out);
+}
+
+TEST(EditableMesh, FlipReplacesTheEdgeByTheOtherDiagonal) {
+  EditableMesh m = editable(octahedron());
+  // Split first so that the flip does not create a duplicate edge, then flip an edge at the new vertex.
+  const std::uint32_t v = m.split(*m.interior_edge(0, 2), Vec3(0.5, 0.5, 0), Vec3(1, 1, 0).normalized());
+  const auto e = m.interior_edge(4, 0);
+  ASSERT_TRUE(e);
+  ASSERT_FALSE(m.adjacent(e->c, e->d));
+  m.flip(*e);
+  EXPECT_FALSE(m.adjacent(4, 0));
+  EXPECT_TRUE(m.adjacent(e->c, e->d));
+  EXPECT_TRUE(m.alive(v));
+  expect_closed_sphere(m.to_mesh());
+}
+
+TEST(EditableMesh, CollapseRemovesOneVertexAndTwoTriangles) {
+  EditableMesh m = editable(octahedron());
+  const std::uint32_t v = m.split(*m.interior_edge(0, 2), Vec3(0.5, 0.5, 0), Vec3(1, 1, 0).normalized());
+  const auto e = m.interior_edge(v, 0);
+  ASSERT_TRUE(e);
+  m.collapse(*e, Vec3(1, 0, 0), Vec3(1, 0, 0));
+  EXPECT_FALSE(m.alive(v));
+  const Mesh out = m.to_mesh();
+  EXPECT_EQ(out.vertex_count(), 6u);
+  EXPECT_EQ(out.triangle_count(), 8u);
+  expect_closed_sphere(out);
+}
+
+TEST(EditableMesh, BoundaryVerticesAreLockedAndAttributesFollow) {
+  Mesh m = octahedron();
+  m.triangles.pop_back();  // opens the mesh: 0, 3 and 5 are on the boundary
+  m.set_attribute("role", std::vector<float>(6, 2.0f));
+  EditableMesh e = editable(m);
+  EXPECT_TRUE(e.locked[0] && e.locked[3] && e.locked[5]);
+  EXPECT_FALSE(e.locked[1] || e.locked[2] || e.locked[4]);
+  EXPECT_FALSE(e.interior_edge(0, 3));  // a boundary edge has one triangle
+  const std::uint32_t v = e.split(*e.interior_edge(1, 2), Vec3(-0.5, 0.5, 0), Vec3(-1, 1, 0).normalized());
+  const Mesh out = e.to_mesh();
+  ASSERT_NE(out.find_attribute("role"), nullptr);
+  EXPECT_EQ((*out.find_attribute("role"))[v], 5.0f);
+  EXPECT_EQ((*out.find_attribute("role"))[0], 2.0f);
+}
+
+}  // namespace
+}  // namespace isopatch

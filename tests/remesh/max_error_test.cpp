@@ -1,0 +1,74 @@
+// --max-error: a curvature-adapted size field bounds the distance of triangle centroids from f = 0,
+// refines the octree where the curvature is high (leaves of several depths) and keeps the mesh valid.
+#include <isopatch/catalogue.hpp>
+#include <isopatch/isopatch.hpp>
+#include <isopatch/metrics.hpp>
+#include <isopatch/resolve_surface.hpp>
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "mesh_checks.hpp"
+#include "self_intersection.hpp"
+
+namespace isopatch {
+namespace {
+
+int leaf_depths(const MeshStats& stats) {
+  int depths = 0;
+  for (const auto& [name, value] : stats.extra)
+    if (name.rfind("leaves_depth_", 0) == 0 && value > 0) ++depths;
+  return depths;
+}
+
+struct Case {
+  const char* name;
+  double max_error;
+  int genus;
+  int min_depths;
+};
+
+class MaxError : public ::testing::TestWithParam<Case> {};
+
+TEST_P(MaxError, CentroidsStayWithinTheBoundOnAValidMesh) {
+  const Case c = GetParam();
+  const SurfacePtr s = catalogue_surface(c.name);
+  Settings settings;
+  settings.max_error = c.max_error;
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*s, settings, &stats);
+  const QualityReport q = analyze_quality(mesh, s.get());
+  EXPECT_TRUE(q.topology.watertight() && q.topology.manifold() && q.topology.consistently_oriented());
+  EXPECT_EQ(q.topology.genus, c.genus);
+  EXPECT_EQ(test::count_self_intersections(mesh), 0u);
+  EXPECT_LT(q.accuracy->centroid_distance.max, c.max_error);
+  EXPECT_LT(q.accuracy->vertex_distance.max, 1e-9 * s->box().diagonal());
+  EXPECT_GE(q.shape.min_angle.min, 20.0);
+  EXPECT_GE(leaf_depths(stats), c.min_depths);
+}
+
+// Curvature varies on blobby and genus2, so the size field asks for leaves of several depths; the
+// sphere's is constant.
+INSTANTIATE_TEST_SUITE_P(Surfaces, MaxError,
+                         ::testing::Values(Case{"sphere", 1e-3, 0, 1}, Case{"blobby", 1e-3, 0, 3},
+                                           Case{"genus2", 1e-3, 2, 3}),
+                         [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
+
+TEST(MaxError, HalvingTheBoundRefinesTheMesh) {
+  const SurfacePtr s = catalogue_surface("torus");
+  Settings coarse, fine;
+  coarse.max_error = 4e-3;
+  fine.max_error = 1e-3;
+  const Mesh a = mesh_surface(*s, coarse);
+  const Mesh b = mesh_surface(*s, fine);
+  // Sizes go with sqrt(eps): a quarter of the bound needs about four times the vertices.
+  const double ratio = static_cast<double>(b.vertex_count()) / static_cast<double>(a.vertex_count());
+  EXPECT_GT(ratio, 2.5);
+  EXPECT_LT(ratio, 6.5);
+  EXPECT_LT(analyze_accuracy(b, *s).centroid_distance.max, 1e-3);
+}
+
+}  // namespace
+}  // namespace isopatch

@@ -1,0 +1,120 @@
+// The surface-bound remesher on its own: settings, sizes for a chordal error, invariants kept.
+#include <isopatch/curvature.hpp>
+#include <isopatch/error.hpp>
+#include <isopatch/isopatch.hpp>
+#include <isopatch/metrics.hpp>
+#include <isopatch/remesh.hpp>
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mesh_checks.hpp"
+#include "test_surfaces.hpp"
+
+namespace isopatch {
+namespace {
+
+Mesh projection_only(const Surface& s, double edge) {
+  Settings settings;
+  settings.edge_length = edge;
+  settings.remesh_iterations = 0;
+  return mesh_surface(s, settings);
+}
+
+TEST(SizeForError, EquilateralTrianglesOnASphereKeepTheBound) {
+  const double radius = 2.0, eps = 1e-3;
+  const double h = size_for_error(1.0 / radius, eps);
+  EXPECT_NEAR(h, std::sqrt(3.0 * eps * radius), 1e-15);
+  // The remesher lets edges reach 4/3 h; the centroid of such an equilateral triangle lies
+  // R - sqrt(R^2 - L^2 / 3) below the sphere.
+  const double l = 4.0 / 3.0 * h;
+  EXPECT_LT(radius - std::sqrt(radius * radius - l * l / 3.0), eps);
+  EXPECT_TRUE(std::isinf(size_for_error(0.0, eps)));
+}
+
+TEST(SizeForError, MaxCurvatureOfSphereAndTorusIsExact) {
+  const SurfacePtr sphere = test::sphere(0.5);
+  EXPECT_NEAR(max_abs_principal_curvature(*sphere, Vec3(0.5, 0, 0)), 2.0, 1e-12);
+  const SurfacePtr torus = test::torus(1.0, 0.4);
+  // Principal curvatures 1/r = 2.5 around the tube and 1/(R + r) outside: the largest is 2.5.
+  EXPECT_NEAR(max_abs_principal_curvature(*torus, Vec3(1.4, 0, 0)), 2.5, 1e-9);
+}
+
+TEST(Remesh, RejectsInvalidSettings) {
+  const SurfacePtr s = test::sphere();
+  Mesh mesh = projection_only(*s, 0.2);
+  RemeshSettings r;
+  EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);  // no edge length
+  r.edge_length = 0.1;
+  r.iterations = -1;
+  EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
+  r.iterations = 2;
+  r.max_error = 0.0;
+  EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
+  r.max_error = 1e-3;
+  r.min_edge_length = 0.0;
+  EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
+  Settings settings;
+  settings.remesh_iterations = 101;
+  EXPECT_THROW(mesh_surface(*s, settings), InputError);
+}
+
+TEST(Remesh, ZeroIterationsLeaveTheMeshUnchanged) {
+  const SurfacePtr s = test::sphere();
+  Mesh mesh = projection_only(*s, 0.15);
+  const Mesh before = mesh;
+  RemeshSettings r;
+  r.edge_length = 0.15;
+  r.iterations = 0;
+  remesh_on_surface(mesh, *s, r);
+  EXPECT_EQ(mesh.positions, before.positions);
+  EXPECT_EQ(mesh.triangles, before.triangles);
+}
+
+TEST(Remesh, KeepsTopologyAndVerticesOnTheSurfaceAndRemovesSmallAngles) {
+  const SurfacePtr s = test::torus();
+  Mesh mesh = projection_only(*s, 0.08);
+  const double before = test::min_angle_degrees(mesh);
+  RemeshSettings r;
+  r.edge_length = 0.08;
+  r.box = s->box();
+  const RemeshStats stats = remesh_on_surface(mesh, *s, r);
+  const TopologyReport t = analyze_topology(mesh);
+  EXPECT_TRUE(t.watertight() && t.manifold() && t.consistently_oriented());
+  EXPECT_EQ(t.genus, 1);
+  EXPECT_LT(test::max_vertex_distance(*s, mesh), 1e-9 * s->box().diagonal());
+  EXPECT_LT(before, 20.0);  // the projection mesh alone has slivers at seams
+  EXPECT_GE(test::min_angle_degrees(mesh), 20.0);
+  EXPECT_GT(stats.gradient_evaluations, 0u);
+}
+
+TEST(Remesh, SplitsToTheTargetSizeAndKeepsTheBoxBoundary) {
+  // A plane cut open by its box: boundary vertices stay exactly where they are, the rest is refined to
+  // the target edge length and stays inside the box.
+  const SurfacePtr plane = make_surface([](auto x, auto y, auto z) { return z - 0.1 * x - 0.05 * y - 0.01; },
+                                        Box{Vec3::Constant(-1), Vec3::Constant(1)}, "plane");
+  Mesh mesh = projection_only(*plane, 0.25);
+  std::vector<Vec3> boundary;
+  {
+    const TopologyReport t = analyze_topology(mesh);
+    ASSERT_GT(t.boundary_edges, 0u);
+  }
+  RemeshSettings r;
+  r.edge_length = 0.1;
+  r.box = plane->box();
+  const RemeshStats stats = remesh_on_surface(mesh, *plane, r);
+  EXPECT_GT(stats.splits, 0u);
+  const ShapeReport shape = analyze_shape(mesh);
+  EXPECT_LT(shape.edge_length.median, 2.0 * 0.1);
+  for (const Vec3& p : mesh.positions) {
+    EXPECT_TRUE((p.array() >= -1.0).all() && (p.array() <= 1.0).all());
+  }
+  const TopologyReport t = analyze_topology(mesh);
+  EXPECT_TRUE(t.manifold() && t.consistently_oriented());
+  EXPECT_LT(test::max_vertex_distance(*plane, mesh), 1e-12);
+}
+
+}  // namespace
+}  // namespace isopatch

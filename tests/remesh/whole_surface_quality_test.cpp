@@ -1,0 +1,65 @@
+// Issue 7's targets on whole surfaces through the default pipeline (projection + clean-up), at one
+// size each: closed, manifold, oriented, right genus, no self-intersections, vertices on f = 0, no
+// angle under 20 degrees, at least 90% of interior vertices of valence 6 and (torus) mean-curvature
+// nRMS at most 0.015.
+// Shortfall, asserted as such: where the octree refines (tanglecube, genus2), the transitions between
+// leaf depths, whose coarse side merges boundary vertices, leave 82-90% of vertices of valence 6; the
+// test holds them to `min_valence_6` so that a regression shows, and docs/quality.md reports the gap.
+#include <isopatch/isopatch.hpp>
+#include <isopatch/metrics.hpp>
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include "mesh_checks.hpp"
+#include "self_intersection.hpp"
+#include "test_surfaces.hpp"
+
+namespace isopatch {
+namespace {
+
+struct Case {
+  const char* name;
+  SurfacePtr (*make)();
+  double edge_length;
+  int genus;
+  double min_valence_6;
+};
+
+SurfacePtr torus() { return test::torus(); }
+
+class WholeSurfaceQuality : public ::testing::TestWithParam<Case> {};
+
+TEST_P(WholeSurfaceQuality, MeetsTheTargets) {
+  const Case c = GetParam();
+  const SurfacePtr s = c.make();
+  Settings settings;
+  settings.edge_length = c.edge_length;
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*s, settings, &stats);
+  EXPECT_GE(mesh.vertex_count(), 2000u);
+  EXPECT_LE(mesh.vertex_count(), 50000u);
+  const QualityReport q = analyze_quality(mesh, s.get());
+  EXPECT_TRUE(q.topology.watertight());
+  EXPECT_TRUE(q.topology.manifold());
+  EXPECT_TRUE(q.topology.consistently_oriented());
+  EXPECT_EQ(q.topology.components.size(), 1u);
+  EXPECT_EQ(q.topology.genus, c.genus);
+  EXPECT_EQ(test::count_self_intersections(mesh), 0u);
+  EXPECT_LT(test::max_vertex_distance(*s, mesh), 1e-9 * s->box().diagonal());
+  EXPECT_GE(q.valence.share_6, c.min_valence_6);
+  EXPECT_GE(q.shape.min_angle.min, 20.0);
+  EXPECT_EQ(q.shape.share_below_10, 0.0);
+  if (std::string(c.name) == "torus") {
+    EXPECT_LE(q.accuracy->mean_curvature.nrms, 0.015);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, WholeSurfaceQuality,
+                         ::testing::Values(Case{"torus", &torus, 0.04, 1, 0.90},
+                                           Case{"tanglecube", &test::tanglecube, 0.12, 5, 0.80},
+                                           Case{"genus2", &test::genus2, 0.02, 2, 0.85}),
+                         [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
+
+}  // namespace
+}  // namespace isopatch
