@@ -12,8 +12,8 @@
 /// docs/whole-surface-quality.md for the measurements against the alternatives.
 ///
 /// Sizes: a uniform target edge length, or a curvature-adapted size field for a chordal error bound
-/// (size_for_error in curvature.hpp), graded so that sizes at neighbouring vertices differ by a bounded factor.
-/// Boundary edges (a surface cut open by its box) and their vertices are kept as they are.
+/// (size_for_error in curvature.hpp), graded so that sizes at neighbouring vertices differ by a bounded
+/// factor. Boundary edges (a surface cut open by its box) and their vertices are kept as they are.
 
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh.hpp>
@@ -50,8 +50,8 @@ struct RemeshStats {
   std::size_t splits = 0;
   std::size_t collapses = 0;
   std::size_t flips = 0;
-  std::size_t repairs = 0;        ///< small-angle triangles removed by the final pass
-  std::size_t rejected_moves = 0; ///< relaxation moves skipped (fold, projection failure, box)
+  std::size_t repairs = 0;         ///< small-angle triangles removed by the final pass
+  std::size_t rejected_moves = 0;  ///< relaxation moves skipped (fold, projection failure, box)
   std::uint64_t gradient_evaluations = 0;
   std::uint64_t hessian_evaluations = 0;
 };

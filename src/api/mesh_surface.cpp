@@ -38,7 +38,8 @@ RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings&
   r.iterations = iterations;
   r.box = box;
   r.cancel = s.cancel;
-  r.edge_length = s.max_error ? default_edge_length(s, box) : s.edge_length.value_or(median_edge_length(mesh));
+  r.edge_length =
+      s.max_error ? default_edge_length(s, box) : s.edge_length.value_or(median_edge_length(mesh));
   if (s.max_error) {
     r.max_error = s.max_error;
     r.min_edge_length = std::min(r.edge_length, box.size().maxCoeff() / 2048.0);

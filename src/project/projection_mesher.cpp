@@ -481,9 +481,9 @@ class PartitionMesher {
   int fixed_resolution_;
   int refinable_depth_;
   std::function<double(const Vec3&)> size_at_;
-  std::vector<double> crossing_sizes_;    // target size at each crossing, -1 until asked
-  std::vector<int> side_segments_;        // per side, in key order
-  std::vector<std::size_t> side_offsets_; // per side, the mesh id of its first inner point
+  std::vector<double> crossing_sizes_;     // target size at each crossing, -1 until asked
+  std::vector<int> side_segments_;         // per side, in key order
+  std::vector<std::size_t> side_offsets_;  // per side, the mesh id of its first inner point
   std::vector<Side> sides_;
   std::vector<std::vector<std::size_t>> side_leaves_;  // per side, the leaves whose loops use it
   std::set<std::size_t> split_leaves_;
@@ -516,8 +516,9 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     check_cancel(settings);
     // Local refinement goes at most refinement_levels below the starting depth (and never past max_depth).
     // (A size field may refine down to max_depth.)
-    ps.max_depth = settings.max_error ? settings.max_depth
-                                      : std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels);
+    ps.max_depth = settings.max_error
+                       ? settings.max_depth
+                       : std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels);
     ps.max_depth = std::max(ps.max_depth, ps.surface_depth);
     const Partition partition = build_partition(surface, box, ps);
     partition_values += partition.stats.value_evaluations;

@@ -92,7 +92,8 @@ class Remesher {
                    const Vec3& n2) const {
     const Vec3 cross = (p1 - p0).cross(p2 - p0);
     const double norm = cross.norm();
-    const double scale = std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()});
+    const double scale =
+        std::max({(p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm()});
     if (!(norm > 1e-12 * scale)) return false;
     const Vec3 n = cross / norm;
     return n.dot(n0) >= kMinNormalDot && n.dot(n1) >= kMinNormalDot && n.dot(n2) >= kMinNormalDot;
@@ -110,15 +111,17 @@ class Remesher {
   }
 
   bool triangle_ok(const Triangle& t) const {
-    return triangle_ok(mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]], mesh_.normals[t[0]],
-                       mesh_.normals[t[1]], mesh_.normals[t[2]]);
+    return triangle_ok(mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]],
+                       mesh_.normals[t[0]], mesh_.normals[t[1]], mesh_.normals[t[2]]);
   }
 
   double smallest_angle(const Triangle& t) const {
     return isopatch::smallest_angle(mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]]);
   }
 
-  double length(std::uint32_t a, std::uint32_t b) const { return (mesh_.positions[a] - mesh_.positions[b]).norm(); }
+  double length(std::uint32_t a, std::uint32_t b) const {
+    return (mesh_.positions[a] - mesh_.positions[b]).norm();
+  }
 
   double split_factor() const { return settings_.max_error ? kErrorSplitFactor : kSplitFactor; }
 
@@ -218,7 +221,8 @@ class Remesher {
     if (mesh_.valence(e.a) <= 3 || mesh_.valence(e.b) <= 3) return false;
     const Triangle t1{e.a, e.d, e.c}, t2{e.b, e.c, e.d};
     if (!triangle_ok(t1) || !triangle_ok(t2)) return false;
-    const double before = std::min(smallest_angle(mesh_.triangles[e.t_ab]), smallest_angle(mesh_.triangles[e.t_ba]));
+    const double before =
+        std::min(smallest_angle(mesh_.triangles[e.t_ab]), smallest_angle(mesh_.triangles[e.t_ba]));
     const double after = std::min(smallest_angle(t1), smallest_angle(t2));
     if (!accept(before, after)) return false;
     mesh_.flip(e);
@@ -333,7 +337,8 @@ void check(const RemeshSettings& s) {
       throw InputError("remesh: the smallest size must be positive and at most the edge length");
   }
   if (!(s.grading > 0.0 && s.grading <= 1.0)) throw InputError("remesh: grading must lie in (0, 1]");
-  if (s.iterations < 0 || s.iterations > 100) throw InputError("remesh: iterations must be between 0 and 100");
+  if (s.iterations < 0 || s.iterations > 100)
+    throw InputError("remesh: iterations must be between 0 and 100");
 }
 
 }  // namespace

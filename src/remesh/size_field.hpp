@@ -14,7 +14,8 @@ namespace isopatch {
 
 class SizeField {
  public:
-  SizeField(const Surface& surface, const RemeshSettings& settings) : surface_(surface), settings_(settings) {}
+  SizeField(const Surface& surface, const RemeshSettings& settings)
+      : surface_(surface), settings_(settings) {}
 
   /// The ungraded size at p: edge_length, or size_for_error clamped to [min_edge_length, edge_length].
   double raw(const Vec3& p);

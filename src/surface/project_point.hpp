@@ -12,6 +12,7 @@ namespace isopatch {
 /// (then p holds the result and the gradient there is stored in *gradient when given). Returns false,
 /// leaving p at the last iterate, when the gradient vanishes or 30 steps do not converge.
 /// \throw EvaluationError if f or grad f is not finite on the way.
-bool project_to_surface(const Sampler& f, Vec3& p, double tolerance, double max_step, Vec3* gradient = nullptr);
+bool project_to_surface(const Sampler& f, Vec3& p, double tolerance, double max_step,
+                        Vec3* gradient = nullptr);
 
 }  // namespace isopatch

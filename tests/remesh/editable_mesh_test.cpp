@@ -35,8 +35,8 @@ TEST(EditableMesh, FindsInteriorEdgesWithTheirOppositeVertices) {
   const EditableMesh m = editable(octahedron());
   const auto e = m.interior_edge(0, 2);
   ASSERT_TRUE(e);
-  EXPECT_EQ(e->c, 4u);  // (0, 2, 4) holds 0 -> 2
-  EXPECT_EQ(e->d, 5u);  // (2, 0, 5) holds 2 -> 0
+  EXPECT_EQ(e->c, 4u);                  // (0, 2, 4) holds 0 -> 2
+  EXPECT_EQ(e->d, 5u);                  // (2, 0, 5) holds 2 -> 0
   EXPECT_FALSE(m.interior_edge(0, 1));  // opposite vertices share no edge
   EXPECT_EQ(m.valence(0), 4u);
   EXPECT_EQ(m.edges().size(), 12u);

@@ -54,7 +54,9 @@ TEST_P(MaxError, CentroidsStayWithinTheBoundOnAValidMesh) {
 INSTANTIATE_TEST_SUITE_P(Surfaces, MaxError,
                          ::testing::Values(Case{"sphere", 1e-3, 0, 1}, Case{"blobby", 1e-3, 0, 3},
                                            Case{"genus2", 1e-3, 2, 3}),
-                         [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
+                         [](const ::testing::TestParamInfo<Case>& param) {
+                           return std::string(param.param.name);
+                         });
 
 TEST(MaxError, HalvingTheBoundRefinesTheMesh) {
   const SurfacePtr s = catalogue_surface("torus");

@@ -26,7 +26,9 @@ struct Case {
   double min_valence_6;
 };
 
-SurfacePtr torus() { return test::torus(); }
+SurfacePtr torus() {
+  return test::torus();
+}
 
 class WholeSurfaceQuality : public ::testing::TestWithParam<Case> {};
 
@@ -59,7 +61,9 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, WholeSurfaceQuality,
                          ::testing::Values(Case{"torus", &torus, 0.04, 1, 0.90},
                                            Case{"tanglecube", &test::tanglecube, 0.12, 5, 0.80},
                                            Case{"genus2", &test::genus2, 0.02, 2, 0.85}),
-                         [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
+                         [](const ::testing::TestParamInfo<Case>& param) {
+                           return std::string(param.param.name);
+                         });
 
 }  // namespace
 }  // namespace isopatch
