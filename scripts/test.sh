@@ -18,9 +18,10 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE package
 fi
-# Fuzz targets (fuzz/, libFuzzer with clang++, ASan + UBSan): CI replays every committed corpus input,
-# including the regressions the fuzzers found, deterministically. Open-ended searches are run by hand
-# (scripts/fuzz.sh SECONDS, or SECONDS RUNS for a seeded one). ISOPATCH_FUZZ=0 skips this.
+# Fuzz targets (fuzz/, libFuzzer with clang++, ASan + UBSan): every committed corpus input (including
+# the regressions the fuzzers found) and then a seeded search of up to a minute per target, so a run
+# is reproducible (seed 1) yet explores beyond the corpus. Longer searches: scripts/fuzz.sh SECONDS.
+# ISOPATCH_FUZZ=0 skips this.
 if [ "${ISOPATCH_FUZZ:-1}" != 0 ]; then
-  scripts/fuzz.sh 120 0
+  scripts/fuzz.sh "${ISOPATCH_FUZZ_SECONDS:-60}" 100000000
 fi

@@ -111,7 +111,7 @@ class AdaptiveBuilder {
 
 void AdaptiveBuilder::check_cancel() const {
   if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed))
-    throw LimitError("partition: cancelled");
+    throw LimitError("cancelled");
 }
 
 Partition AdaptiveBuilder::run(const Partition& seed) {

@@ -190,6 +190,7 @@ class PartitionMesher {
     compute_sides(counters);
     for (std::size_t l = 0; l < part_.leaves.size(); ++l) {
       check_cancel(settings_);
+      if (settings_.progress && l % 64 == 0) settings_.progress(Progress{l, part_.leaves.size()});
       mesh_leaf(l, counters);
       check_vertex_budget(settings_, mesh_.positions.size());
     }
