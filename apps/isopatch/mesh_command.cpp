@@ -3,6 +3,7 @@
 #include <isopatch/isopatch.hpp>
 #include <isopatch/resolve_surface.hpp>
 
+#include <cstdint>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -39,6 +40,8 @@ struct MeshOptions {
   std::string base = "barycentric";
   double max_ray_angle = defaults.max_ray_angle;
   std::optional<int> remesh;
+  std::uint64_t max_evaluations = 0;
+  double time_limit = 0.0;
   std::optional<double> max_error;
 };
 
@@ -76,6 +79,8 @@ int run_mesh(const MeshOptions& o) {
   settings.refinement_levels = o.refinement_levels;
   settings.max_ray_angle = o.max_ray_angle;
   settings.remesh_iterations = o.remesh;
+  settings.max_evaluations = o.max_evaluations;
+  settings.time_limit = o.time_limit;
   settings.max_error = o.max_error;
   if (o.coordinates == "wachspress")
     settings.coordinates = Settings::Coordinates::Wachspress;
@@ -151,6 +156,9 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--max-error", o->max_error,
                   "Curvature-adapted sizes: triangle centroids stay within this distance of f = 0 "
                   "(edges at most --edge-length)");
+  cmd->add_option("--max-evaluations", o->max_evaluations,
+                  "Stop with an error after this many evaluations of f (0: none)");
+  cmd->add_option("--time-limit", o->time_limit, "Stop with an error after this many seconds (0: none)");
   cmd->add_option("--max-vertices", o->max_vertices,
                   "Stop with an error beyond this many vertices (0: none)");
   cmd->add_flag(

@@ -98,6 +98,12 @@ struct Settings {
   // --- Budgets and control ----------------------------------------------------------------------
   /// Abort with LimitError when the output would exceed this many vertices. 0: no limit.
   std::size_t max_vertices = 0;
+  /// Abort with LimitError after this many evaluations of f (values, gradients, Hessians and interval
+  /// bounds all count). 0: no limit.
+  std::uint64_t max_evaluations = 0;
+  /// Abort with LimitError once the run has taken this many seconds (checked every 256 evaluations).
+  /// 0: no limit. Must be >= 0.
+  double time_limit = 0.0;
   /// Called now and then from the meshing thread; may be empty.
   std::function<void(const Progress&)> progress;
   /// When set and true, the mesher stops with LimitError("cancelled") at the next check.

@@ -6,10 +6,10 @@
 
 #include <algorithm>
 #include <chrono>
-
 #include <cmath>
 #include <string>
 #include <vector>
+#include "api/budgeted_surface.hpp"
 #include "surface/zero_function.hpp"
 
 namespace isopatch {
@@ -69,16 +69,10 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
   stats->extra["hessian_evaluations"] = static_cast<double>(r.hessian_evaluations);
 }
 
-}  // namespace
-
-Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
+/// Meshes with the method of `settings`, then cleans up (remesh.hpp) when asked.
+Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats) {
   // f = 0 everywhere is no surface, and neither mesher could tell quickly (see zero_function.hpp).
   reject_zero_function(surface, settings.box.value_or(surface.box()));
-  if (settings.remesh_iterations && (*settings.remesh_iterations < 0 || *settings.remesh_iterations > 100))
-    throw InputError("remesh iterations must be between 0 and 100, got " +
-                     std::to_string(*settings.remesh_iterations));
-  if (settings.max_error && !(std::isfinite(*settings.max_error) && *settings.max_error > 0.0))
-    throw InputError("the maximum error must be a positive number");
   switch (settings.method) {
     case Method::MarchingCubes: {
       Mesh mesh = marching_cubes(surface, settings, stats);
@@ -102,6 +96,21 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
     }
   }
   throw Error(ErrorKind::Internal, "unknown method");
+}
+
+}  // namespace
+
+Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
+  if (settings.remesh_iterations && (*settings.remesh_iterations < 0 || *settings.remesh_iterations > 100))
+    throw InputError("remesh iterations must be between 0 and 100, got " +
+                     std::to_string(*settings.remesh_iterations));
+  if (settings.max_error && !(std::isfinite(*settings.max_error) && *settings.max_error > 0.0))
+    throw InputError("the maximum error must be a positive number");
+  if (!(std::isfinite(settings.time_limit) && settings.time_limit >= 0.0))
+    throw InputError("the time limit must be a number of seconds >= 0");
+  if (settings.max_evaluations == 0 && settings.time_limit == 0.0) return dispatch(surface, settings, stats);
+  const BudgetedSurface budgeted(surface, settings.max_evaluations, settings.time_limit);
+  return dispatch(budgeted, settings, stats);
 }
 
 Method parse_method(const std::string& name) {

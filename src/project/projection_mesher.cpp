@@ -515,12 +515,14 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   const std::function<double(const Vec3&)> size_at = size_function(surface, box, settings);
   for (int round = 0;; ++round) {
     check_cancel(settings);
-    // Local refinement goes at most refinement_levels below the starting depth (and never past max_depth).
-    // (A size field may refine down to max_depth.)
-    ps.max_depth = settings.max_error
-                       ? settings.max_depth
-                       : std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels);
-    ps.max_depth = std::max(ps.max_depth, ps.surface_depth);
+    // Cells whose topology is in doubt (two sheets, an ambiguous face) are split by the partition down to
+    // max_depth: a coarser fan there would give a closed mesh of the wrong topology. Rejected patches
+    // are refined at most refinement_levels below the starting depth (a size field: down to max_depth).
+    ps.max_depth = std::max(settings.max_depth, ps.surface_depth);
+    const int patch_depth = std::max(
+        ps.surface_depth, settings.max_error
+                              ? settings.max_depth
+                              : std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels));
     const Partition partition = build_partition(surface, box, ps);
     partition_values += partition.stats.value_evaluations;
     partition_gradients += partition.stats.gradient_evaluations;
@@ -539,7 +541,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     const int resolution = settings.resolution;
     if (settings.max_error && round < kMaxRounds) {
       // The size field asks for cells of at most kAutoSegments local edge lengths.
-      std::vector<CellKey> split = leaves_too_large_for(partition, size_at, ps.max_depth);
+      std::vector<CellKey> split = leaves_too_large_for(partition, size_at, patch_depth);
       if (!split.empty()) {
         ps.force_split.insert(ps.force_split.end(), split.begin(), split.end());
         ++refinements;
@@ -547,7 +549,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       }
     }
     // After kMaxRounds rounds of refinement, whatever still fails is closed by fans.
-    const int refinable_depth = round < kMaxRounds ? ps.max_depth : 0;
+    const int refinable_depth = round < kMaxRounds ? patch_depth : 0;
     PartitionMesher mesher(f, partition, settings, resolution, refinable_depth, size_at);
     // Per-round counters start afresh; rejections add up over the rounds.
     counters.patches_by_sides.clear();

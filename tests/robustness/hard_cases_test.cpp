@@ -245,16 +245,22 @@ TEST(HardCases, SheetThinnerThanACell) {
 }
 
 TEST(HardCases, TwoSheetsCloserThanACell) {
-  // Concentric spheres of radius 0.5 and 0.52 (a shell 0.02 thick; cells of 1/12 and 1/8). Closed and
-  // manifold, but not two spheres (see DISABLED_TwoCloseSheetsKeepTheirTopology).
+  // Concentric spheres of radius 0.5 and 0.52 (a shell 0.02 thick; cells of 1/12 and 1/8).
+  // Projection: cells holding two sheets are split down to max_depth (not closed by fans at the patch
+  // refinement limit), so the mesh is the two spheres, each oriented along grad f (the inner one faces
+  // the centre, into the cavity). Marching cubes, the baseline, cannot see sheets closer than its grid
+  // and meshes a closed manifold of the wrong topology at this grid: asserted only as valid.
   const std::string formula = "(x^2+y^2+z^2-0.25)*(x^2+y^2+z^2-0.2704)";
-  FOR_EACH_METHOD {
-    const Outcome o = run(formula, cube(1), method);
-    if (o.mesh)
-      expect_valid(o, cube(1), {true, 0});
-    else
-      expect_error(o, ErrorKind::NoSurface, "no surface in the box");
-  }
+  const Outcome p = run(formula, cube(1), Method::Projection);
+  ASSERT_TRUE(p.mesh.has_value()) << describe(p);
+  const TopologyReport t = analyze_topology(*p.mesh);
+  EXPECT_TRUE(t.watertight() && t.manifold() && t.consistently_oriented());
+  EXPECT_EQ(t.components.size(), 2u);
+  EXPECT_EQ(t.genus, 0);
+  const Outcome m = run(formula, cube(1), Method::MarchingCubes);
+  ASSERT_TRUE(m.mesh.has_value()) << describe(m);
+  const TopologyReport tm = analyze_topology(*m.mesh);
+  EXPECT_TRUE(tm.watertight() && tm.manifold() && tm.consistently_oriented());
 }
 
 // ---- Singular points ------------------------------------------------------------------------------
@@ -466,7 +472,7 @@ TEST(HardCases, MarchingCubesEvaluatesOnlyInsideTheBox) {
   }
 }
 
-// ---- Known problems (disabled until the library is fixed; see the issue 8 report) ---------------
+// ---- Evaluation only inside the box --------------------------------------------------------------
 
 TEST(HardCases, ProjectionEvaluatesOnlyInsideTheBox) {
   // f defined on the whole closed box [-1,1]^3 but not beyond it. The octree's lattice overhangs the box
@@ -481,21 +487,6 @@ TEST(HardCases, ProjectionEvaluatesOnlyInsideTheBox) {
       EXPECT_NE(o.message.find("grad f is infinite at (-1,"), std::string::npos) << o.message;
     } else {
       EXPECT_TRUE(o.mesh.has_value()) << describe(o);
-    }
-  }
-}
-
-TEST(HardCases, DISABLED_TwoCloseSheetsKeepTheirTopology) {
-  // Concentric spheres 0.5 and 0.52 in [-1,1]^3 (edge length 1/8, grid 24): both runs give closed
-  // manifold meshes, but projection gives 23 components of total genus 13 (924 fallback cells) and
-  // marching cubes 66 components with genus 3. Expected: two components of genus 0, or an error saying the
-  // sheets are not resolved (for projection, whose interval tests can see two sheets in a cell).
-  const std::string formula = "(x^2+y^2+z^2-0.25)*(x^2+y^2+z^2-0.2704)";
-  FOR_EACH_METHOD {
-    const Outcome o = run(formula, cube(1), method);
-    expect_valid(o, cube(1), {true, 2});
-    if (o.mesh) {
-      EXPECT_EQ(analyze_topology(*o.mesh).genus, 0);
     }
   }
 }

@@ -1,0 +1,41 @@
+#pragma once
+// A Surface that forwards to another and enforces Settings' evaluation and time budgets: every
+// evaluation (value, gradient, Hessian, interval bound) is counted, and once the count or the elapsed
+// time passes its limit the next evaluation throws LimitError. Every mesher evaluates f as it works, so
+// no run can go on past its budget, whatever loop it is in. Thread-safe.
+
+#include <isopatch/surface.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+
+namespace isopatch {
+
+class BudgetedSurface final : public Surface {
+ public:
+  /// \param max_evaluations  0: no limit
+  /// \param seconds          0: no limit; counted from construction
+  BudgetedSurface(const Surface& inner, std::uint64_t max_evaluations, double seconds);
+
+  double value(const Vec3& p) const override;
+  void values(std::span<const Vec3> points, std::span<double> out) const override;
+  ValueGradient value_gradient(const Vec3& p) const override;
+  SecondOrder second_order(const Vec3& p) const override;
+  std::optional<Interval> bound(const Box& box) const override;
+  std::optional<IntervalGradient> gradient_bound(const Box& box) const override;
+
+  std::uint64_t evaluations() const { return count_.load(std::memory_order_relaxed); }
+
+ private:
+  /// Counts n evaluations; throws LimitError when a budget is exhausted.
+  void charge(std::uint64_t n) const;
+
+  const Surface& inner_;
+  std::uint64_t max_evaluations_;
+  double seconds_;
+  std::chrono::steady_clock::time_point start_;
+  mutable std::atomic<std::uint64_t> count_{0};
+};
+
+}  // namespace isopatch
