@@ -38,7 +38,7 @@ if [ "$build" = 1 ]; then
     cmake -S . -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null
   fi
   # The peer target exists only when CMake found CGAL (bench/CMakeLists.txt); benchmarks must be on.
-  cmake -S . -B "$build_dir" -DISOPATCH_BUILD_BENCH=ON >/dev/null
+  cmake -S . -B "$build_dir" -DISOPATCH_BUILD_BENCH=ON -DISOPATCH_BUILD_CGAL_PEER=ON >/dev/null
   targets=(isopatch_cli)
   if cmake --build "$build_dir" --target help 2>/dev/null | grep -q isopatch_cgal_peer; then
     targets+=(isopatch_cgal_peer)

@@ -22,6 +22,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 
 namespace isopatch {
@@ -32,6 +33,10 @@ struct RemeshSettings {
   /// When set (> 0): sizes from the analytic curvature so that the distance of triangle centroids from
   /// f = 0 stays below this bound (curvature.hpp size_for_error), clamped to [min_edge_length, edge_length].
   std::optional<double> max_error;
+  /// When set: a size of the caller's own at a point (> 0); the size is the smallest of this, the
+  /// curvature size (with max_error) and edge_length, and at least min_edge_length; graded like the
+  /// curvature sizes.
+  std::function<double(const Vec3&)> size;
   /// The smallest size the curvature-adapted field may ask for (near singular points). Must be > 0
   /// and <= edge_length when max_error is set.
   double min_edge_length = 0.0;

@@ -94,6 +94,11 @@ struct Settings {
   /// this bound (edge lengths sqrt(3 eps / kappa_max), at most edge_length, graded); the projection
   /// octree refines where the field asks for smaller cells. Must be > 0.
   std::optional<double> max_error;
+  /// A size field of your own (library only): the target edge length at a point, > 0 and finite. When
+  /// set it replaces edge_length as the target (edge_length, or the longest box side / 16, then caps
+  /// it, and 1/2048 of the longest side is the floor); the projection octree refines where it asks for
+  /// smaller cells, and the clean-up grades and follows it. Combined with max_error, the smaller wins.
+  std::function<double(const Vec3&)> size_field;
 
   // --- Budgets and control ----------------------------------------------------------------------
   /// Abort with LimitError when the output would exceed this many vertices. 0: no limit.
@@ -112,9 +117,9 @@ struct Settings {
 
 /// The target edge length of the projection mesher, or with max_error the largest size the size field
 /// may ask for: Settings::edge_length when given, else the longest side of `box` / 64 (/ 16 with
-/// max_error).
+/// max_error or a size_field).
 inline double default_edge_length(const Settings& s, const Box& box) {
-  return s.edge_length.value_or(box.size().maxCoeff() / (s.max_error ? 16.0 : 64.0));
+  return s.edge_length.value_or(box.size().maxCoeff() / (s.max_error || s.size_field ? 16.0 : 64.0));
 }
 
 /// What a mesher did, for summaries and benchmarks.

@@ -38,10 +38,11 @@ RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings&
   r.iterations = iterations;
   r.box = box;
   r.cancel = s.cancel;
-  r.edge_length =
-      s.max_error ? default_edge_length(s, box) : s.edge_length.value_or(median_edge_length(mesh));
-  if (s.max_error) {
+  const bool field = s.max_error || s.size_field;
+  r.edge_length = field ? default_edge_length(s, box) : s.edge_length.value_or(median_edge_length(mesh));
+  if (field) {
     r.max_error = s.max_error;
+    r.size = s.size_field;
     r.min_edge_length = std::min(r.edge_length, box.size().maxCoeff() / 2048.0);
   }
   return r;

@@ -130,15 +130,29 @@ std::size_t leaves_needing_refinement(const Partition& partition) {
       std::count_if(partition.leaves.begin(), partition.leaves.end(), needs_refinement));
 }
 
-/// The target edge length at a point: the requested (or default) edge length, or with max_error the
-/// curvature-adapted size (remesh.hpp size_for_error) between 1/2048 of the longest box side and it.
+/// Whether the target size varies over the box (a curvature-adapted or a user size field).
+bool sized_by_field(const Settings& s) {
+  return s.max_error.has_value() || static_cast<bool>(s.size_field);
+}
+
+/// The target edge length at a point: the requested (or default) edge length; with max_error the
+/// curvature-adapted size (curvature.hpp size_for_error), with a size_field the user's size (the smaller
+/// of the two when both are set), clamped between 1/2048 of the longest box side and that edge length.
 std::function<double(const Vec3&)> size_function(const Surface& surface, const Box& box, const Settings& s) {
   const double edge = target_edge(box, s);
-  if (!s.max_error) return [edge](const Vec3&) { return edge; };
+  if (!sized_by_field(s)) return [edge](const Vec3&) { return edge; };
   const double smallest = std::min(edge, box.size().maxCoeff() / 2048.0);
-  const double eps = *s.max_error;
-  return [&surface, edge, smallest, eps](const Vec3& p) {
-    return std::clamp(size_for_error(max_abs_principal_curvature(surface, p), eps), smallest, edge);
+  const std::optional<double> eps = s.max_error;
+  const std::function<double(const Vec3&)> user = s.size_field;
+  return [&surface, edge, smallest, eps, user](const Vec3& p) {
+    double h = edge;
+    if (eps) h = std::min(h, size_for_error(max_abs_principal_curvature(surface, p), *eps));
+    if (user) {
+      const double u = user(p);
+      if (!(std::isfinite(u) && u > 0.0)) throw InputError("the size field must be positive and finite");
+      h = std::min(h, u);
+    }
+    return std::clamp(h, smallest, edge);
   };
 }
 
@@ -520,7 +534,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     // are refined at most refinement_levels below the starting depth (a size field: down to max_depth).
     ps.max_depth = std::max(settings.max_depth, ps.surface_depth);
     const int patch_depth = std::max(
-        ps.surface_depth, settings.max_error
+        ps.surface_depth, sized_by_field(settings)
                               ? settings.max_depth
                               : std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels));
     const Partition partition = build_partition(surface, box, ps);
@@ -539,7 +553,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     }
     // Sides get their own segment counts unless the resolution is fixed.
     const int resolution = settings.resolution;
-    if (settings.max_error && round < kMaxRounds) {
+    if (sized_by_field(settings) && round < kMaxRounds) {
       // The size field asks for cells of at most kAutoSegments local edge lengths.
       std::vector<CellKey> split = leaves_too_large_for(partition, size_at, patch_depth);
       if (!split.empty()) {

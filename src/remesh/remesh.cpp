@@ -330,9 +330,9 @@ class Remesher {
 void check(const RemeshSettings& s) {
   if (!(std::isfinite(s.edge_length) && s.edge_length > 0.0))
     throw InputError("remesh: the edge length must be a positive number");
-  if (s.max_error) {
-    if (!(std::isfinite(*s.max_error) && *s.max_error > 0.0))
-      throw InputError("remesh: the maximum error must be a positive number");
+  if (s.max_error && !(std::isfinite(*s.max_error) && *s.max_error > 0.0))
+    throw InputError("remesh: the maximum error must be a positive number");
+  if (s.max_error || s.size) {
     if (!(s.min_edge_length > 0.0 && s.min_edge_length <= s.edge_length))
       throw InputError("remesh: the smallest size must be positive and at most the edge length");
   }

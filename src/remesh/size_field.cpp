@@ -10,9 +10,13 @@
 namespace isopatch {
 
 double SizeField::raw(const Vec3& p) {
-  if (!settings_.max_error) return settings_.edge_length;
-  ++hessians_;
-  const double h = size_for_error(max_abs_principal_curvature(surface_, p), *settings_.max_error);
+  if (!varies()) return settings_.edge_length;
+  double h = settings_.edge_length;
+  if (settings_.max_error) {
+    ++hessians_;
+    h = std::min(h, size_for_error(max_abs_principal_curvature(surface_, p), *settings_.max_error));
+  }
+  if (settings_.size) h = std::min(h, settings_.size(p));
   return std::clamp(h, settings_.min_edge_length, settings_.edge_length);
 }
 
@@ -29,7 +33,7 @@ void SizeField::update(const EditableMesh& mesh) {
     }
     graded_[v] = raw_[v];
   }
-  if (!settings_.max_error) return;
+  if (!varies()) return;
   // Grading: h(v) <= h(u) + grading |u - v| along edges, by relaxation sweeps until nothing changes.
   const auto edges = mesh.edges();
   for (int sweep = 0; sweep < 64; ++sweep) {

@@ -26,6 +26,8 @@ class SizeField {
   /// Target length of the edge a-b: the smaller of its ends' sizes.
   double edge(std::uint32_t a, std::uint32_t b) const { return std::min(graded_[a], graded_[b]); }
   std::uint64_t hessian_evaluations() const { return hessians_; }
+  /// Whether sizes vary over the surface (max_error or a size callback).
+  bool varies() const { return settings_.max_error.has_value() || static_cast<bool>(settings_.size); }
 
  private:
   const Surface& surface_;
