@@ -68,6 +68,33 @@ TEST_P(SizeFieldAcrossTheBox, GivesLeavesOfThreeDepthsWithoutCracks) {
 INSTANTIATE_TEST_SUITE_P(Catalogue, SizeFieldAcrossTheBox, ::testing::ValuesIn(closed_smooth_surfaces()),
                          [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
 
+TEST(SizeField, TransitionPatchesOfSevenToTwelveSidesMeshCorrectly) {
+  // Coarse leaves next to finer ones take the finer crossings on their faces as flat corners: patches
+  // of 7 to 12 sides. The raw projection mesh (no clean-up) with them is closed, oriented, on f = 0 and
+  // free of self-intersections.
+  const SurfacePtr surface = catalogue_surface("tanglecube");
+  const double side = surface->box().size().maxCoeff();
+  const double lo = surface->box().lo.x(), width = surface->box().size().x();
+  Settings settings;
+  settings.size_field = [=](const Vec3& p) {
+    const double t = (p.x() - lo) / width;
+    return side * (1.0 / 160.0 + t * t / 12.0);
+  };
+  MeshStats stats;
+  const Mesh mesh = mesh_projection(*surface, settings, &stats);
+  double many_sided = 0.0;
+  for (int n = 7; n <= 12; ++n)
+    if (const auto it = stats.extra.find("patches_" + std::to_string(n)); it != stats.extra.end())
+      many_sided += it->second;
+  EXPECT_GT(many_sided, 0.0);
+  EXPECT_EQ(stats.extra.at("fallback_cells"), 0.0);
+  const TopologyReport t = analyze_topology(mesh);
+  EXPECT_TRUE(t.watertight() && t.manifold() && t.outward_oriented());
+  EXPECT_EQ(t.genus, 5);
+  EXPECT_EQ(test::count_self_intersections(mesh), 0u);
+  EXPECT_LT(test::max_vertex_distance(*surface, mesh), 1e-9 * surface->box().diagonal());
+}
+
 TEST(SizeField, RejectsNonPositiveSizes) {
   Settings settings;
   settings.size_field = [](const Vec3& p) { return p.x(); };  // negative on half the box
