@@ -83,8 +83,10 @@ Interval increasing(const Interval& a, F f, int ulps = kLibmUlps) {
 
 /// pow on a non-negative base: monotone in each argument, so the extremes are at the corners.
 Interval pow_nonnegative_base(const Interval& a, const Interval& b) {
-  const double c[4] = {std::pow(a.lo, b.lo), std::pow(a.lo, b.hi), std::pow(a.hi, b.lo),
-                       std::pow(a.hi, b.hi)};
+  // A zero end may be -0 (from negating [-x, 0]); pow(-0, -3) is -inf, not +inf as for the real base 0.
+  const double lo = a.lo <= 0.0 ? 0.0 : a.lo;
+  const double hi = a.hi <= 0.0 ? 0.0 : a.hi;
+  const double c[4] = {std::pow(lo, b.lo), std::pow(lo, b.hi), std::pow(hi, b.lo), std::pow(hi, b.hi)};
   return clamp(outward(*std::min_element(c, c + 4), *std::max_element(c, c + 4), kLibmUlps), 0.0, kInf);
 }
 

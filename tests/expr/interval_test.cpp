@@ -160,6 +160,13 @@ TEST(IntervalMath, DomainEdgesAndDivisionByZero) {
   // pow with a varying exponent reaches negative values only through negative bases at odd integers.
   const Interval n = pow(Interval{-2.0, -1.0}, Interval{2.5, 3.5});
   EXPECT_LE(n.lo, -8.0);
+  // A base interval ending at 0 with negative exponents: |x|^-3 grows without bound near 0 on both
+  // sides (fuzzing found the negated end -0, where pow(-0, -3) = -inf had hidden that).
+  const Interval z = pow(Interval{-4.0, 3.0}, Interval{-3.0, 1e-9});
+  EXPECT_EQ(z.lo, -kInf);
+  EXPECT_EQ(z.hi, kInf);
+  const Interval w = pow(Interval{-4.0, 0.0}, Interval{-3.0, -3.0});
+  EXPECT_EQ(w.lo, -kInf);
 }
 
 TEST(IntervalMath, TightWhereItShouldBe) {
