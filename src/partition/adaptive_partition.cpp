@@ -110,8 +110,7 @@ class AdaptiveBuilder {
 };
 
 void AdaptiveBuilder::check_cancel() const {
-  if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed))
-    throw LimitError("cancelled");
+  if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
 }
 
 Partition AdaptiveBuilder::run(const Partition& seed) {

@@ -162,8 +162,7 @@ std::uint8_t Builder::corner_signs(const Cell& cell, std::array<double, 8>& valu
 }
 
 void Builder::check_cancel() const {
-  if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed))
-    throw LimitError("cancelled");
+  if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
 }
 
 void Builder::visit(const Cell& cell) {
