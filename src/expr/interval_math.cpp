@@ -309,7 +309,8 @@ Interval atan2(const Interval& y, const Interval& x) {
   // Across the branch cut (the negative x axis, where the angle jumps from pi to -pi) or around the
   // origin every angle occurs; elsewhere the angle is monotone along the box edges, so the extremes
   // are at the corners.
-  if (x.lo < 0.0 && y.contains_zero()) return all;
+  // x.lo = 0 counts too: the point evaluators may see x = -0 there, and atan2(0, -0) = pi.
+  if (x.lo <= 0.0 && y.contains_zero()) return all;
   const double c[4] = {std::atan2(y.lo, x.lo), std::atan2(y.lo, x.hi), std::atan2(y.hi, x.lo),
                        std::atan2(y.hi, x.hi)};
   if (std::any_of(c, c + 4, [](double v) { return std::isnan(v); })) return all;

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 
 namespace isopatch {
@@ -167,6 +168,11 @@ TEST(IntervalMath, DomainEdgesAndDivisionByZero) {
   EXPECT_EQ(z.hi, kInf);
   const Interval w = pow(Interval{-4.0, 0.0}, Interval{-3.0, -3.0});
   EXPECT_EQ(w.lo, -kInf);
+  // atan2(0, -0) = pi in IEEE arithmetic: an x interval touching 0 with y containing 0 spans every
+  // angle (fuzzing found atan2(y, -0) at y = 0 outside the bound).
+  const Interval a = atan2(Interval{-1.0, 1.0}, Interval{0.0, 0.0});
+  EXPECT_LE(a.lo, -std::numbers::pi);
+  EXPECT_GE(a.hi, std::numbers::pi);
 }
 
 TEST(IntervalMath, TightWhereItShouldBe) {
