@@ -179,18 +179,9 @@ bool AdaptiveBuilder::close(const Analysis& a) {
   const int up = finest - settings_.surface_depth;
   bool added = false;
   for (const SegmentKey& key : a.crossed) {
-    const std::uint32_t u = (key.axis + 1) % 3;
-    const std::uint32_t v = (key.axis + 2) % 3;
-    for (std::uint32_t around = 0; around < 4; ++around) {
-      LatticePoint p = key.start;
-      if (around & 1u) {
-        if (p[u] == 0) continue;
-        --p[u];
-      }
-      if (around & 2u) {
-        if (p[v] == 0) continue;
-        --p[v];
-      }
+    const CellsAroundSegment around = cells_around_segment(key);
+    for (std::size_t k = 0; k < around.count; ++k) {
+      const LatticePoint& p = around.points[k];
       if (tree_.locate(finest, p).where != LeafTree::Where::Outside) continue;
       added = tree_.add_root({p[0] >> up, p[1] >> up, p[2] >> up}) || added;
     }

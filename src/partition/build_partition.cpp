@@ -128,20 +128,13 @@ void Builder::close_holes() {
   const std::uint32_t step = lattice_.step(depth);
   const std::uint32_t cells = 1u << depth;
   for (std::size_t c = 0; c < crossings_.size(); ++c) {  // grows while we iterate
-    const SegmentKey key = crossings_[c].segment;
-    const std::uint32_t u = (key.axis + 1) % 3;
-    const std::uint32_t v = (key.axis + 2) % 3;
-    for (std::uint32_t around = 0; around < 4; ++around) {
-      LatticePoint coords{key.start[0] / step, key.start[1] / step, key.start[2] / step};
-      if (around & 1u) {
-        if (coords[u] == 0) continue;
-        --coords[u];
-      }
-      if (around & 2u) {
-        if (coords[v] == 0) continue;
-        --coords[v];
-      }
-      if (coords[u] >= cells || coords[v] >= cells || !known.insert(half_key(coords)).second) continue;
+    const CellsAroundSegment around = cells_around_segment(crossings_[c].segment);
+    for (std::size_t k = 0; k < around.count; ++k) {
+      const LatticePoint& p = around.points[k];
+      const LatticePoint coords{p[0] / step, p[1] / step, p[2] / step};
+      if (coords[0] >= cells || coords[1] >= cells || coords[2] >= cells ||
+          !known.insert(half_key(coords)).second)
+        continue;
       check_cancel();
       ++stats_.cells_recovered;
       if (!lattice_.inside(depth, coords)) continue;

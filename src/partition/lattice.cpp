@@ -72,6 +72,25 @@ LatticePoint SegmentKey::end() const {
   return e;
 }
 
+CellsAroundSegment cells_around_segment(const SegmentKey& key) {
+  const std::uint32_t u = (key.axis + 1) % 3;
+  const std::uint32_t v = (key.axis + 2) % 3;
+  CellsAroundSegment around;
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    LatticePoint p = key.start;
+    if (k & 1u) {
+      if (p[u] == 0) continue;
+      --p[u];
+    }
+    if (k & 2u) {
+      if (p[v] == 0) continue;
+      --p[v];
+    }
+    around.points[around.count++] = p;
+  }
+  return around;
+}
+
 std::size_t SegmentKeyHash::operator()(const SegmentKey& key) const {
   return static_cast<std::size_t>(mix64(mix64(pack(key.start) * 3 + key.axis) ^ key.length));
 }

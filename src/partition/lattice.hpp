@@ -77,6 +77,15 @@ struct FaceId {
   friend auto operator<=>(const FaceId&, const FaceId&) = default;
 };
 
+/// The finest-lattice points whose finest cells have the segment's start on an edge parallel to the
+/// segment: start, start - e_u, start - e_v and start - e_u - e_v (u, v the other two axes), those
+/// without a negative coordinate. A cell at a coarser depth around the segment contains one of them.
+struct CellsAroundSegment {
+  std::array<LatticePoint, 4> points{};
+  std::size_t count = 0;
+};
+CellsAroundSegment cells_around_segment(const SegmentKey& key);
+
 struct SegmentKeyHash {
   std::size_t operator()(const SegmentKey& key) const;
 };

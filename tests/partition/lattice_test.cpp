@@ -45,6 +45,19 @@ TEST(Lattice, HalfAndFinestCoordinatesGiveIdenticalBits) {
   EXPECT_NEAR(cell.size().x(), lattice.unit(), 1e-15);
 }
 
+TEST(Lattice, CellsAroundASegmentShareItsStartAsAnEdgePoint) {
+  // A z segment at (4, 6, 2): the four cells around it have lower corners (4|3, 6|5, 2).
+  const CellsAroundSegment inner = cells_around_segment(SegmentKey{{4, 6, 2}, 2, 1});
+  ASSERT_EQ(inner.count, 4u);
+  std::set<LatticePoint> got(inner.points.begin(), inner.points.end());
+  EXPECT_EQ(got, (std::set<LatticePoint>{{4, 6, 2}, {3, 6, 2}, {4, 5, 2}, {3, 5, 2}}));
+  // On the lattice boundary (x = 0) only the cells with non-negative coordinates remain.
+  const CellsAroundSegment edge = cells_around_segment(SegmentKey{{0, 6, 2}, 2, 1});
+  ASSERT_EQ(edge.count, 2u);
+  EXPECT_EQ(edge.points[0], (LatticePoint{0, 6, 2}));
+  EXPECT_EQ(edge.points[1], (LatticePoint{0, 5, 2}));
+}
+
 TEST(Lattice, NeverLeavesTheBoxAndFlattensCellsOutsideIt) {
   const Box box{Vec3(-1.0, -0.5, -0.25), Vec3(1.0, 0.5, 0.25)};
   const Lattice lattice = make_lattice(box, 4);
