@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include "api/budgeted_surface.hpp"
+#include "surface/target_size.hpp"
 #include "surface/zero_function.hpp"
 
 namespace isopatch {
@@ -32,18 +33,18 @@ double median_edge_length(const Mesh& mesh) {
 }
 
 /// The remeshing settings derived from the mesher's: the requested edge length (else the output's
-/// median edge length) and, with max_error, sizes between 1/2048 of the longest box side and that length.
+/// median edge length) or, with max_error or a size_field, the varying sizes of target_size.hpp.
 RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings& s, int iterations) {
   RemeshSettings r;
   r.iterations = iterations;
   r.box = box;
   r.cancel = s.cancel;
-  const bool field = s.max_error || s.size_field;
-  r.edge_length = field ? default_edge_length(s, box) : s.edge_length.value_or(median_edge_length(mesh));
-  if (field) {
-    r.max_error = s.max_error;
-    r.size = s.size_field;
-    r.min_edge_length = std::min(r.edge_length, box.size().maxCoeff() / 2048.0);
+  const SizeSpec sizes = size_spec(s, box);
+  r.edge_length = sizes.varies() ? sizes.largest : s.edge_length.value_or(median_edge_length(mesh));
+  if (sizes.varies()) {
+    r.max_error = sizes.max_error;
+    r.size = sizes.user;
+    r.min_edge_length = sizes.smallest;
   }
   return r;
 }

@@ -1,7 +1,6 @@
 // The projection mesher for whole surfaces (see include/isopatch/projection.hpp). Three phases per
 // partition, each a loop over independent items, so they can later run in parallel with the same
 // output: (1) the boundary vertices of every shared side, (2) every patch, (3) assembly by IDs.
-#include <isopatch/curvature.hpp>
 #include <isopatch/error.hpp>
 #include <isopatch/projection.hpp>
 
@@ -27,6 +26,7 @@
 #include "project/ray_march.hpp"
 #include "project/side_points.hpp"
 #include "surface/sampler.hpp"
+#include "surface/target_size.hpp"
 
 namespace isopatch {
 namespace {
@@ -130,30 +130,10 @@ std::size_t leaves_needing_refinement(const Partition& partition) {
       std::count_if(partition.leaves.begin(), partition.leaves.end(), needs_refinement));
 }
 
-/// Whether the target size varies over the box (a curvature-adapted or a user size field).
-bool sized_by_field(const Settings& s) {
-  return s.max_error.has_value() || static_cast<bool>(s.size_field);
-}
-
-/// The target edge length at a point: the requested (or default) edge length; with max_error the
-/// curvature-adapted size (curvature.hpp size_for_error), with a size_field the user's size (the smaller
-/// of the two when both are set), clamped between 1/2048 of the longest box side and that edge length.
-std::function<double(const Vec3&)> size_function(const Surface& surface, const Box& box, const Settings& s) {
-  const double edge = target_edge(box, s);
-  if (!sized_by_field(s)) return [edge](const Vec3&) { return edge; };
-  const double smallest = std::min(edge, box.size().maxCoeff() / 2048.0);
-  const std::optional<double> eps = s.max_error;
-  const std::function<double(const Vec3&)> user = s.size_field;
-  return [&surface, edge, smallest, eps, user](const Vec3& p) {
-    double h = edge;
-    if (eps) h = std::min(h, size_for_error(max_abs_principal_curvature(surface, p), *eps));
-    if (user) {
-      const double u = user(p);
-      if (!(std::isfinite(u) && u > 0.0)) throw InputError("the size field must be positive and finite");
-      h = std::min(h, u);
-    }
-    return std::clamp(h, smallest, edge);
-  };
+/// The target edge length at a point (target_size.hpp): constant unless max_error or a size_field is set.
+std::function<double(const Vec3&)> size_function(const Surface& surface, const SizeSpec& spec) {
+  if (!spec.varies()) return [edge = spec.largest](const Vec3&) { return edge; };
+  return [&surface, spec](const Vec3& p) { return target_size(surface, spec, p); };
 }
 
 /// Surface leaves shallower than `max_depth` whose cell is longer than kAutoSegments times the
@@ -526,7 +506,8 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   ps.adaptive = true;
   ps.cancel = settings.cancel;
   ps.surface_depth = initial_depth(root, box, settings);
-  const std::function<double(const Vec3&)> size_at = size_function(surface, box, settings);
+  const SizeSpec sizes = size_spec(settings, box);
+  const std::function<double(const Vec3&)> size_at = size_function(surface, sizes);
   for (int round = 0;; ++round) {
     check_cancel(settings);
     // Cells whose topology is in doubt (two sheets, an ambiguous face) are split by the partition down to
@@ -534,7 +515,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     // are refined at most refinement_levels below the starting depth (a size field: down to max_depth).
     ps.max_depth = std::max(settings.max_depth, ps.surface_depth);
     const int patch_depth = std::max(
-        ps.surface_depth, sized_by_field(settings)
+        ps.surface_depth, sizes.varies()
                               ? settings.max_depth
                               : std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels));
     const Partition partition = build_partition(surface, box, ps);
@@ -553,7 +534,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     }
     // Sides get their own segment counts unless the resolution is fixed.
     const int resolution = settings.resolution;
-    if (sized_by_field(settings) && round < kMaxRounds) {
+    if (sizes.varies() && round < kMaxRounds) {
       // The size field asks for cells of at most kAutoSegments local edge lengths.
       std::vector<CellKey> split = leaves_too_large_for(partition, size_at, patch_depth);
       if (!split.empty()) {

@@ -1,7 +1,7 @@
 // Uniform and curvature-adapted sizes (see size_field.hpp and remesh.hpp).
 #include "remesh/size_field.hpp"
 
-#include <isopatch/curvature.hpp>
+#include "surface/target_size.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,13 +11,10 @@ namespace isopatch {
 
 double SizeField::raw(const Vec3& p) {
   if (!varies()) return settings_.edge_length;
-  double h = settings_.edge_length;
-  if (settings_.max_error) {
-    ++hessians_;
-    h = std::min(h, size_for_error(max_abs_principal_curvature(surface_, p), *settings_.max_error));
-  }
-  if (settings_.size) h = std::min(h, settings_.size(p));
-  return std::clamp(h, settings_.min_edge_length, settings_.edge_length);
+  if (settings_.max_error) ++hessians_;
+  return target_size(
+      surface_,
+      SizeSpec{settings_.edge_length, settings_.min_edge_length, settings_.max_error, settings_.size}, p);
 }
 
 void SizeField::update(const EditableMesh& mesh) {

@@ -1,0 +1,33 @@
+// Target sizes from Settings (see target_size.hpp).
+#include "surface/target_size.hpp"
+
+#include <isopatch/curvature.hpp>
+#include <isopatch/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace isopatch {
+
+SizeSpec size_spec(const Settings& s, const Box& box) {
+  SizeSpec spec;
+  spec.largest = default_edge_length(s, box);
+  spec.smallest = std::min(spec.largest, box.size().maxCoeff() / 2048.0);
+  spec.max_error = s.max_error;
+  spec.user = s.size_field;
+  return spec;
+}
+
+double target_size(const Surface& surface, const SizeSpec& spec, const Vec3& p) {
+  double h = spec.largest;
+  if (spec.max_error)
+    h = std::min(h, size_for_error(max_abs_principal_curvature(surface, p), *spec.max_error));
+  if (spec.user) {
+    const double u = spec.user(p);
+    if (!(std::isfinite(u) && u > 0.0)) throw InputError("the size field must be positive and finite");
+    h = std::min(h, u);
+  }
+  return std::clamp(h, spec.smallest, spec.largest);
+}
+
+}  // namespace isopatch
