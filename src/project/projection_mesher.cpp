@@ -228,8 +228,12 @@ class PartitionMesher {
   /// The segment count of side i: the smallest resolution of the leaves that share it, so the finer
   /// neighbour keeps its regular template and the coarser one merges boundary vertices.
   int side_segments(std::size_t i) {
+    if (leaf_resolutions_.empty()) leaf_resolutions_.assign(part_.leaves.size(), 0);
     int k = PatchTemplate::kMaxResolution;
-    for (std::size_t l : side_leaves_[i]) k = std::min(k, leaf_resolution(l));
+    for (std::size_t l : side_leaves_[i]) {
+      if (leaf_resolutions_[l] == 0) leaf_resolutions_[l] = leaf_resolution(l);
+      k = std::min(k, leaf_resolutions_[l]);
+    }
     return k;
   }
 
@@ -477,6 +481,7 @@ class PartitionMesher {
   int refinable_depth_;
   std::function<double(const Vec3&)> size_at_;
   std::vector<double> crossing_sizes_;     // target size at each crossing, -1 until asked
+  std::vector<int> leaf_resolutions_;      // per leaf, 0 until asked
   std::vector<int> side_segments_;         // per side, in key order
   std::vector<std::size_t> side_offsets_;  // per side, the mesh id of its first inner point
   std::vector<Side> sides_;
