@@ -19,17 +19,6 @@
 namespace isopatch {
 namespace {
 
-bool segment_on_face(const SegmentKey& s, const FaceId& f) {
-  if (s.axis == f.axis || s.start[f.axis] != f.plane()) return false;
-  for (std::uint32_t a = 0; a < 3; ++a) {
-    if (a == f.axis) continue;
-    const std::uint32_t lo = s.start[a];
-    const std::uint32_t hi = a == s.axis ? lo + s.length : lo;
-    if (lo < f.lower[a] || hi > f.lower[a] + f.size) return false;
-  }
-  return true;
-}
-
 // The face is a face of the cell or a quarter of one.
 bool face_of_cell(const Partition& p, const Leaf& leaf, const FaceId& f) {
   const std::uint32_t step = p.lattice.step(leaf.depth);
@@ -93,8 +82,8 @@ void expect_adaptive_invariants(const Surface& surface, const Partition& p) {
         finest_user[a] = std::max(finest_user[a], leaf.depth);
         const FaceId& face = loop.side_faces[k];
         EXPECT_TRUE(face_of_cell(p, leaf, face));
-        EXPECT_TRUE(segment_on_face(p.crossings[a].segment, face));
-        EXPECT_TRUE(segment_on_face(p.crossings[b].segment, face));
+        EXPECT_TRUE(test::segment_on_face(p.crossings[a].segment, face));
+        EXPECT_TRUE(test::segment_on_face(p.crossings[b].segment, face));
         EXPECT_TRUE(sides.emplace(std::pair{a, b}, std::pair{face, l}).second) << "side used twice";
       }
     }

@@ -14,8 +14,6 @@
 
 namespace isopatch::test {
 
-namespace {
-
 bool segment_on_face(const SegmentKey& s, const FaceId& f) {
   if (s.axis == f.axis || s.start[f.axis] != f.plane()) return false;
   for (std::uint32_t a = 0; a < 3; ++a) {
@@ -26,8 +24,6 @@ bool segment_on_face(const SegmentKey& s, const FaceId& f) {
   }
   return true;
 }
-
-}  // namespace
 
 void expect_partition_invariants(const Surface& surface, const Partition& p) {
   const auto n = static_cast<std::uint32_t>(p.crossings.size());

@@ -19,6 +19,9 @@ namespace isopatch::test {
 /// - Simple leaves have one loop, oriented along grad f (Newell normal).
 void expect_partition_invariants(const Surface& surface, const Partition& partition);
 
+/// Whether the segment lies in the (square) face: on its plane, within its extent.
+bool segment_on_face(const SegmentKey& s, const FaceId& f);
+
 /// Euler characteristic V - E + F of the polygon complex formed by the loops (V crossings, E distinct
 /// sides, F loops): 2 - 2 genus for a closed surface meshed with disk patches.
 long euler_characteristic(const Partition& partition);

@@ -349,7 +349,7 @@ TEST(HardCases, ZeroFunctionGivesUpQuickly) {
       const Outcome o = run(*surface, settings);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       expect_error(o, ErrorKind::NoSurface, "f is identically zero");
-      EXPECT_LT(seconds, 0.5);
+      EXPECT_LT(seconds, 5.0);  // generous (sanitizers, loaded machine): catches the old subdivision
     }
   }
 }
