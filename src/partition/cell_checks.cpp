@@ -13,8 +13,6 @@ bool face_gradients_agree(SampleCache& cache, const Cell& cell, int face) {
   std::array<Vec3, 5> g;
   for (int k = 0; k < 4; ++k) g[k] = cache.gradient(cell.corner_half(cube::kFace[face][k]));
   g[4] = cache.gradient(cell.face_centre_half(face));
-  for (const Vec3& v : g)
-    if (!v.allFinite()) return false;
   return in_plane_gradients_agree(g, cube::kFaceAxis[face]);
 }
 
@@ -27,8 +25,6 @@ bool cell_gradients_within_cone(SampleCache& cache, const Cell& cell, const std:
   for (int f = 0; f < 6; ++f) g.push_back(cache.gradient(cell.face_centre_half(f)));
   for (const Loop& loop : loops)
     for (std::uint32_t c : loop.corners) g.push_back(crossings[c].gradient);
-  for (const Vec3& v : g)
-    if (!v.allFinite()) return false;
   return gradients_within_cone(g, cos_cone);
 }
 

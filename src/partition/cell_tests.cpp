@@ -20,6 +20,9 @@ int sign_changes(double first, std::span<const double> interior, double last) {
 }
 
 bool in_plane_gradients_agree(std::span<const Vec3> gradients, int axis) {
+  // A gradient that is not finite (f not differentiable there) fails the test.
+  for (const Vec3& g : gradients)
+    if (!g.allFinite()) return false;
   auto in_plane = [axis](Vec3 g) {
     g[axis] = 0.0;
     return g;
@@ -37,7 +40,7 @@ bool gradients_within_cone(std::span<const Vec3> gradients, double cos_max) {
   Vec3 mean = Vec3::Zero();
   for (const Vec3& g : gradients) {
     const double norm = g.norm();
-    if (!(norm > 0.0)) return false;
+    if (!(norm > 0.0) || !g.allFinite()) return false;  // zero or not finite: no cone
     mean += g / norm;
   }
   const double mean_norm = mean.norm();

@@ -14,11 +14,12 @@ int sign_changes(double first, std::span<const double> interior, double last);
 
 /// Face test (method.md 4.3.3): project every gradient onto the plane with normal `axis` and require
 /// all pairwise dot products of the projections to be strictly positive, i.e. f restricted to the face
-/// is monotone along some in-plane direction at the samples. False when a projection vanishes.
+/// is monotone along some in-plane direction at the samples. False when a projection vanishes or a
+/// gradient is not finite.
 bool in_plane_gradients_agree(std::span<const Vec3> gradients, int axis);
 
-/// Normal-cone test (method.md 4.3.4): true when every gradient is nonzero and the angle between its
-/// direction and the normalized mean of the unit gradients is at most acos(cos_max).
+/// Normal-cone test (method.md 4.3.4): true when every gradient is finite and nonzero and the angle
+/// between its direction and the normalized mean of the unit gradients is at most acos(cos_max).
 /// \pre cos_max in [0, 1].
 bool gradients_within_cone(std::span<const Vec3> gradients, double cos_max);
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <set>
 #include <vector>
 
@@ -124,6 +125,9 @@ TEST(CellTests, InPlaneGradients) {
   EXPECT_FALSE(in_plane_gradients_agree(agree, 0));  // in the x = const plane (0.2, 5) and (-0.3, -5) oppose
   const std::vector<Vec3> vanishing{Vec3(1, 0, 0), Vec3(0, 0, 3)};
   EXPECT_FALSE(in_plane_gradients_agree(vanishing, 2));
+  // A gradient that is not finite (sqrt at the edge of its domain) fails the test.
+  const std::vector<Vec3> infinite{Vec3(1, 0.2, 5), Vec3(INFINITY, 0.1, 0)};
+  EXPECT_FALSE(in_plane_gradients_agree(infinite, 2));
 }
 
 TEST(CellTests, NormalCone) {
@@ -134,6 +138,8 @@ TEST(CellTests, NormalCone) {
   EXPECT_FALSE(gradients_within_cone(with_zero, 0.0));
   const std::vector<Vec3> opposite{Vec3(1, 0, 0), Vec3(-1, 0, 0)};
   EXPECT_FALSE(gradients_within_cone(opposite, 0.0));
+  const std::vector<Vec3> not_finite{Vec3(1, 0, 0), Vec3(NAN, 0, 0)};
+  EXPECT_FALSE(gradients_within_cone(not_finite, 0.0));
 }
 
 TEST(CellTests, NewellNormalOfASquare) {
