@@ -3,7 +3,8 @@
 /// Surface-bound clean-up of a triangle mesh of f = 0: isotropic remeshing in the manner of Botsch &
 /// Kobbelt 2004 ("A remeshing approach to multiresolution modeling", SGP) restricted to the implicit
 /// surface: long edges are split, short edges collapsed, edges flipped towards valence 6 (4 on the
-/// boundary), vertices relaxed tangentially and every moved or new vertex projected back onto f = 0 by
+/// boundary; greedy flips, then glide chains of energy-neutral flips that move irregular vertex pairs
+/// until they cancel, after Surazhsky & Gotsman 2003), vertices relaxed tangentially and every moved or new vertex projected back onto f = 0 by
 /// Newton steps along grad f, so vertices stay on the surface. A final pass removes the remaining
 /// triangles with a small angle (flip of the longest edge, else collapse of the shortest).
 ///

@@ -11,6 +11,7 @@
 
 #include "remesh/editable_mesh.hpp"
 #include "remesh/size_field.hpp"
+#include "remesh/valence_flips.hpp"
 #include "surface/project_point.hpp"
 #include "surface/sampler.hpp"
 
@@ -22,6 +23,8 @@ namespace {
 constexpr double kMinNormalDot = 0.3;
 /// Triangles below this smallest angle are removed by the final pass (degrees).
 constexpr double kRepairAngle = 20.0;
+/// Smallest angle (degrees) a neutral flip of a glide chain may leave in its two triangles.
+constexpr double kGlideAngle = 15.0;
 /// Edge length thresholds relative to the target size. The projection mesh is regular inside its
 /// patches and its edges already follow the target, so only clear outliers are split or collapsed:
 /// Botsch & Kobbelt's 4/3 and 4/5 rewire most seams and cost valence-6 vertices and curvature accuracy
@@ -54,7 +57,7 @@ class Remesher {
       sizes_.update(mesh_);
       collapse_short_edges();
       sizes_.update(mesh_);
-      flip_towards_valence_six();
+      flip_valences();
       relax();
       sizes_.update(mesh_);
     }
@@ -211,8 +214,6 @@ class Remesher {
     }
   }
 
-  int target_valence(std::uint32_t v) const { return mesh_.locked[v] ? 4 : 6; }
-
   /// Flips e when its two new triangles are valid and `accept` (given the smallest angles of the old
   /// and new pairs) agrees.
   template <class Accept>
@@ -229,23 +230,17 @@ class Remesher {
     return true;
   }
 
-  void flip_towards_valence_six() {
+  /// Valence flips (valence_flips.hpp). A flip that lowers the valence energy may not lower the
+  /// pair's smallest angle below min(old, 20 degrees) unless it stays above 30; a neutral flip of a
+  /// glide chain only has to stay above kGlideAngle, the relaxation that follows evens it out.
+  void flip_valences() {
     check_cancel();
-    for (const auto& [a, b] : mesh_.edges()) {
-      const auto e = mesh_.interior_edge(a, b);
-      if (!e) continue;
-      auto deviation = [&](std::uint32_t v, int change) {
-        const int d = static_cast<int>(mesh_.valence(v)) + change - target_valence(v);
-        return d * d;
-      };
-      const int before = deviation(e->a, 0) + deviation(e->b, 0) + deviation(e->c, 0) + deviation(e->d, 0);
-      const int after = deviation(e->a, -1) + deviation(e->b, -1) + deviation(e->c, 1) + deviation(e->d, 1);
-      if (after >= before) continue;
-      if (try_flip(*e, [](double old_angle, double new_angle) {
-            return new_angle >= std::min(old_angle, kRepairAngle) || new_angle > 30.0;
-          }))
-        ++stats_.flips;
-    }
+    stats_.flips += flip_towards_valence_six(mesh_, [this](const EditableMesh::Edge& e, bool neutral) {
+      if (neutral) return try_flip(e, [](double, double new_angle) { return new_angle >= kGlideAngle; });
+      return try_flip(e, [](double old_angle, double new_angle) {
+        return new_angle >= std::min(old_angle, kRepairAngle) || new_angle > 30.0;
+      });
+    });
   }
 
   /// Tangential relaxation towards the area-weighted centroid of the incident triangles, then back onto

@@ -1,0 +1,92 @@
+// Valence-driven edge flips with glide chains, see valence_flips.hpp.
+#include "remesh/valence_flips.hpp"
+
+#include <utility>
+#include <vector>
+
+namespace isopatch {
+
+int target_valence(const EditableMesh& mesh, std::uint32_t v) { return mesh.locked[v] ? 4 : 6; }
+
+int flip_energy_change(const EditableMesh& mesh, const EditableMesh::Edge& e) {
+  const auto deviation = [&](std::uint32_t v, int change) {
+    const int d = static_cast<int>(mesh.valence(v)) + change - target_valence(mesh, v);
+    return d * d;
+  };
+  const int before = deviation(e.a, 0) + deviation(e.b, 0) + deviation(e.c, 0) + deviation(e.d, 0);
+  const int after = deviation(e.a, -1) + deviation(e.b, -1) + deviation(e.c, 1) + deviation(e.d, 1);
+  return after - before;
+}
+
+namespace {
+
+using VertexPair = std::pair<std::uint32_t, std::uint32_t>;
+
+bool same_edge(const VertexPair& p, std::uint32_t a, std::uint32_t b) {
+  return (p.first == a && p.second == b) || (p.first == b && p.second == a);
+}
+
+class GlideSearch {
+ public:
+  GlideSearch(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits)
+      : mesh_(mesh), flip_(flip), limits_(limits) {}
+
+  /// Flips kept by a chain starting with the neutral flip of a-b (0 when none was found).
+  std::size_t start(std::uint32_t a, std::uint32_t b) {
+    if (!mesh_.alive(a) || !mesh_.alive(b)) return 0;
+    const auto e = mesh_.interior_edge(a, b);
+    if (!e || flip_energy_change(mesh_, *e) != 0) return 0;
+    budget_ = limits_.budget;
+    return chain(*e, limits_.depth);
+  }
+
+ private:
+  /// Flips e (energy neutral), then looks at the edges around its four vertices for a flip that lowers
+  /// the energy, or (depth > 1) another neutral flip to continue from. Undoes e when nothing is found.
+  std::size_t chain(const EditableMesh::Edge& e, int depth) {
+    if (budget_-- <= 0 || !flip_(e, true)) return 0;
+    std::vector<VertexPair> around;
+    for (std::uint32_t v : {e.a, e.b, e.c, e.d})
+      for (std::uint32_t w : mesh_.neighbours(v))
+        if (!same_edge({v, w}, e.c, e.d)) around.push_back({v, w});
+    for (const auto& [v, w] : around) {
+      const auto next = mesh_.interior_edge(v, w);
+      if (next && flip_energy_change(mesh_, *next) < 0 && flip_(*next, false)) return 2;
+    }
+    if (depth > 1) {
+      for (const auto& [v, w] : around) {
+        if (same_edge({v, w}, e.a, e.b)) continue;  // the flip just made, backwards
+        const auto next = mesh_.interior_edge(v, w);
+        if (!next || flip_energy_change(mesh_, *next) != 0) continue;
+        if (const std::size_t kept = chain(*next, depth - 1)) return kept + 1;
+      }
+    }
+    mesh_.flip(*mesh_.interior_edge(e.c, e.d));  // back to a-b: the flip of c-d restores both triangles
+    return 0;
+  }
+
+  EditableMesh& mesh_;
+  const FlipIfValid& flip_;
+  const GlideLimits& limits_;
+  int budget_ = 0;
+};
+
+}  // namespace
+
+std::size_t flip_towards_valence_six(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits) {
+  std::size_t flips = 0;
+  for (const auto& [a, b] : mesh.edges()) {
+    const auto e = mesh.interior_edge(a, b);
+    if (e && flip_energy_change(mesh, *e) < 0 && flip(*e, false)) ++flips;
+  }
+  GlideSearch search(mesh, flip, limits);
+  for (int pass = 0; pass < limits.passes; ++pass) {
+    std::size_t kept = 0;
+    for (const auto& [a, b] : mesh.edges()) kept += search.start(a, b);
+    flips += kept;
+    if (kept == 0) break;
+  }
+  return flips;
+}
+
+}  // namespace isopatch

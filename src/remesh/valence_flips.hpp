@@ -1,0 +1,36 @@
+#pragma once
+// Edge flips that bring vertex valences towards 6 (4 on a locked boundary vertex): greedy flips that
+// lower the valence energy sum (valence - target)^2, then "glide" chains, sequences of energy-neutral
+// flips that walk an irregular vertex pair (a 5-7 dislocation) across the mesh until a flip that
+// lowers the energy appears, where the pair meets another irregular vertex and both disappear
+// (Surazhsky & Gotsman, "Explicit surface remeshing", SGP 2003, section 5, move irregular vertices by
+// flips until they cancel). Chains that find nothing are undone, so the energy never rises.
+
+#include <cstddef>
+#include <functional>
+
+#include "remesh/editable_mesh.hpp"
+
+namespace isopatch {
+
+/// The valence a vertex should have: 4 on a locked (boundary) vertex, 6 inside.
+int target_valence(const EditableMesh& mesh, std::uint32_t v);
+
+/// Change of the valence energy over the four vertices of e when e is flipped (negative: better).
+int flip_energy_change(const EditableMesh& mesh, const EditableMesh::Edge& e);
+
+/// Performs the flip of e when the geometry allows it and returns whether it did. `neutral` is true
+/// for the energy-neutral flips of a glide chain, which may accept worse angles (relaxation follows).
+using FlipIfValid = std::function<bool(const EditableMesh::Edge& e, bool neutral)>;
+
+struct GlideLimits {
+  int depth = 16;    ///< neutral flips per chain before it is abandoned
+  int budget = 200;  ///< flips tried per chain, over all branches
+  int passes = 4;    ///< sweeps over all edges; stops early when a sweep changes nothing
+};
+
+/// One sweep of greedy flips, then glide chains from every edge (at most limits.passes sweeps).
+/// Returns the flips kept. \post the valence energy did not rise.
+std::size_t flip_towards_valence_six(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits = {});
+
+}  // namespace isopatch

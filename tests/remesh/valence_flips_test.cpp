@@ -1,0 +1,162 @@
+// Valence flips with glide chains on a planar grid scrambled by random flips: the chains must lower
+// the valence energy below what greedy flips reach, never raise it, keep the mesh a valid disk, and
+// undo every chain that finds no lowering flip.
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <random>
+#include <vector>
+
+#include "remesh/editable_mesh.hpp"
+#include "remesh/valence_flips.hpp"
+
+namespace isopatch {
+namespace {
+
+/// An n x n grid of unit squares in the plane z = 0, each cut by the same diagonal (valence 6 inside).
+EditableMesh grid(int n) {
+  Mesh m;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) m.positions.push_back({double(i), double(j), 0.0});
+  const auto at = [n](int i, int j) { return static_cast<std::uint32_t>(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return EditableMesh(m, std::vector<Vec3>(m.positions.size(), Vec3(0, 0, 1)));
+}
+
+/// True when the two triangles that flipping e would create are counter-clockwise in the plane with
+/// no angle under `min_degrees`.
+bool flip_keeps_planar_shape(const EditableMesh& m, const EditableMesh::Edge& e, double min_degrees) {
+  const auto good = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    const Vec3 p[3] = {m.positions[a], m.positions[b], m.positions[c]};
+    if ((p[1] - p[0]).cross(p[2] - p[0]).z() <= 0.0) return false;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = p[(k + 1) % 3] - p[k], v = p[(k + 2) % 3] - p[k];
+      if (std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / 3.141592653589793 < min_degrees) return false;
+    }
+    return true;
+  };
+  return !m.adjacent(e.c, e.d) && good(e.a, e.d, e.c) && good(e.b, e.c, e.d);
+}
+
+int valence_energy(const EditableMesh& m) {
+  int energy = 0;
+  for (std::uint32_t v = 0; v < m.vertex_slots(); ++v) {
+    if (!m.alive(v)) continue;
+    const int d = static_cast<int>(m.valence(v)) - target_valence(m, v);
+    energy += d * d;
+  }
+  return energy;
+}
+
+/// The grid with `flips` random valid flips applied (fixed seed).
+EditableMesh scrambled_grid(int n, int flips, unsigned seed) {
+  EditableMesh m = grid(n);
+  std::mt19937 random(seed);
+  int done = 0;
+  for (int attempt = 0; attempt < 100 * flips && done < flips; ++attempt) {
+    const auto edges = m.edges();
+    const auto [a, b] = edges[random() % edges.size()];
+    const auto e = m.interior_edge(a, b);
+    if (e && flip_keeps_planar_shape(m, *e, 15.0)) {
+      m.flip(*e);
+      ++done;
+    }
+  }
+  return m;
+}
+
+std::vector<std::array<std::uint32_t, 3>> canonical_triangles(const EditableMesh& m) {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t) {
+    if (!m.triangle_alive[t]) continue;
+    std::array<std::uint32_t, 3> tri = m.triangles[t];
+    std::rotate(tri.begin(), std::min_element(tri.begin(), tri.end()), tri.end());
+    out.push_back(tri);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+TEST(ValenceFlips, GlideChainsGoBelowWhatGreedyFlipsReach) {
+  int greedy_total = 0, glide_total = 0;
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    EditableMesh greedy = scrambled_grid(16, 60, seed);
+    EditableMesh glide = greedy;
+    const int scrambled = valence_energy(greedy);
+    const auto planar = [](EditableMesh& m) {
+      return [&m](const EditableMesh::Edge& e, bool) {
+        if (!flip_keeps_planar_shape(m, e, 10.0)) return false;
+        m.flip(e);
+        return true;
+      };
+    };
+    flip_towards_valence_six(greedy, planar(greedy), GlideLimits{.passes = 0});
+    flip_towards_valence_six(glide, planar(glide));
+    EXPECT_LE(valence_energy(greedy), scrambled) << "seed " << seed;
+    EXPECT_LE(valence_energy(glide), valence_energy(greedy)) << "seed " << seed;
+    greedy_total += valence_energy(greedy);
+    glide_total += valence_energy(glide);
+
+    const TopologyReport t = analyze_topology(glide.to_mesh());
+    EXPECT_TRUE(t.manifold());
+    EXPECT_TRUE(t.consistently_oriented());
+    EXPECT_EQ(t.euler_characteristic, 1);  // still a disk
+    for (std::uint32_t f = 0; f < glide.triangles.size(); ++f) {
+      const auto& tri = glide.triangles[f];
+      const Vec3 n = (glide.positions[tri[1]] - glide.positions[tri[0]])
+                         .cross(glide.positions[tri[2]] - glide.positions[tri[0]]);
+      EXPECT_GT(n.z(), 0.0) << "folded triangle " << f;
+    }
+  }
+  EXPECT_LT(glide_total, greedy_total);
+}
+
+TEST(ValenceFlips, ChainsWithoutALoweringFlipAreUndone) {
+  EditableMesh m = scrambled_grid(12, 40, 7);
+  // Greedy flips first, so that what is left can only be reached through neutral flips.
+  flip_towards_valence_six(
+      m,
+      [&m](const EditableMesh::Edge& e, bool) {
+        if (!flip_keeps_planar_shape(m, e, 10.0)) return false;
+        m.flip(e);
+        return true;
+      },
+      GlideLimits{.passes = 0});
+  const auto before = canonical_triangles(m);
+  const int energy = valence_energy(m);
+  int neutral_flips = 0;
+  // Neutral flips are allowed, lowering ones refused: every chain must end where it started.
+  const std::size_t kept = flip_towards_valence_six(m, [&](const EditableMesh::Edge& e, bool neutral) {
+    if (!neutral || !flip_keeps_planar_shape(m, e, 10.0)) return false;
+    m.flip(e);
+    ++neutral_flips;
+    return true;
+  });
+  EXPECT_EQ(kept, 0u);
+  EXPECT_GT(neutral_flips, 0);  // chains were tried
+  EXPECT_EQ(valence_energy(m), energy);
+  EXPECT_EQ(canonical_triangles(m), before);
+}
+
+TEST(ValenceFlips, EnergyChangeOfAFlipCountsTheFourVertices) {
+  EditableMesh m = grid(4);
+  // An interior edge of the regular grid: both ends lose one neighbour, both opposite vertices gain
+  // one: 4 x (1)^2 = 4 more.
+  const auto e = m.interior_edge(6, 12);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(flip_energy_change(m, *e), 4);
+  m.flip(*e);
+  const auto back = m.interior_edge(e->c, e->d);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(flip_energy_change(m, *back), -4);
+}
+
+}  // namespace
+}  // namespace isopatch
