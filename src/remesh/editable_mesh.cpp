@@ -64,17 +64,18 @@ std::optional<EditableMesh::Edge> EditableMesh::interior_edge(std::uint32_t a, s
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> EditableMesh::edges() const {
+  // Per vertex a, its larger neighbours b: sorted by (a, b) without sorting the whole list.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> list;
-  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-    if (!triangle_alive[t]) continue;
-    for (int i = 0; i < 3; ++i) {
-      const std::uint32_t a = triangles[t][static_cast<std::size_t>(i)];
-      const std::uint32_t b = triangles[t][static_cast<std::size_t>((i + 1) % 3)];
-      list.emplace_back(std::min(a, b), std::max(a, b));
-    }
+  std::vector<std::uint32_t> larger;
+  for (std::uint32_t a = 0; a < positions.size(); ++a) {
+    larger.clear();
+    for (std::uint32_t t : incident[a])
+      for (std::uint32_t b : triangles[t])
+        if (b > a) larger.push_back(b);
+    std::sort(larger.begin(), larger.end());
+    larger.erase(std::unique(larger.begin(), larger.end()), larger.end());
+    for (std::uint32_t b : larger) list.emplace_back(a, b);
   }
-  std::sort(list.begin(), list.end());
-  list.erase(std::unique(list.begin(), list.end()), list.end());
   return list;
 }
 

@@ -1,6 +1,7 @@
 // Valence-driven edge flips with glide chains, see valence_flips.hpp.
 #include "remesh/valence_flips.hpp"
 
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -71,18 +72,37 @@ class GlideSearch {
   int budget_ = 0;
 };
 
+/// The edges whose flip changes the valence of an irregular vertex: those at it and those of its link
+/// (a neutral flip needs one; with four vertices of target valence a flip costs 4), as (smaller, larger).
+std::vector<VertexPair> edges_near_irregular_vertices(const EditableMesh& mesh) {
+  std::vector<VertexPair> list;
+  for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v) {
+    if (!mesh.alive(v) || static_cast<int>(mesh.valence(v)) == target_valence(mesh, v)) continue;
+    for (std::uint32_t t : mesh.incident[v]) {
+      const auto& tri = mesh.triangles[t];
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t a = tri[static_cast<std::size_t>(i)], b = tri[static_cast<std::size_t>((i + 1) % 3)];
+        list.emplace_back(std::min(a, b), std::max(a, b));
+      }
+    }
+  }
+  std::sort(list.begin(), list.end());
+  list.erase(std::unique(list.begin(), list.end()), list.end());
+  return list;
+}
+
 }  // namespace
 
 std::size_t flip_towards_valence_six(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits) {
   std::size_t flips = 0;
-  for (const auto& [a, b] : mesh.edges()) {
+  for (const auto& [a, b] : edges_near_irregular_vertices(mesh)) {
     const auto e = mesh.interior_edge(a, b);
     if (e && flip_energy_change(mesh, *e) < 0 && flip(*e, false)) ++flips;
   }
   GlideSearch search(mesh, flip, limits);
   for (int pass = 0; pass < limits.passes; ++pass) {
     std::size_t kept = 0;
-    for (const auto& [a, b] : mesh.edges()) kept += search.start(a, b);
+    for (const auto& [a, b] : edges_near_irregular_vertices(mesh)) kept += search.start(a, b);
     flips += kept;
     if (kept == 0) break;
   }

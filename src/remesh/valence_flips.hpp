@@ -26,10 +26,11 @@ using FlipIfValid = std::function<bool(const EditableMesh::Edge& e, bool neutral
 struct GlideLimits {
   int depth = 16;    ///< neutral flips per chain before it is abandoned
   int budget = 200;  ///< flips tried per chain, over all branches
-  int passes = 4;    ///< sweeps over all edges; stops early when a sweep changes nothing
+  int passes = 1;    ///< sweeps of glide chains; stops early when a sweep changes nothing
 };
 
-/// One sweep of greedy flips, then glide chains from every edge (at most limits.passes sweeps).
+/// One sweep of greedy flips, then glide chains from the edges near irregular vertices (at most
+/// limits.passes sweeps; the remesher calls this once per round, between relaxations).
 /// Returns the flips kept. \post the valence energy did not rise.
 std::size_t flip_towards_valence_six(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits = {});
 
