@@ -6,6 +6,7 @@ every mesh with `isopatch analyze` and writes docs/quality.md. Every number come
 import argparse
 import glob
 import json
+import math
 import os
 import re
 import sys
@@ -13,6 +14,7 @@ import sys
 import machine
 import markdown
 import matching
+import max_error
 import runs
 import targets
 from surfaces import PUBLIC_SURFACES
@@ -40,6 +42,14 @@ def longest_side(box: str | None) -> float:
         return max(v[3] - v[0], v[4] - v[1], v[5] - v[2])
     except (AttributeError, ValueError, IndexError):
         return 2.0
+
+
+def diagonal(box: str | None) -> float:
+    try:
+        v = [float(x) for x in box.split(",")]
+        return math.dist(v[:3], v[3:])
+    except (AttributeError, ValueError, IndexError):
+        return 2.0 * math.sqrt(3.0)
 
 
 def describe(run: runs.Run) -> str:
@@ -87,7 +97,11 @@ def measure_surface(spec, args, names, work):
         by_system["cgal"] = c
         groups.append((label, by_system))
     checks = targets.check(spec, groups) if spec.targeted else []
-    return spec, surface, groups, checks
+    adapted = []
+    if spec.targeted and not args.quick:
+        adapted = max_error.measure(args.tool, spec, surface, diagonal(names.get(spec.name, spec.box)), work,
+                                    lambda run, again, tag: finish(run, args.tool, surface, again, tag, work))
+    return (spec, surface, groups, checks), adapted
 
 
 def main() -> int:
@@ -110,22 +124,27 @@ def main() -> int:
     if unknown:
         log(f"unknown surface(s): {', '.join(sorted(unknown))}")
         return 2
-    results = []
+    results, adapted = [], []
     for spec in PUBLIC_SURFACES:
         if wanted and spec.name not in wanted:
             continue
         log(f"--- {spec.name}")
-        results.append(measure_surface(spec, args, names, args.work))
+        measured, adapted_runs = measure_surface(spec, args, names, args.work)
+        results.append(measured)
+        if adapted_runs:
+            adapted.append((spec, adapted_runs))
 
     seconds = runs.now() - start
     header = machine.header(args.repo, args.command, seconds, bool(args.peer), args.quick)
     cgal_note = "" if args.peer else "CGAL was not built, so the checks against CGAL are n/a."
     with open(args.out, "w", encoding="utf-8") as f:
-        f.write(markdown.document(header, results, cgal_note))
+        f.write(markdown.document(header, results, adapted, cgal_note))
     with open(os.path.join(args.work, "results.json"), "w", encoding="utf-8") as f:
         json.dump([{"surface": spec.name, "args": surface,
                     "groups": [{"size": label, "runs": {k: vars(r) for k, r in by.items()}} for label, by in groups],
-                    "targets": checks} for spec, surface, groups, checks in results], f, indent=1)
+                    "targets": checks,
+                    "max_error": [{"size": label, "run": vars(r)} for s2, rs in adapted if s2 is spec for label, r in rs]}
+                   for spec, surface, groups, checks in results], f, indent=1)
     log(f"wrote {args.out} in {seconds / 60:.1f} min")
     return 0
 
