@@ -64,6 +64,7 @@ class Remesher {
     for (int round = 0; round < 3; ++round) {
       if (repair_small_angles() == 0) break;
       sizes_.update(mesh_);
+      flip_valences();  // the repairs' collapses leave irregular vertices behind
       relax();
     }
     repair_small_angles();
