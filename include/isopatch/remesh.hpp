@@ -4,9 +4,10 @@
 /// Kobbelt 2004 ("A remeshing approach to multiresolution modeling", SGP) restricted to the implicit
 /// surface: long edges are split, short edges collapsed, edges flipped towards valence 6 (4 on the
 /// boundary; greedy flips, then glide chains of energy-neutral flips that move irregular vertex pairs
-/// until they cancel, after Surazhsky & Gotsman 2003), vertices relaxed tangentially and every moved or new vertex projected back onto f = 0 by
-/// Newton steps along grad f, so vertices stay on the surface. A final pass removes the remaining
-/// triangles with a small angle (flip of the longest edge, else collapse of the shortest).
+/// until they cancel, after Surazhsky & Gotsman 2003), vertices relaxed tangentially and every moved or new
+/// vertex projected back onto f = 0 by Newton steps along grad f, so vertices stay on the surface. A final
+/// pass removes the remaining triangles with a small angle (flip of the longest edge, else collapse of the
+/// shortest).
 ///
 /// On a mesh from the projection mesher, which is regular inside its patches, the operations act
 /// almost only along patch seams and in tiny corner patches (method.md 15, option 4): see

@@ -7,7 +7,9 @@
 
 namespace isopatch {
 
-int target_valence(const EditableMesh& mesh, std::uint32_t v) { return mesh.locked[v] ? 4 : 6; }
+int target_valence(const EditableMesh& mesh, std::uint32_t v) {
+  return mesh.locked[v] ? 4 : 6;
+}
 
 int flip_energy_change(const EditableMesh& mesh, const EditableMesh::Edge& e) {
   const auto deviation = [&](std::uint32_t v, int change) {
@@ -81,7 +83,8 @@ std::vector<VertexPair> edges_near_irregular_vertices(const EditableMesh& mesh) 
     for (std::uint32_t t : mesh.incident[v]) {
       const auto& tri = mesh.triangles[t];
       for (int i = 0; i < 3; ++i) {
-        const std::uint32_t a = tri[static_cast<std::size_t>(i)], b = tri[static_cast<std::size_t>((i + 1) % 3)];
+        const std::uint32_t a = tri[static_cast<std::size_t>(i)],
+                            b = tri[static_cast<std::size_t>((i + 1) % 3)];
         list.emplace_back(std::min(a, b), std::max(a, b));
       }
     }

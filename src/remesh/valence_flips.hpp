@@ -32,6 +32,7 @@ struct GlideLimits {
 /// One sweep of greedy flips, then glide chains from the edges near irregular vertices (at most
 /// limits.passes sweeps; the remesher calls this once per round, between relaxations).
 /// Returns the flips kept. \post the valence energy did not rise.
-std::size_t flip_towards_valence_six(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits = {});
+std::size_t flip_towards_valence_six(EditableMesh& mesh, const FlipIfValid& flip,
+                                     const GlideLimits& limits = {});
 
 }  // namespace isopatch
