@@ -15,7 +15,9 @@
 ///
 /// Sizes: a uniform target edge length, or a curvature-adapted size field for a chordal error bound
 /// (size_for_error in curvature.hpp), graded so that sizes at neighbouring vertices differ by a bounded
-/// factor. Boundary edges (a surface cut open by its box) and their vertices are kept as they are.
+/// factor. Where the surface is cut open by its box (settings.box), the cut stays on the box: a cut
+/// vertex on one box face slides along the curve where f = 0 meets that face and may be merged into
+/// its neighbour on the cut; those on box edges and corners, and every boundary without a box, stay.
 
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh.hpp>

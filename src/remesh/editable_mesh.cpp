@@ -63,6 +63,28 @@ std::optional<EditableMesh::Edge> EditableMesh::interior_edge(std::uint32_t a, s
   return e;
 }
 
+std::optional<EditableMesh::BoundaryEdge> EditableMesh::boundary_edge(std::uint32_t a,
+                                                                      std::uint32_t b) const {
+  std::optional<BoundaryEdge> found;
+  for (std::uint32_t t : incident[a]) {
+    const Triangle& tri = triangles[t];
+    if (a == b || std::find(tri.begin(), tri.end(), b) == tri.end()) continue;
+    if (found) return std::nullopt;  // a second triangle: not a boundary edge
+    std::uint32_t c = tri[0];
+    for (std::uint32_t v : tri)
+      if (v != a && v != b) c = v;
+    found = BoundaryEdge{a, b, c, t};
+  }
+  return found;
+}
+
+std::vector<std::uint32_t> EditableMesh::boundary_neighbours(std::uint32_t v) const {
+  std::vector<std::uint32_t> list;
+  for (std::uint32_t w : neighbours(v))
+    if (boundary_edge(v, w)) list.push_back(w);
+  return list;
+}
+
 std::vector<std::pair<std::uint32_t, std::uint32_t>> EditableMesh::edges() const {
   // Per vertex a, its larger neighbours b: sorted by (a, b) without sorting the whole list.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> list;
@@ -148,6 +170,16 @@ void EditableMesh::collapse(const Edge& e, const Vec3& p, const Vec3& n) {
   incident[e.a].clear();
   positions[e.b] = p;
   normals[e.b] = n;
+}
+
+void EditableMesh::collapse_boundary(const BoundaryEdge& e) {
+  triangle_alive[e.t] = false;
+  for (std::uint32_t v : triangles[e.t]) detach(v, e.t);
+  for (std::uint32_t t : incident[e.a]) {
+    replace_vertex(t, e.a, e.b);
+    incident[e.b].push_back(t);
+  }
+  incident[e.a].clear();
 }
 
 void EditableMesh::flip(const Edge& e) {

@@ -25,6 +25,14 @@ class EditableMesh {
   };
   /// The edge between a and b when it has exactly two triangles, consistently oriented.
   std::optional<Edge> interior_edge(std::uint32_t a, std::uint32_t b) const;
+  /// A boundary edge a - b: the one triangle t that holds it, and its third vertex c.
+  struct BoundaryEdge {
+    std::uint32_t a = 0, b = 0, c = 0, t = 0;
+  };
+  /// The edge between a and b when exactly one live triangle holds it.
+  std::optional<BoundaryEdge> boundary_edge(std::uint32_t a, std::uint32_t b) const;
+  /// The neighbours w of v whose edge v - w is a boundary edge (two on a manifold boundary curve).
+  std::vector<std::uint32_t> boundary_neighbours(std::uint32_t v) const;
   /// Every undirected edge between live vertices, once, as (smaller, larger).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges() const;
   /// Distinct neighbours of v.
@@ -38,6 +46,10 @@ class EditableMesh {
   std::uint32_t split(const Edge& e, const Vec3& p, const Vec3& n);
   /// Removes e.a, merging it into e.b, which moves to (p, n). \pre the link condition holds.
   void collapse(const Edge& e, const Vec3& p, const Vec3& n);
+  /// Removes e.a, merging it into e.b along their boundary edge: triangle e.t disappears and e.a's other
+  /// triangles take e.b, which keeps its position. \pre the link condition holds (e.a and e.b share
+  /// only the neighbour e.c) and e.a has another triangle than e.t.
+  void collapse_boundary(const BoundaryEdge& e);
   /// Replaces a-b by c-d.
   void flip(const Edge& e);
 

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "remesh/box_boundary.hpp"
 #include "remesh/editable_mesh.hpp"
 #include "remesh/size_field.hpp"
 #include "remesh/valence_flips.hpp"
@@ -51,6 +52,7 @@ class Remesher {
       : f_(surface), mesh_(mesh), settings_(settings), sizes_(surface, settings), tolerance_(tolerance) {}
 
   RemeshStats run() {
+    if (settings_.box) slide_axis_ = sliding_axes(mesh_, *settings_.box);
     sizes_.update(mesh_);
     for (int it = 0; it < settings_.iterations; ++it) {
       split_long_edges();
@@ -158,9 +160,13 @@ class Remesher {
     for (const auto& [key, edge] : work) try_split(edge.first, edge.second);
   }
 
-  /// Collapses a into b (or b into a when a is locked); `max_length` bounds the new edges.
+  /// The axis of the box face along which boundary vertex v may slide, or -1 (box_boundary.hpp).
+  int slide_axis(std::uint32_t v) const { return v < slide_axis_.size() ? slide_axis_[v] : -1; }
+
+  /// Collapses a into b (or b into a when a is locked); `max_length` bounds the new edges. Two locked
+  /// vertices: along their boundary edge (try_collapse_boundary).
   bool try_collapse(std::uint32_t a, std::uint32_t b, double max_length) {
-    if (mesh_.locked[a] && mesh_.locked[b]) return false;
+    if (mesh_.locked[a] && mesh_.locked[b]) return try_collapse_boundary(a, b, max_length);
     if (mesh_.locked[a]) std::swap(a, b);
     const auto e = mesh_.interior_edge(a, b);
     if (!e) return false;
@@ -194,6 +200,28 @@ class Remesher {
         if (!triangle_ok(q[0], q[1], q[2], m[0], m[1], m[2])) return false;
       }
     mesh_.collapse(*e, p, n);
+    ++stats_.collapses;
+    return true;
+  }
+
+  /// Merges a boundary vertex that may slide (a, else b) into its neighbour along their boundary edge,
+  /// on the same box face; the neighbour keeps its position, so the cut stays on the box.
+  bool try_collapse_boundary(std::uint32_t a, std::uint32_t b, double max_length) {
+    if (slide_axis(a) < 0) std::swap(a, b);
+    const int axis = slide_axis(a);
+    if (axis < 0 || mesh_.positions[b][axis] != mesh_.positions[a][axis]) return false;
+    const auto e = mesh_.boundary_edge(a, b);
+    if (!e || mesh_.incident[a].size() < 2 || mesh_.valence(e->c) <= 3) return false;
+    const std::vector<std::uint32_t> na = mesh_.neighbours(a), nb = mesh_.neighbours(b);
+    std::vector<std::uint32_t> common;
+    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+    if (common.size() != 1 || common[0] != e->c) return false;
+    const Vec3& p = mesh_.positions[b];
+    for (std::uint32_t x : na)
+      if (x != b && (mesh_.positions[x] - p).norm() > max_length) return false;
+    for (std::uint32_t t : mesh_.incident[a])
+      if (t != e->t && !triangle_ok_with(t, a, p, mesh_.normals[b])) return false;
+    mesh_.collapse_boundary(*e);
     ++stats_.collapses;
     return true;
   }
@@ -249,7 +277,11 @@ class Remesher {
   void relax() {
     check_cancel();
     for (std::uint32_t v = 0; v < mesh_.vertex_slots(); ++v) {
-      if (!mesh_.alive(v) || mesh_.locked[v]) continue;
+      if (!mesh_.alive(v)) continue;
+      if (mesh_.locked[v]) {
+        if (slide_axis(v) >= 0) relax_along_box_face(v);
+        continue;
+      }
       Vec3 centroid = Vec3::Zero();
       double area = 0.0;
       for (std::uint32_t t : mesh_.incident[v]) {
@@ -284,6 +316,34 @@ class Remesher {
     }
   }
 
+  /// Moves a boundary vertex that may slide towards the midpoint of its two boundary neighbours, then
+  /// onto the curve where f = 0 meets its box face (it stays on that face and off the others).
+  void relax_along_box_face(std::uint32_t v) {
+    const std::vector<std::uint32_t> ends = mesh_.boundary_neighbours(v);
+    if (ends.size() != 2) return;
+    const int axis = slide_axis(v);
+    const Vec3& p = mesh_.positions[v];
+    Vec3 q = 0.5 * (mesh_.positions[ends[0]] + mesh_.positions[ends[1]]);
+    q[axis] = p[axis];
+    Vec3 gradient;
+    if (!project_to_surface_in_plane(f_, q, axis, tolerance_, std::max((q - p).norm(), sizes_.at(v)),
+                                     &gradient) ||
+        !in_box(q) || !(gradient.norm() > 0.0)) {
+      ++stats_.rejected_moves;
+      return;
+    }
+    for (int k = 0; k < 3; ++k)
+      if (k != axis && (q[k] == settings_.box->lo[k] || q[k] == settings_.box->hi[k])) return;
+    const Vec3 n = gradient.normalized();
+    for (std::uint32_t t : mesh_.incident[v])
+      if (!triangle_ok_with(t, v, q, n)) {
+        ++stats_.rejected_moves;
+        return;
+      }
+    mesh_.positions[v] = q;
+    mesh_.normals[v] = n;
+  }
+
   /// Removes triangles whose smallest angle is below kRepairAngle: flip the longest edge when that
   /// raises the smallest angle of the pair, else collapse the shortest edge. Returns the changes made.
   std::size_t repair_small_angles() {
@@ -315,6 +375,7 @@ class Remesher {
     return changes;
   }
 
+  std::vector<int> slide_axis_;  ///< per vertex slot at the start; empty without a box
   Sampler f_;
   EditableMesh& mesh_;
   const RemeshSettings& settings_;

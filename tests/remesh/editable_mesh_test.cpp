@@ -99,5 +99,37 @@ TEST(EditableMesh, BoundaryVerticesAreLockedAndAttributesFollow) {
   EXPECT_EQ((*out.find_attribute("role"))[0], 2.0f);
 }
 
+TEST(EditableMesh, BoundaryCollapseMergesAlongTheCut) {
+  // A 3 x 3 grid of squares in the plane, cut by diagonals (i, j) - (i+1, j+1); vertex (i, j) = 4 j + i.
+  Mesh m;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) m.positions.push_back({double(i), double(j), 0.0});
+  for (std::uint32_t j = 0; j < 3; ++j)
+    for (std::uint32_t i = 0; i < 3; ++i) {
+      const std::uint32_t p = 4 * j + i;
+      m.triangles.push_back({p, p + 1, p + 5});
+      m.triangles.push_back({p, p + 5, p + 4});
+    }
+  EditableMesh e(m, std::vector<Vec3>(16, Vec3(0, 0, 1)));
+  EXPECT_FALSE(e.boundary_edge(1, 5));  // interior edge: two triangles
+  EXPECT_FALSE(e.boundary_edge(0, 6));  // no edge at all
+  const auto edge = e.boundary_edge(1, 0);
+  ASSERT_TRUE(edge);
+  EXPECT_EQ(edge->c, 5u);
+  std::vector<std::uint32_t> ends = e.boundary_neighbours(1);
+  EXPECT_EQ(ends, (std::vector<std::uint32_t>{0, 2}));
+  e.collapse_boundary(*edge);
+  EXPECT_FALSE(e.alive(1));
+  EXPECT_EQ(e.positions[0], Vec3(0, 0, 0));  // the kept end does not move
+  EXPECT_EQ(e.boundary_neighbours(0), (std::vector<std::uint32_t>{2, 4}));
+  const Mesh out = e.to_mesh();
+  EXPECT_EQ(out.vertex_count(), 15u);
+  EXPECT_EQ(out.triangle_count(), 17u);
+  const TopologyReport t = analyze_topology(out);
+  EXPECT_TRUE(t.manifold());
+  EXPECT_TRUE(t.consistently_oriented());
+  EXPECT_EQ(t.euler_characteristic, 1);
+}
+
 }  // namespace
 }  // namespace isopatch

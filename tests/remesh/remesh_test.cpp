@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "mesh_checks.hpp"
 #include "test_surfaces.hpp"
@@ -91,8 +94,7 @@ TEST(Remesh, KeepsTopologyAndVerticesOnTheSurfaceAndRemovesSmallAngles) {
 }
 
 TEST(Remesh, SplitsToTheTargetSizeAndKeepsTheBoxBoundary) {
-  // A plane cut open by its box: boundary vertices stay exactly where they are, the rest is refined to
-  // the target edge length and stays inside the box.
+  // A plane cut open by its box: the mesh is refined to the target edge length and stays inside the box.
   const SurfacePtr plane = make_surface([](auto x, auto y, auto z) { return z - 0.1 * x - 0.05 * y - 0.01; },
                                         Box{Vec3::Constant(-1), Vec3::Constant(1)}, "plane");
   Mesh mesh = projection_only(*plane, 0.25);
@@ -114,6 +116,50 @@ TEST(Remesh, SplitsToTheTargetSizeAndKeepsTheBoxBoundary) {
   const TopologyReport t = analyze_topology(mesh);
   EXPECT_TRUE(t.manifold() && t.consistently_oriented());
   EXPECT_LT(test::max_vertex_distance(*plane, mesh), 1e-12);
+}
+
+/// Vertices on edges with one triangle.
+std::vector<std::uint32_t> boundary_vertices(const Mesh& mesh) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i)
+      ++uses[std::minmax(t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)])];
+  std::set<std::uint32_t> out;
+  for (const auto& [edge, count] : uses)
+    if (count == 1) out.insert({edge.first, edge.second});
+  return {out.begin(), out.end()};
+}
+
+TEST(Remesh, BoundaryOfAnOpenSurfaceSlidesAlongTheBoxFacesWithoutSlivers) {
+  // A saddle cut open by its box: the projection leaves thin triangles where the cut meets patch
+  // corners; the clean-up slides and merges cut vertices along the box faces, so no angle stays under
+  // 20 degrees, and the cut stays on the box and on f = 0.
+  const Box box{Vec3::Constant(-1), Vec3::Constant(1)};
+  const SurfacePtr saddle =
+      make_surface([](auto x, auto y, auto z) { return z - 0.3 * x * y; }, box, "saddle");
+  const Mesh raw = projection_only(*saddle, 2.0 / 64);
+  Settings settings;
+  settings.edge_length = 2.0 / 64;
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*saddle, settings, &stats);
+  EXPECT_LT(test::min_angle_degrees(raw), 20.0);
+  EXPECT_GE(test::min_angle_degrees(mesh), 20.0);
+  const TopologyReport t = analyze_topology(mesh);
+  EXPECT_TRUE(t.manifold() && t.consistently_oriented());
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, 1);  // still a disk
+  EXPECT_LT(test::max_vertex_distance(*saddle, mesh), 1e-9 * box.diagonal());
+  const auto cut = boundary_vertices(mesh);
+  ASSERT_FALSE(cut.empty());
+  int moved = 0;
+  for (std::uint32_t v : cut) {
+    const Vec3& p = mesh.positions[v];
+    EXPECT_TRUE((p.array().abs() == 1.0).any()) << "cut vertex off the box: " << p.transpose();
+    bool in_raw = false;
+    for (const Vec3& q : raw.positions) in_raw = in_raw || q == p;
+    moved += !in_raw;
+  }
+  EXPECT_GT(moved, 0);  // the cut vertices were not all left where the projection put them
 }
 
 }  // namespace
