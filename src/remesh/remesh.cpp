@@ -24,6 +24,9 @@ namespace {
 constexpr double kMinNormalDot = 0.3;
 /// Triangles below this smallest angle are removed by the final pass (degrees).
 constexpr double kRepairAngle = 20.0;
+/// Relaxation-only rounds after the last round that changes connectivity (docs/whole-surface-quality.md:
+/// mean-curvature error 10-45% lower than without, for about a fifth more time).
+constexpr int kFinalRelaxationRounds = 8;
 /// Smallest angle (degrees) a neutral flip of a glide chain may leave in its two triangles.
 constexpr double kGlideAngle = 15.0;
 /// Edge length thresholds relative to the target size. The projection mesh is regular inside its
@@ -69,6 +72,9 @@ class Remesher {
       flip_valences();  // the repairs' collapses leave irregular vertices behind
       relax();
     }
+    // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
+    // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
+    for (int round = 0; round < kFinalRelaxationRounds; ++round) relax();
     repair_small_angles();
     stats_.gradient_evaluations = f_.gradient_count();
     stats_.hessian_evaluations = sizes_.hessian_evaluations();

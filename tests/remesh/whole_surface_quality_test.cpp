@@ -1,7 +1,7 @@
 // Issue 7's targets on whole surfaces through the default pipeline (projection + clean-up), at one
 // size each: closed, manifold, oriented, right genus, no self-intersections, vertices on f = 0, no
 // angle under 20 degrees, at least 90% of interior vertices of valence 6 and (torus) mean-curvature
-// nRMS at most 0.015.
+// nRMS at most 0.015 (a regression bound on the other two, see Case::max_h_nrms).
 #include <isopatch/isopatch.hpp>
 #include <isopatch/metrics.hpp>
 #include <isopatch/topology.hpp>
@@ -20,6 +20,10 @@ struct Case {
   SurfacePtr (*make)();
   double edge_length;
   int genus;
+  /// Mean-curvature nRMS bound: the target on the torus (0.015); on tanglecube and genus2 the target,
+  /// a fifth of CGAL's (about 0.020 and 0.017 at these sizes, docs/quality.md), is not met (0.031 and
+  /// 0.027 measured), so they are held to a regression bound a quarter above what they reach.
+  double max_h_nrms;
 };
 
 SurfacePtr torus() {
@@ -48,15 +52,13 @@ TEST_P(WholeSurfaceQuality, MeetsTheTargets) {
   EXPECT_GE(q.valence.share_6, 0.90);
   EXPECT_GE(q.shape.min_angle.min, 20.0);
   EXPECT_EQ(q.shape.share_below_10, 0.0);
-  if (std::string(c.name) == "torus") {
-    EXPECT_LE(q.accuracy->mean_curvature.nrms, 0.015);
-  }
+  EXPECT_LE(q.accuracy->mean_curvature.nrms, c.max_h_nrms);
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, WholeSurfaceQuality,
-                         ::testing::Values(Case{"torus", &torus, 0.04, 1},
-                                           Case{"tanglecube", &test::tanglecube, 0.12, 5},
-                                           Case{"genus2", &test::genus2, 0.02, 2}),
+                         ::testing::Values(Case{"torus", &torus, 0.04, 1, 0.015},
+                                           Case{"tanglecube", &test::tanglecube, 0.12, 5, 0.04},
+                                           Case{"genus2", &test::genus2, 0.02, 2, 0.034}),
                          [](const ::testing::TestParamInfo<Case>& param) {
                            return std::string(param.param.name);
                          });
