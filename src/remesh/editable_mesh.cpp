@@ -43,23 +43,23 @@ std::optional<EditableMesh::Edge> EditableMesh::interior_edge(std::uint32_t a, s
   Edge e;
   e.a = a;
   e.b = b;
-  int ab = 0, ba = 0, other = 0;
+  int ab = 0, ba = 0;
   for (std::uint32_t t : incident[a]) {
     const Triangle& tri = triangles[t];
-    if (std::find(tri.begin(), tri.end(), b) == tri.end()) continue;
-    if (const auto c = opposite(tri, a, b)) {
-      e.c = *c;
+    const std::size_t i =
+        tri[0] == a ? 0 : (tri[1] == a ? 1 : 2);  // a is in every triangle it is incident to
+    const std::uint32_t next = tri[(i + 1) % 3], previous = tri[(i + 2) % 3];
+    if (next == b) {  // holds a -> b
+      e.c = previous;
       e.t_ab = t;
       ++ab;
-    } else if (const auto d = opposite(tri, b, a)) {
-      e.d = *d;
+    } else if (previous == b) {  // holds b -> a
+      e.d = next;
       e.t_ba = t;
       ++ba;
-    } else {
-      ++other;
     }
   }
-  if (ab != 1 || ba != 1 || other != 0 || e.c == e.d) return std::nullopt;
+  if (ab != 1 || ba != 1 || e.c == e.d) return std::nullopt;
   return e;
 }
 

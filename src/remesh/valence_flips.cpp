@@ -34,34 +34,74 @@ class GlideSearch {
   GlideSearch(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits)
       : mesh_(mesh), flip_(flip), limits_(limits) {}
 
-  /// Flips kept by a chain starting with the neutral flip of a-b (0 when none was found).
+  /// Flips kept by a chain starting with the flip of a-b (0 when none was found).
   std::size_t start(std::uint32_t a, std::uint32_t b) {
     if (!mesh_.alive(a) || !mesh_.alive(b)) return 0;
     const auto e = mesh_.interior_edge(a, b);
-    if (!e || flip_energy_change(mesh_, *e) != 0) return 0;
+    if (!e) return 0;
+    const int change = flip_energy_change(mesh_, *e);
+    if (change < 0 || change > limits_.max_debt) return 0;
     budget_ = limits_.budget;
-    return chain(*e, limits_.depth);
+    return chain(*e, limits_.depth, change);
   }
 
  private:
-  /// Flips e (energy neutral), then looks at the edges around its four vertices for a flip that lowers
-  /// the energy, or (depth > 1) another neutral flip to continue from. Undoes e when nothing is found.
-  std::size_t chain(const EditableMesh::Edge& e, int depth) {
+  /// An edge near the last flip and the energy change of flipping it. Only the vertex pair is kept: an
+  /// undone chain restores the triangles' vertices but may swap the ids of the two triangles it used.
+  struct Candidate {
+    VertexPair edge;
+    int change;
+  };
+
+  /// The interior edges at the four vertices of the flip just made (now c-d), once each, without c-d.
+  /// Read from the triangle fan of each vertex alone: edge v-w is (v, w, c) in one triangle and
+  /// (w, v, d) in another, both incident to v.
+  std::vector<Candidate> candidates_around(const EditableMesh::Edge& e) const {
+    std::vector<Candidate> out;
+    const std::uint32_t quad[4] = {e.a, e.b, e.c, e.d};
+    const auto in_quad = [&](std::uint32_t w) { return std::find(quad, quad + 4, w) != quad + 4; };
+    std::vector<std::uint32_t> next, previous;
+    for (std::uint32_t v : quad) {
+      next.clear();
+      previous.clear();
+      for (std::uint32_t t : mesh_.incident[v]) {
+        const auto& tri = mesh_.triangles[t];
+        const std::size_t i = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
+        next.push_back(tri[(i + 1) % 3]);
+        previous.push_back(tri[(i + 2) % 3]);
+      }
+      for (std::size_t k = 0; k < next.size(); ++k) {
+        const std::uint32_t w = next[k], c = previous[k];
+        if ((in_quad(w) && w < v) || same_edge({v, w}, e.c, e.d)) continue;
+        const auto back = std::find(previous.begin(), previous.end(), w);
+        if (back == previous.end()) continue;  // w -> v in no triangle: a boundary edge
+        const std::uint32_t d = next[static_cast<std::size_t>(back - previous.begin())];
+        if (d == c) continue;
+        out.push_back({{v, w}, flip_energy_change(mesh_, EditableMesh::Edge{v, w, c, d, 0, 0})});
+      }
+    }
+    return out;
+  }
+
+  /// Flips e (its energy change brought the chain's debt to `debt`), then looks at the edges around its
+  /// four vertices for a flip that takes the total below zero, or (depth > 1) one that keeps the debt
+  /// within limits.max_debt to continue from. Undoes e when nothing is found.
+  std::size_t chain(const EditableMesh::Edge& e, int depth, int debt) {
     if (budget_-- <= 0 || !flip_(e, true)) return 0;
-    std::vector<VertexPair> around;
-    for (std::uint32_t v : {e.a, e.b, e.c, e.d})
-      for (std::uint32_t w : mesh_.neighbours(v))
-        if (!same_edge({v, w}, e.c, e.d)) around.push_back({v, w});
-    for (const auto& [v, w] : around) {
-      const auto next = mesh_.interior_edge(v, w);
-      if (next && flip_energy_change(mesh_, *next) < 0 && flip_(*next, false)) return 2;
+    const std::vector<Candidate> around = candidates_around(e);
+    for (const Candidate& next : around) {
+      if (next.change + debt >= 0) continue;
+      if (const auto edge = mesh_.interior_edge(next.edge.first, next.edge.second);
+          edge && flip_(*edge, false))
+        return 2;
     }
     if (depth > 1) {
-      for (const auto& [v, w] : around) {
-        if (same_edge({v, w}, e.a, e.b)) continue;  // the flip just made, backwards
-        const auto next = mesh_.interior_edge(v, w);
-        if (!next || flip_energy_change(mesh_, *next) != 0) continue;
-        if (const std::size_t kept = chain(*next, depth - 1)) return kept + 1;
+      for (const Candidate& next : around) {
+        const int total = next.change + debt;
+        if (total < 0 || total > limits_.max_debt) continue;
+        const auto edge = mesh_.interior_edge(next.edge.first, next.edge.second);
+        if (!edge) continue;
+        if (const std::size_t kept = chain(*edge, depth - 1, total)) return kept + 1;
       }
     }
     mesh_.flip(*mesh_.interior_edge(e.c, e.d));  // back to a-b: the flip of c-d restores both triangles

@@ -4,7 +4,9 @@
 // flips that walk an irregular vertex pair (a 5-7 dislocation) across the mesh until a flip that
 // lowers the energy appears, where the pair meets another irregular vertex and both disappear
 // (Surazhsky & Gotsman, "Explicit surface remeshing", SGP 2003, section 5, move irregular vertices by
-// flips until they cancel). Chains that find nothing are undone, so the energy never rises.
+// flips until they cancel). A chain may also be allowed to borrow: pass through one flip that costs
+// energy (it makes a new pair) as long as it ends below where it started. Chains that find nothing
+// are undone, so the energy never rises.
 
 #include <cstddef>
 #include <functional>
@@ -24,9 +26,12 @@ int flip_energy_change(const EditableMesh& mesh, const EditableMesh::Edge& e);
 using FlipIfValid = std::function<bool(const EditableMesh::Edge& e, bool neutral)>;
 
 struct GlideLimits {
-  int depth = 16;    ///< neutral flips per chain before it is abandoned
+  int depth = 16;    ///< flips per chain before it is abandoned
   int budget = 200;  ///< flips tried per chain, over all branches
   int passes = 1;    ///< sweeps of glide chains; stops early when a sweep changes nothing
+  /// Energy a chain may borrow on its way: 0, neutral flips only; 2, one flip that makes a new
+  /// irregular pair is allowed, so that pairs stuck side by side can be pulled apart and cancelled.
+  int max_debt = 0;
 };
 
 /// One sweep of greedy flips, then glide chains from the edges near irregular vertices (at most

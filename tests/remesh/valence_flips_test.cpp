@@ -1,6 +1,6 @@
 // Valence flips with glide chains on a planar grid scrambled by random flips: the chains must lower
-// the valence energy below what greedy flips reach, never raise it, keep the mesh a valid disk, and
-// undo every chain that finds no lowering flip.
+// the valence energy below what greedy flips reach (and chains that may borrow below neutral ones),
+// never raise it, keep the mesh a valid disk, and undo every chain that finds no lowering flip.
 #include <isopatch/topology.hpp>
 
 #include <gtest/gtest.h>
@@ -84,21 +84,23 @@ std::vector<std::array<std::uint32_t, 3>> canonical_triangles(const EditableMesh
   return out;
 }
 
+/// Flips e in m when it keeps the planar triangles counter-clockwise with no angle under 10 degrees.
+FlipIfValid planar_flip(EditableMesh& m) {
+  return [&m](const EditableMesh::Edge& e, bool) {
+    if (!flip_keeps_planar_shape(m, e, 10.0)) return false;
+    m.flip(e);
+    return true;
+  };
+}
+
 TEST(ValenceFlips, GlideChainsGoBelowWhatGreedyFlipsReach) {
   int greedy_total = 0, glide_total = 0;
   for (unsigned seed = 1; seed <= 5; ++seed) {
     EditableMesh greedy = scrambled_grid(16, 60, seed);
     EditableMesh glide = greedy;
     const int scrambled = valence_energy(greedy);
-    const auto planar = [](EditableMesh& m) {
-      return [&m](const EditableMesh::Edge& e, bool) {
-        if (!flip_keeps_planar_shape(m, e, 10.0)) return false;
-        m.flip(e);
-        return true;
-      };
-    };
-    flip_towards_valence_six(greedy, planar(greedy), GlideLimits{.passes = 0});
-    flip_towards_valence_six(glide, planar(glide));
+    flip_towards_valence_six(greedy, planar_flip(greedy), GlideLimits{.passes = 0});
+    flip_towards_valence_six(glide, planar_flip(glide));
     EXPECT_LE(valence_energy(greedy), scrambled) << "seed " << seed;
     EXPECT_LE(valence_energy(glide), valence_energy(greedy)) << "seed " << seed;
     greedy_total += valence_energy(greedy);
@@ -118,17 +120,30 @@ TEST(ValenceFlips, GlideChainsGoBelowWhatGreedyFlipsReach) {
   EXPECT_LT(glide_total, greedy_total);
 }
 
+TEST(ValenceFlips, ChainsThatMayBorrowGoBelowNeutralChains) {
+  int neutral_total = 0, borrowing_total = 0;
+  for (unsigned seed = 11; seed <= 15; ++seed) {
+    EditableMesh neutral = scrambled_grid(16, 60, seed);
+    // Neutral chains until they find nothing more.
+    for (int round = 0; round < 20; ++round)
+      if (flip_towards_valence_six(neutral, planar_flip(neutral), GlideLimits{.passes = 10}) == 0) break;
+    EditableMesh borrowing = neutral;
+    const int before = valence_energy(neutral);
+    flip_towards_valence_six(borrowing, planar_flip(borrowing), GlideLimits{.max_debt = 2});
+    EXPECT_LE(valence_energy(borrowing), before) << "seed " << seed;  // never above where it started
+    neutral_total += before;
+    borrowing_total += valence_energy(borrowing);
+    const TopologyReport t = analyze_topology(borrowing.to_mesh());
+    EXPECT_TRUE(t.manifold() && t.consistently_oriented());
+    EXPECT_EQ(t.euler_characteristic, 1);
+  }
+  EXPECT_LT(borrowing_total, neutral_total);
+}
+
 TEST(ValenceFlips, ChainsWithoutALoweringFlipAreUndone) {
   EditableMesh m = scrambled_grid(12, 40, 7);
   // Greedy flips first, so that what is left can only be reached through neutral flips.
-  flip_towards_valence_six(
-      m,
-      [&m](const EditableMesh::Edge& e, bool) {
-        if (!flip_keeps_planar_shape(m, e, 10.0)) return false;
-        m.flip(e);
-        return true;
-      },
-      GlideLimits{.passes = 0});
+  flip_towards_valence_six(m, planar_flip(m), GlideLimits{.passes = 0});
   const auto before = canonical_triangles(m);
   const int energy = valence_energy(m);
   int neutral_flips = 0;
