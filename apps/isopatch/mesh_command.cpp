@@ -40,6 +40,7 @@ struct MeshOptions {
   std::string base = "barycentric";
   double max_ray_angle = defaults.max_ray_angle;
   std::optional<int> remesh;
+  int valence_search = Settings{}.valence_search;
   std::uint64_t max_evaluations = 0;
   double time_limit = 0.0;
   std::optional<double> max_error;
@@ -79,6 +80,7 @@ int run_mesh(const MeshOptions& o) {
   settings.refinement_levels = o.refinement_levels;
   settings.max_ray_angle = o.max_ray_angle;
   settings.remesh_iterations = o.remesh;
+  settings.valence_search = o.valence_search;
   settings.max_evaluations = o.max_evaluations;
   settings.time_limit = o.time_limit;
   settings.max_error = o.max_error;
@@ -153,6 +155,10 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--remesh", o->remesh,
                   "Rounds of surface-bound clean-up: split, collapse, flip, relax, re-project "
                   "(default: 6 for projection, 0 for mc; 0: the paper's method alone)");
+  cmd->add_option("--valence-search", o->valence_search,
+                  "Clean-up: flips tried per chain when pulling apart stuck 5-7 vertex pairs at the end "
+                  "(0..10000; 0: skip, faster, slightly fewer vertices of valence 6)")
+      ->capture_default_str();
   cmd->add_option("--max-error", o->max_error,
                   "Curvature-adapted sizes: triangle centroids stay within this distance of f = 0 "
                   "(edges at most --edge-length)");

@@ -37,6 +37,7 @@ double median_edge_length(const Mesh& mesh) {
 RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings& s, int iterations) {
   RemeshSettings r;
   r.iterations = iterations;
+  r.valence_search = s.valence_search;
   r.box = box;
   r.cancel = s.cancel;
   const SizeSpec sizes = size_spec(s, box);
@@ -106,6 +107,9 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   if (settings.remesh_iterations && (*settings.remesh_iterations < 0 || *settings.remesh_iterations > 100))
     throw InputError("remesh iterations must be between 0 and 100, got " +
                      std::to_string(*settings.remesh_iterations));
+  if (settings.valence_search < 0 || settings.valence_search > 10000)
+    throw InputError("the valence search must be between 0 and 10000 flips per chain, got " +
+                     std::to_string(settings.valence_search));
   if (settings.max_error && !(std::isfinite(*settings.max_error) && *settings.max_error > 0.0))
     throw InputError("the maximum error must be a positive number");
   if (!(std::isfinite(settings.time_limit) && settings.time_limit >= 0.0))

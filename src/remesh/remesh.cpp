@@ -27,9 +27,6 @@ constexpr double kRepairAngle = 20.0;
 /// Relaxation-only rounds after the last round that changes connectivity (docs/whole-surface-quality.md:
 /// mean-curvature error 10-45% lower than without, for about a fifth more time).
 constexpr int kFinalRelaxationRounds = 8;
-/// Flips tried per chain in the final sweep whose chains may borrow energy (60 keeps about two thirds
-/// of the valence gained with 200, for about half its time).
-constexpr int kBorrowingChainBudget = 60;
 /// Smallest angle (degrees) a neutral flip of a glide chain may leave in its two triangles.
 constexpr double kGlideAngle = 15.0;
 /// Edge length thresholds relative to the target size. The projection mesh is regular inside its
@@ -82,7 +79,8 @@ class Remesher {
     // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     // One sweep of chains that may pass through one flip that costs energy: pulls apart the 5-7 pairs
     // that neutral chains leave side by side (docs/whole-surface-quality.md).
-    flip_valences(GlideLimits{.budget = kBorrowingChainBudget, .max_debt = 2});
+    if (settings_.valence_search > 0)
+      flip_valences(GlideLimits{.budget = settings_.valence_search, .max_debt = 2});
     for (int round = 0; round < kFinalRelaxationRounds; ++round) relax();
     repair_small_angles();
     stats_.gradient_evaluations = f_.gradient_count();
@@ -412,6 +410,8 @@ void check(const RemeshSettings& s) {
       throw InputError("remesh: the smallest size must be positive and at most the edge length");
   }
   if (!(s.grading > 0.0 && s.grading <= 1.0)) throw InputError("remesh: grading must lie in (0, 1]");
+  if (s.valence_search < 0 || s.valence_search > 10000)
+    throw InputError("remesh: the valence search must be between 0 and 10000 flips per chain");
   if (s.iterations < 0 || s.iterations > 100)
     throw InputError("remesh: iterations must be between 0 and 100");
 }

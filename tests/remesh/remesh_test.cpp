@@ -59,6 +59,11 @@ TEST(Remesh, RejectsInvalidSettings) {
   r.max_error = 1e-3;
   r.min_edge_length = 0.0;
   EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
+  r.max_error.reset();
+  r.valence_search = -1;
+  EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
+  r.valence_search = 10001;
+  EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
   Settings settings;
   settings.remesh_iterations = 101;
   EXPECT_THROW(mesh_surface(*s, settings), InputError);
@@ -116,6 +121,25 @@ TEST(Remesh, SplitsToTheTargetSizeAndKeepsTheBoxBoundary) {
   const TopologyReport t = analyze_topology(mesh);
   EXPECT_TRUE(t.manifold() && t.consistently_oriented());
   EXPECT_LT(test::max_vertex_distance(*plane, mesh), 1e-12);
+}
+
+TEST(Remesh, ValenceSearchPullsApartStuckPairs) {
+  // tanglecube at about 2k vertices, where transitions between leaf depths leave many 5-7 pairs: the
+  // final sweep of borrowing chains must leave more vertices of valence 6 than skipping it.
+  const SurfacePtr s = test::tanglecube();
+  Settings settings;
+  settings.edge_length = 0.3;
+  settings.valence_search = 0;
+  const Mesh without = mesh_surface(*s, settings);
+  settings.valence_search = 60;
+  const Mesh with = mesh_surface(*s, settings);
+  const double share_without = analyze_quality(without, s.get()).valence.share_6;
+  const double share_with = analyze_quality(with, s.get()).valence.share_6;
+  EXPECT_GT(share_with, share_without + 0.01);
+  EXPECT_GE(test::min_angle_degrees(with), 20.0);
+  const TopologyReport t = analyze_topology(with);
+  EXPECT_TRUE(t.watertight() && t.manifold() && t.consistently_oriented());
+  EXPECT_EQ(t.genus, 5);
 }
 
 /// Vertices on edges with one triangle.
