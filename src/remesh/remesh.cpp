@@ -75,12 +75,12 @@ class Remesher {
       flip_valences();  // the repairs' collapses leave irregular vertices behind
       relax();
     }
-    // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
-    // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     // One sweep of chains that may pass through one flip that costs energy: pulls apart the 5-7 pairs
     // that neutral chains leave side by side (docs/whole-surface-quality.md).
     if (settings_.valence_search > 0)
       flip_valences(GlideLimits{.budget = settings_.valence_search, .max_debt = 2});
+    // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
+    // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     for (int round = 0; round < kFinalRelaxationRounds; ++round) relax();
     repair_small_angles();
     stats_.gradient_evaluations = f_.gradient_count();
@@ -344,7 +344,7 @@ class Remesher {
     Vec3 gradient;
     if (!project_to_surface_in_plane(f_, q, axis, tolerance_, std::max((q - p).norm(), sizes_.at(v)),
                                      &gradient) ||
-        !in_box(q) || !(gradient.norm() > 0.0)) {
+        !in_box(q)) {
       ++stats_.rejected_moves;
       return;
     }
