@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Quick start, command 2: install what is missing, build with warnings as errors, run the whole test
 # suite; then build again with the address and undefined-behaviour sanitizers and run it once more
-# (without the installed-package test and the heaviest geometric sweep, label "adaptive").
+# (without the installed-package test and the heavy whole-surface sweeps, labels "adaptive" and
+# "validation": they run in the first pass, and under the sanitizers the unit and robustness tests
+# exercise the same code on smaller meshes).
 # Set ISOPATCH_SKIP_SANITIZERS=1 to skip the second pass when iterating locally.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,7 +19,7 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
         -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=OFF -DISOPATCH_SANITIZE=address,undefined >/dev/null
   cmake --build build-sanitize -j"$jobs"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive"
+    ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive|validation"
 fi
 # Fuzz targets (fuzz/, libFuzzer with clang++, ASan + UBSan): every committed corpus input (including
 # the regressions the fuzzers found) and then a seeded search of up to a minute per target, so a run

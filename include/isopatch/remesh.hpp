@@ -50,7 +50,7 @@ struct RemeshSettings {
   /// Flips tried per chain in the final sweep whose chains may borrow energy to pull apart the 5-7
   /// pairs left side by side (docs/whole-surface-quality.md), 0..10000; 0 skips that sweep (about
   /// half the clean-up time at 10-20k vertices, 1-3 points less valence 6).
-  int valence_search = 60;
+  int valence_search = 30;
   /// Rounds of split / collapse / flip / relax, 0..100; 0 leaves the mesh unchanged.
   int iterations = 4;
   /// Vertices never leave this box (moves that would are skipped). Empty: no constraint.

@@ -92,7 +92,7 @@ struct Settings {
   std::optional<int> remesh_iterations;
   /// Clean-up: flips tried per chain in the final sweep that pulls apart stuck 5-7 vertex pairs,
   /// 0..10000 (RemeshSettings::valence_search); 0 skips it: faster, 1-3 points less valence 6.
-  int valence_search = 60;
+  int valence_search = 30;
   /// When set: a curvature-adapted size field keeps the distance of triangle centroids from f = 0 below
   /// this bound (edge lengths sqrt(3 eps / kappa_max), at most edge_length, graded); the projection
   /// octree refines where the field asks for smaller cells. Must be > 0.
