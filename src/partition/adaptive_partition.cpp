@@ -30,8 +30,6 @@ namespace isopatch {
 
 namespace {
 
-constexpr double kRootTolerance = 1e-13;  // as in build_partition.cpp
-constexpr int kRootIterations = 100;
 constexpr std::size_t kMaxLoopSize = 12;  // the patch templates' limit
 
 struct Analysis {
@@ -412,8 +410,8 @@ bool AdaptiveBuilder::oriented_along_gradient(const Loop& loop) const {
 std::uint32_t AdaptiveBuilder::crossing(const SegmentKey& key) {
   if (const auto index = crossing_index_.find(key)) return *index;
   crossings_.push_back(segment_crossing(sampler_, lattice_, key, cache_.value(twice(key.start)),
-                                        cache_.value(twice(key.end())), kRootTolerance, kRootIterations,
-                                        stats_.root_evaluations));
+                                        cache_.value(twice(key.end())), kSegmentRootTolerance,
+                                        kSegmentRootIterations, stats_.root_evaluations));
   return crossing_index_.insert(key).first;
 }
 

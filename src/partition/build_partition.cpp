@@ -52,8 +52,6 @@ const char* to_string(ComplexReason reason) {
 
 namespace {
 
-constexpr double kRootTolerance = 1e-13;  // on the edge parameter t in [0, 1]
-constexpr int kRootIterations = 100;
 constexpr int kMaxEdgeSamples = 1024;
 
 void validate(const Box& box, const PartitionSettings& s) {
@@ -324,8 +322,9 @@ bool Builder::oriented_along_gradient(const Loop& loop) const {
 // phi(t) = f(A + t (B - A)) on [0, 1], Illinois with bisection safeguard, to 1e-13 in t.
 std::uint32_t Builder::crossing(const SegmentKey& key, double start_value, double end_value) {
   if (const auto index = crossing_index_.find(key)) return *index;
-  crossings_.push_back(segment_crossing(sampler_, lattice_, key, start_value, end_value, kRootTolerance,
-                                        kRootIterations, stats_.root_evaluations));
+  crossings_.push_back(segment_crossing(sampler_, lattice_, key, start_value, end_value,
+                                        kSegmentRootTolerance, kSegmentRootIterations,
+                                        stats_.root_evaluations));
   return crossing_index_.insert(key).first;
 }
 

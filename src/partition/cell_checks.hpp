@@ -27,6 +27,11 @@ bool cell_gradients_within_cone(SampleCache& cache, const Cell& cell, const std:
 /// corners (loops are oriented by the signs already; this asks whether the geometry agrees).
 bool loop_oriented_along_gradient(const Loop& loop, const std::vector<Crossing>& crossings);
 
+/// Root finding on a lattice segment, shared by both builders: tolerance on the edge parameter t in
+/// [0, 1], and the iteration cap.
+inline constexpr double kSegmentRootTolerance = 1e-13;
+inline constexpr int kSegmentRootIterations = 100;
+
 /// The crossing on segment `key` (method.md 5.1), from its negative end A: phi(t) = f(A + t (B - A))
 /// on [0, 1] by the shared bracketed root finder to `tolerance` in t. `fa`, `fb`: f at key.start and
 /// key.end() (opposite signs). Root evaluations are added to `root_evaluations`.

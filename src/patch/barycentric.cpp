@@ -20,14 +20,6 @@
 #include <cassert>
 
 namespace isopatch {
-namespace {
-
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
-}  // namespace
-
 void barycentric_coordinates(const Domain& domain, const Vec2& x, CoordinateKind kind,
                              std::span<double> lambda) {
   const int n = domain.sides();

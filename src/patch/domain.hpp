@@ -18,6 +18,12 @@ namespace isopatch {
 
 using Vec2 = Eigen::Vector2d;  ///< a point of a 2D parameter domain
 
+/// The z component of the cross product of two plane vectors (twice the signed area of the triangle
+/// they span; positive when b is counter-clockwise from a).
+inline double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
 /// The regular n-gon: V_k = (cos(2 pi k/n), sin(2 pi k/n)) on the unit circle, except for n = 4, which
 /// is the axis-aligned square V_0 = (1,1), V_1 = (-1,1), V_2 = (-1,-1), V_3 = (1,-1) (on it, Wachspress
 /// coordinates are exactly bilinear). Vertices are counter-clockwise around the origin.

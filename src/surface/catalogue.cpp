@@ -10,8 +10,6 @@
 namespace isopatch {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 Box box(double x0, double y0, double z0, double x1, double y1, double z1) {
   return Box{Vec3(x0, y0, z0), Vec3(x1, y1, z1)};
 }
@@ -36,7 +34,9 @@ const std::array<CatalogueEntry, 11>& entries() {
        "Chmutov surface of degree 6 (Chebyshev polynomials)", box(-1.1, -1.1, -1.1, 1.1, 1.1, 1.1), 28, 1,
        true, true},
       {"gyroid", "sin(x)*cos(y) + sin(y)*cos(z) + sin(z)*cos(x)", "gyroid, clipped by its box (open)",
-       box(-kPi, -kPi, -kPi, kPi, kPi, kPi), -1, 1, false, true},
+       box(-std::numbers::pi, -std::numbers::pi, -std::numbers::pi, std::numbers::pi, std::numbers::pi,
+           std::numbers::pi),
+       -1, 1, false, true},
       {"blobby",
        "0.5 - exp(-4*((x + 0.5)^2 + y^2 + z^2)) - exp(-4*((x - 0.5)^2 + y^2 + z^2))"
        " - exp(-6*(x^2 + (y - 0.6)^2 + (z - 0.3)^2))",

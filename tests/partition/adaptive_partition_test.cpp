@@ -128,7 +128,7 @@ std::uint64_t leaves_with_flat_corners(const Partition& p) {
   return count;
 }
 
-struct Case {
+struct AdaptiveCase {
   std::string name;
   SurfacePtr surface;
   long euler;
@@ -136,11 +136,11 @@ struct Case {
 };
 
 TEST(AdaptivePartition, InvariantsWithForcedSplits) {
-  const std::vector<Case> cases = {{"sphere", test::sphere(), 2, 4},
-                                   {"torus", test::torus(), 0, 4},
-                                   {"tanglecube", test::tanglecube(), -8, 4},
-                                   {"genus2", test::genus2(), -2, 5}};
-  for (const Case& c : cases) {
+  const std::vector<AdaptiveCase> cases = {{"sphere", test::sphere(), 2, 4},
+                                           {"torus", test::torus(), 0, 4},
+                                           {"tanglecube", test::tanglecube(), -8, 4},
+                                           {"genus2", test::genus2(), -2, 5}};
+  for (const AdaptiveCase& c : cases) {
     SCOPED_TRACE(c.name);
     PartitionSettings settings;
     settings.surface_depth = c.depth;
@@ -294,11 +294,11 @@ namespace {
 
 // Coarse starts (topology splits and max_depth leaves with ambiguous faces) and deep forced cells.
 TEST(AdaptivePartition, InvariantsFromCoarseStarts) {
-  const std::vector<Case> cases = {{"sphere", test::sphere(0.7, Vec3(0.1, -0.05, 0.2)), 2, 0},
-                                   {"torus", test::torus(), 0, 0},
-                                   {"tanglecube", test::tanglecube(), -8, 0},
-                                   {"genus2", test::genus2(), -2, 0}};
-  for (const Case& c : cases) {
+  const std::vector<AdaptiveCase> cases = {{"sphere", test::sphere(0.7, Vec3(0.1, -0.05, 0.2)), 2, 0},
+                                           {"torus", test::torus(), 0, 0},
+                                           {"tanglecube", test::tanglecube(), -8, 0},
+                                           {"genus2", test::genus2(), -2, 0}};
+  for (const AdaptiveCase& c : cases) {
     for (const auto& [s, max] : {std::pair{2, 5}, std::pair{3, 5}, std::pair{3, 6}}) {
       SCOPED_TRACE(c.name + " " + std::to_string(s) + ".." + std::to_string(max));
       PartitionSettings settings;

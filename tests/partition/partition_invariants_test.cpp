@@ -12,14 +12,14 @@
 namespace isopatch {
 namespace {
 
-struct Case {
+struct InvariantCase {
   std::string name;
   SurfacePtr surface;
   long euler;             // 2 - 2 genus
   int resolved_from = 4;  // the depth from which the loops capture the topology
 };
 
-std::vector<Case> cases() {
+std::vector<InvariantCase> cases() {
   return {{"sphere", test::sphere(), 2},
           {"torus", test::torus(), 0},
           {"tanglecube", test::tanglecube(), -8},
@@ -40,7 +40,7 @@ void print(const std::string& name, int depth, const Partition& p) {
 }
 
 TEST(Partition, InvariantsOnBenchmarkSurfaces) {
-  for (const Case& c : cases()) {
+  for (const InvariantCase& c : cases()) {
     for (int depth : {4, 5}) {
       SCOPED_TRACE(c.name + " depth " + std::to_string(depth));
       PartitionSettings settings;

@@ -13,10 +13,6 @@ namespace {
 
 constexpr CoordinateKind kKinds[] = {CoordinateKind::Wachspress, CoordinateKind::MeanValue};
 
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 std::vector<double> coordinates(const Domain& domain, const Vec2& x, CoordinateKind kind) {
   std::vector<double> lambda(static_cast<std::size_t>(domain.sides()), -99.0);
   barycentric_coordinates(domain, x, kind, lambda);

@@ -17,7 +17,7 @@
 namespace isopatch {
 namespace {
 
-constexpr CoordinateKind kKinds[] = {CoordinateKind::Wachspress, CoordinateKind::MeanValue};
+constexpr CoordinateKind kCoonsKinds[] = {CoordinateKind::Wachspress, CoordinateKind::MeanValue};
 
 Vec3 random_point(std::mt19937& rng) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -77,7 +77,7 @@ TEST(CoonsPatch, InterpolatesRandomBoundaryCurves) {
     const std::vector<PolylineCurve> curves = random_loop(n, rng);
     const CoonsPatch patch(curves);
     const Domain domain(n);
-    for (CoordinateKind kind : kKinds)
+    for (CoordinateKind kind : kCoonsKinds)
       for (int k = 0; k < n; ++k)
         for (int j = 0; j <= 20; ++j) {
           const double t = j / 20.0;
@@ -122,7 +122,7 @@ TEST(CoonsPatch, RibbonWeightsArePartitionOfUnity) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int n = 3; n <= 12; ++n) {
     const Domain domain(n);
-    for (CoordinateKind kind : kKinds)
+    for (CoordinateKind kind : kCoonsKinds)
       for (int trial = 0; trial < 50; ++trial) {
         const int k = static_cast<int>(rng() % static_cast<unsigned>(n));
         double s = unit(rng), t = unit(rng);

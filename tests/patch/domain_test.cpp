@@ -9,10 +9,6 @@
 namespace isopatch {
 namespace {
 
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 TEST(Domain, RejectsSideCountsOutsideThreeToTwelve) {
   for (int n : {-1, 0, 1, 2, 13, 100}) EXPECT_THROW(Domain{n}, InputError) << n;
   for (int n = 3; n <= 12; ++n) EXPECT_EQ(Domain(n).sides(), n);

@@ -18,10 +18,6 @@ namespace {
 
 using Kind = VertexTag::Kind;
 
-double cross(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
 std::size_t expected_vertices(int n, int r) {
   if (n == 3) return static_cast<std::size_t>((r + 1) * (r + 2) / 2);
   if (n == 4) return static_cast<std::size_t>((r + 1) * (r + 1));

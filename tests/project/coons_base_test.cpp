@@ -19,11 +19,11 @@
 namespace isopatch {
 namespace {
 
-const Box kCell{Vec3::Zero(), Vec3::Ones()};
+const Box kUnitCell{Vec3::Zero(), Vec3::Ones()};
 
 Mesh mesh_cell(const Surface& s, int resolution, Settings::Base base, MeshStats& stats) {
   Settings p;
-  p.box = kCell;
+  p.box = kUnitCell;
   p.min_depth = p.max_depth = 0;  // the whole box is one cell
   p.resolution = resolution;
   p.vertex_roles = true;
@@ -75,7 +75,7 @@ void expect_valid_disk(const Surface& s, const Mesh& mesh) {
 TEST(CoonsBase, EighthSphereHasEvenBoundaryAndLessSpreadThanBarycentric) {
   // A sphere of radius 0.6 around cell corner 0: a 3-sided patch bent through 90 degrees along each side.
   const auto s =
-      make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 0.36; }, kCell, "corner");
+      make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 0.36; }, kUnitCell, "corner");
   MeshStats coons_stats, bary_stats;
   const Mesh coons = mesh_cell(*s, 12, Settings::Base::Coons, coons_stats);
   const Mesh bary = mesh_cell(*s, 12, Settings::Base::Barycentric, bary_stats);
@@ -126,7 +126,7 @@ TEST(CoonsBase, SphereCapHasEvenBoundaryEdges) {
       [](auto x, auto y, auto z) {
         return (x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) + (z + 0.1) * (z + 0.1) - 0.6;
       },
-      kCell, "cap");
+      kUnitCell, "cap");
   MeshStats coons_stats, bary_stats;
   const Mesh coons = mesh_cell(*s, 10, Settings::Base::Coons, coons_stats);
   const Mesh bary = mesh_cell(*s, 10, Settings::Base::Barycentric, bary_stats);
@@ -149,7 +149,7 @@ TEST(CoonsBase, SixSidedPatchIsAccepted) {
         return x + y + z - 1.5 +
                0.4 * ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5) + (z - 0.5) * (z - 0.5));
       },
-      kCell, "tripod");
+      kUnitCell, "tripod");
   MeshStats stats;
   const Mesh mesh = mesh_cell(*s, 10, Settings::Base::Coons, stats);
   EXPECT_EQ(stats.extra.at("patches_6"), 1.0);

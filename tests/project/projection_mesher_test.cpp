@@ -11,14 +11,14 @@
 namespace isopatch {
 namespace {
 
-struct Case {
+struct MesherCase {
   SurfacePtr surface;
   int genus;
   double edge_length;
   int resolution;
 };
 
-void expect_valid_projection_mesh(const Case& c, Settings::Base base = Settings::Base::Barycentric) {
+void expect_valid_projection_mesh(const MesherCase& c, Settings::Base base = Settings::Base::Barycentric) {
   Settings settings;
   settings.base = base;
   settings.edge_length = c.edge_length;

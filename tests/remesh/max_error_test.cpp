@@ -23,17 +23,17 @@ int leaf_depths(const MeshStats& stats) {
   return depths;
 }
 
-struct Case {
+struct MaxErrorCase {
   const char* name;
   double max_error;
   int genus;
   int min_depths;
 };
 
-class MaxError : public ::testing::TestWithParam<Case> {};
+class MaxError : public ::testing::TestWithParam<MaxErrorCase> {};
 
 TEST_P(MaxError, CentroidsStayWithinTheBoundOnAValidMesh) {
-  const Case c = GetParam();
+  const MaxErrorCase c = GetParam();
   const SurfacePtr s = catalogue_surface(c.name);
   Settings settings;
   settings.max_error = c.max_error;
@@ -52,9 +52,10 @@ TEST_P(MaxError, CentroidsStayWithinTheBoundOnAValidMesh) {
 // Curvature varies on blobby and genus2, so the size field asks for leaves of several depths; the
 // sphere's is constant.
 INSTANTIATE_TEST_SUITE_P(Surfaces, MaxError,
-                         ::testing::Values(Case{"sphere", 1e-3, 0, 1}, Case{"blobby", 1e-3, 0, 3},
-                                           Case{"genus2", 1e-3, 2, 3}),
-                         [](const ::testing::TestParamInfo<Case>& param) {
+                         ::testing::Values(MaxErrorCase{"sphere", 1e-3, 0, 1},
+                                           MaxErrorCase{"blobby", 1e-3, 0, 3},
+                                           MaxErrorCase{"genus2", 1e-3, 2, 3}),
+                         [](const ::testing::TestParamInfo<MaxErrorCase>& param) {
                            return std::string(param.param.name);
                          });
 

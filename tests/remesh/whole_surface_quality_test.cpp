@@ -1,7 +1,7 @@
 // Issue 7's targets on whole surfaces through the default pipeline (projection + clean-up), at one
 // size each: closed, manifold, oriented, right genus, no self-intersections, vertices on f = 0, no
 // angle under 20 degrees, at least 90% of interior vertices of valence 6 and (torus) mean-curvature
-// nRMS at most 0.015 (a regression bound on the other two, see Case::max_h_nrms).
+// nRMS at most 0.015 (a regression bound on the other two, see QualityCase::max_h_nrms).
 #include <isopatch/isopatch.hpp>
 #include <isopatch/metrics.hpp>
 #include <isopatch/topology.hpp>
@@ -15,7 +15,7 @@
 namespace isopatch {
 namespace {
 
-struct Case {
+struct QualityCase {
   const char* name;
   SurfacePtr (*make)();
   double edge_length;
@@ -30,10 +30,10 @@ SurfacePtr torus() {
   return test::torus();
 }
 
-class WholeSurfaceQuality : public ::testing::TestWithParam<Case> {};
+class WholeSurfaceQuality : public ::testing::TestWithParam<QualityCase> {};
 
 TEST_P(WholeSurfaceQuality, MeetsTheTargets) {
-  const Case c = GetParam();
+  const QualityCase c = GetParam();
   const SurfacePtr s = c.make();
   Settings settings;
   settings.edge_length = c.edge_length;
@@ -56,10 +56,10 @@ TEST_P(WholeSurfaceQuality, MeetsTheTargets) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, WholeSurfaceQuality,
-                         ::testing::Values(Case{"torus", &torus, 0.04, 1, 0.015},
-                                           Case{"tanglecube", &test::tanglecube, 0.12, 5, 0.04},
-                                           Case{"genus2", &test::genus2, 0.02, 2, 0.034}),
-                         [](const ::testing::TestParamInfo<Case>& param) {
+                         ::testing::Values(QualityCase{"torus", &torus, 0.04, 1, 0.015},
+                                           QualityCase{"tanglecube", &test::tanglecube, 0.12, 5, 0.04},
+                                           QualityCase{"genus2", &test::genus2, 0.02, 2, 0.034}),
+                         [](const ::testing::TestParamInfo<QualityCase>& param) {
                            return std::string(param.param.name);
                          });
 

@@ -32,16 +32,16 @@
 namespace isopatch {
 namespace {
 
-struct Case {
+struct ValidationCase {
   std::string surface;
   Method method;
 };
 
-void PrintTo(const Case& c, std::ostream* out) {
+void PrintTo(const ValidationCase& c, std::ostream* out) {
   *out << c.surface << " by " << method_name(c.method);
 }
 
-std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+std::string case_name(const ::testing::TestParamInfo<ValidationCase>& info) {
   return info.param.surface + "_" + method_name(info.param.method);
 }
 
@@ -68,8 +68,8 @@ bool is_known_exception(const CatalogueEntry& e, Method method) {
   return !e.smooth;
 }
 
-std::vector<Case> regular_cases() {
-  std::vector<Case> cases;
+std::vector<ValidationCase> regular_cases() {
+  std::vector<ValidationCase> cases;
   for (const CatalogueEntry& e : catalogue())
     for (Method method : {Method::Projection, Method::MarchingCubes})
       if (!is_known_exception(e, method)) cases.push_back({std::string(e.name), method});
@@ -173,7 +173,7 @@ void expect_regular_patch_interiors(const Mesh& mesh) {
   EXPECT_EQ(out_of_range, 0u) << "patch-interior vertices next to the boundary of valence outside 4..6";
 }
 
-class CatalogueValidation : public ::testing::TestWithParam<Case> {};
+class CatalogueValidation : public ::testing::TestWithParam<ValidationCase> {};
 
 TEST_P(CatalogueValidation, MeshesHaveTheCatalogueTopologyAndLieOnTheSurface) {
   const CatalogueEntry& e = *find_in_catalogue(GetParam().surface);
