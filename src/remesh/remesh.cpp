@@ -82,7 +82,9 @@ class Remesher {
     // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
     // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     for (int round = 0; round < kFinalRelaxationRounds; ++round) relax();
-    repair_small_angles();
+    // A repair can make a new small angle next to one it already passed: repeat while it changes things.
+    for (int pass = 0; pass < 3; ++pass)
+      if (repair_small_angles() == 0) break;
     stats_.gradient_evaluations = f_.gradient_count();
     stats_.hessian_evaluations = sizes_.hessian_evaluations();
     return stats_;
@@ -383,9 +385,17 @@ class Remesher {
         ++changes;
         continue;
       }
-      const std::uint32_t c = tri[static_cast<std::size_t>(shortest)];
-      const std::uint32_t d = tri[static_cast<std::size_t>((shortest + 1) % 3)];
-      if (try_collapse(c, d, 2.0 * sizes_.edge(c, d))) ++changes;
+      // Else collapse an edge, the shortest first; the next one when the link condition, a fold or a
+      // fixed cut vertex refuses it.
+      const int middle = 3 - longest - shortest;
+      for (int i : {shortest, middle}) {
+        const std::uint32_t c = tri[static_cast<std::size_t>(i)];
+        const std::uint32_t d = tri[static_cast<std::size_t>((i + 1) % 3)];
+        if (try_collapse(c, d, 2.0 * sizes_.edge(c, d))) {
+          ++changes;
+          break;
+        }
+      }
     }
     stats_.repairs += changes;
     return changes;
