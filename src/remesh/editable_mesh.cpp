@@ -4,6 +4,7 @@
 #include <isopatch/error.hpp>
 
 #include <algorithm>
+#include <iterator>
 #include <map>
 
 namespace isopatch {
@@ -109,6 +110,13 @@ std::vector<std::uint32_t> EditableMesh::neighbours(std::uint32_t v) const {
   std::sort(list.begin(), list.end());
   list.erase(std::unique(list.begin(), list.end()), list.end());
   return list;
+}
+
+std::vector<std::uint32_t> EditableMesh::common_neighbours(std::uint32_t a, std::uint32_t b) const {
+  const std::vector<std::uint32_t> na = neighbours(a), nb = neighbours(b);
+  std::vector<std::uint32_t> common;
+  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+  return common;
 }
 
 bool EditableMesh::adjacent(std::uint32_t a, std::uint32_t b) const {

@@ -35,6 +35,8 @@ class EditableMesh {
   std::vector<std::uint32_t> boundary_neighbours(std::uint32_t v) const;
   /// Every undirected edge between live vertices, once, as (smaller, larger).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges() const;
+  /// Vertices adjacent to both a and b, sorted (the link condition of a collapse counts them).
+  std::vector<std::uint32_t> common_neighbours(std::uint32_t a, std::uint32_t b) const;
   /// Distinct neighbours of v.
   std::vector<std::uint32_t> neighbours(std::uint32_t v) const;
   /// Neighbours of v, counted from its triangles: one more than their number on the boundary (one fan).

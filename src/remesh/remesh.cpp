@@ -186,11 +186,9 @@ class Remesher {
     const auto e = mesh_.interior_edge(a, b);
     if (!e) return false;
     // Link condition: a and b share exactly the neighbours c and d.
-    const std::vector<std::uint32_t> na = mesh_.neighbours(a), nb = mesh_.neighbours(b);
-    std::vector<std::uint32_t> common;
-    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
-    if (common.size() != 2) return false;
+    if (mesh_.common_neighbours(a, b).size() != 2) return false;
     if (mesh_.valence(e->c) <= 3 || mesh_.valence(e->d) <= 3) return false;
+    const std::vector<std::uint32_t> na = mesh_.neighbours(a), nb = mesh_.neighbours(b);
     if (na.size() + nb.size() - 4 > 9) return false;
     Vec3 p = mesh_.positions[b], n = mesh_.normals[b];
     if (!mesh_.locked[b]) {
@@ -200,20 +198,11 @@ class Remesher {
     for (const auto* list : {&na, &nb})
       for (std::uint32_t x : *list)
         if (x != a && x != b && (mesh_.positions[x] - p).norm() > max_length) return false;
+    // Every remaining triangle of a or b gets the merged vertex at (p, n); under the link condition
+    // none holds both.
     for (std::uint32_t v : {a, b})
-      for (std::uint32_t t : mesh_.incident[v]) {
-        if (t == e->t_ab || t == e->t_ba) continue;
-        Triangle tri = mesh_.triangles[t];
-        for (std::uint32_t& w : tri)
-          if (w == a) w = b;
-        Vec3 q[3], m[3];
-        for (int i = 0; i < 3; ++i) {
-          const std::uint32_t w = tri[static_cast<std::size_t>(i)];
-          q[i] = w == b ? p : mesh_.positions[w];
-          m[i] = w == b ? n : mesh_.normals[w];
-        }
-        if (!triangle_ok(q[0], q[1], q[2], m[0], m[1], m[2])) return false;
-      }
+      for (std::uint32_t t : mesh_.incident[v])
+        if (t != e->t_ab && t != e->t_ba && !triangle_ok_with(t, v, p, n)) return false;
     mesh_.collapse(*e, p, n);
     ++stats_.collapses;
     return true;
@@ -227,12 +216,9 @@ class Remesher {
     if (axis < 0 || mesh_.positions[b][axis] != mesh_.positions[a][axis]) return false;
     const auto e = mesh_.boundary_edge(a, b);
     if (!e || mesh_.incident[a].size() < 2 || mesh_.valence(e->c) <= 3) return false;
-    const std::vector<std::uint32_t> na = mesh_.neighbours(a), nb = mesh_.neighbours(b);
-    std::vector<std::uint32_t> common;
-    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
-    if (common.size() != 1 || common[0] != e->c) return false;
+    if (mesh_.common_neighbours(a, b) != std::vector<std::uint32_t>{e->c}) return false;
     const Vec3& p = mesh_.positions[b];
-    for (std::uint32_t x : na)
+    for (std::uint32_t x : mesh_.neighbours(a))
       if (x != b && (mesh_.positions[x] - p).norm() > max_length) return false;
     for (std::uint32_t t : mesh_.incident[a])
       if (t != e->t && !triangle_ok_with(t, a, p, mesh_.normals[b])) return false;
