@@ -41,6 +41,7 @@ struct MeshOptions {
   double max_ray_angle = defaults.max_ray_angle;
   std::optional<int> remesh;
   int valence_search = Settings{}.valence_search;
+  int curvature_sweeps = Settings{}.curvature_sweeps;
   std::uint64_t max_evaluations = 0;
   double time_limit = 0.0;
   std::optional<double> max_error;
@@ -81,6 +82,7 @@ int run_mesh(const MeshOptions& o) {
   settings.max_ray_angle = o.max_ray_angle;
   settings.remesh_iterations = o.remesh;
   settings.valence_search = o.valence_search;
+  settings.curvature_sweeps = o.curvature_sweeps;
   settings.max_evaluations = o.max_evaluations;
   settings.time_limit = o.time_limit;
   settings.max_error = o.max_error;
@@ -158,6 +160,10 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--valence-search", o->valence_search,
                   "Clean-up: flips tried per chain when pulling apart stuck 5-7 vertex pairs at the end "
                   "(0..10000; 0: skip, faster, slightly fewer vertices of valence 6)")
+      ->capture_default_str();
+  cmd->add_option("--curvature-sweeps", o->curvature_sweeps,
+                  "Clean-up: sweeps of tangential vertex moves that make the cotangent Laplacian exact "
+                  "for quadratics at each vertex (0..1000; lower curvature error; 0: skip, faster)")
       ->capture_default_str();
   cmd->add_option("--max-error", o->max_error,
                   "Curvature-adapted sizes: triangle centroids stay within this distance of f = 0 "

@@ -51,6 +51,9 @@ struct RemeshSettings {
   /// pairs left side by side (docs/whole-surface-quality.md), 0..10000; 0 skips that sweep (about
   /// half the clean-up time at 10-20k vertices, 1-3 points less valence 6).
   int valence_search = 30;
+  /// Gauss-Seidel sweeps of tangential moves that make the cotangent Laplacian exact for quadratics
+  /// at every vertex (laplacian_exactness.hpp; lower discrete-curvature error), 0..1000; 0 skips them.
+  int curvature_sweeps = 12;
   /// Rounds of split / collapse / flip / relax, 0..100; 0 leaves the mesh unchanged.
   int iterations = 4;
   /// Vertices never leave this box (moves that would are skipped). Empty: no constraint.
@@ -63,8 +66,9 @@ struct RemeshStats {
   std::size_t splits = 0;
   std::size_t collapses = 0;
   std::size_t flips = 0;
-  std::size_t repairs = 0;         ///< small-angle triangles removed by the final pass
-  std::size_t rejected_moves = 0;  ///< relaxation moves skipped (fold, projection failure, box)
+  std::size_t repairs = 0;          ///< small-angle triangles removed by the final pass
+  std::size_t rejected_moves = 0;   ///< relaxation moves skipped (fold, projection failure, box)
+  std::size_t exactness_moves = 0;  ///< vertex moves kept by the curvature sweeps
   std::uint64_t gradient_evaluations = 0;
   std::uint64_t hessian_evaluations = 0;
 };

@@ -38,6 +38,7 @@ RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings&
   RemeshSettings r;
   r.iterations = iterations;
   r.valence_search = s.valence_search;
+  r.curvature_sweeps = s.curvature_sweeps;
   r.box = box;
   r.cancel = s.cancel;
   const SizeSpec sizes = size_spec(s, box);
@@ -69,6 +70,7 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
   stats->extra["remesh_flips"] = static_cast<double>(r.flips);
   stats->extra["remesh_repairs"] = static_cast<double>(r.repairs);
   stats->extra["remesh_rejected_moves"] = static_cast<double>(r.rejected_moves);
+  stats->extra["remesh_exactness_moves"] = static_cast<double>(r.exactness_moves);
   stats->extra["hessian_evaluations"] = static_cast<double>(r.hessian_evaluations);
 }
 
@@ -110,6 +112,9 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   if (settings.valence_search < 0 || settings.valence_search > 10000)
     throw InputError("the valence search must be between 0 and 10000 flips per chain, got " +
                      std::to_string(settings.valence_search));
+  if (settings.curvature_sweeps < 0 || settings.curvature_sweeps > 1000)
+    throw InputError("the curvature sweeps must be between 0 and 1000, got " +
+                     std::to_string(settings.curvature_sweeps));
   if (settings.max_error && !(std::isfinite(*settings.max_error) && *settings.max_error > 0.0))
     throw InputError("the maximum error must be a positive number");
   if (!(std::isfinite(settings.time_limit) && settings.time_limit >= 0.0))

@@ -11,7 +11,9 @@
 
 #include "remesh/box_boundary.hpp"
 #include "remesh/editable_mesh.hpp"
+#include "remesh/laplacian_exactness.hpp"
 #include "remesh/size_field.hpp"
+#include "remesh/triangle_angle.hpp"
 #include "remesh/valence_flips.hpp"
 #include "surface/project_point.hpp"
 #include "surface/sampler.hpp"
@@ -37,20 +39,6 @@ constexpr double kGlideAngle = 15.0;
 constexpr double kSplitFactor = 2.0;
 constexpr double kErrorSplitFactor = 4.0 / 3.0;
 constexpr double kCollapseFactor = 0.1;
-
-/// The smallest angle of a triangle in degrees: the one opposite its shortest edge.
-double smallest_angle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-  const Vec3 p[3] = {p0, p1, p2};
-  int opposite_shortest = 0;  // vertex i is opposite edge (i+1, i+2)
-  double shortest = INFINITY;
-  for (int i = 0; i < 3; ++i) {
-    const double l = (p[(i + 2) % 3] - p[(i + 1) % 3]).squaredNorm();
-    if (l < shortest) shortest = l, opposite_shortest = i;
-  }
-  const Vec3 u = p[(opposite_shortest + 1) % 3] - p[opposite_shortest];
-  const Vec3 v = p[(opposite_shortest + 2) % 3] - p[opposite_shortest];
-  return std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / std::numbers::pi;
-}
 
 class Remesher {
  public:
@@ -82,6 +70,16 @@ class Remesher {
     // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
     // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     for (int round = 0; round < kFinalRelaxationRounds; ++round) relax();
+    if (settings_.curvature_sweeps > 0) {
+      check_cancel();
+      const ExactnessMoveRules rules{
+          .project = [this](Vec3& p, Vec3& n, double max_step) { return project(p, n, max_step); },
+          .triangle_valid = [this](std::uint32_t t, std::uint32_t v, const Vec3& p,
+                                   const Vec3& n) { return triangle_ok_with(t, v, p, n); },
+          .size = [this](std::uint32_t v) { return sizes_.at(v); },
+          .angle_floor = kRepairAngle};
+      stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
+    }
     // A repair can make a new small angle next to one it already passed: repeat while it changes things.
     for (int pass = 0; pass < 3; ++pass)
       if (repair_small_angles() == 0) break;
@@ -408,6 +406,8 @@ void check(const RemeshSettings& s) {
   if (!(s.grading > 0.0 && s.grading <= 1.0)) throw InputError("remesh: grading must lie in (0, 1]");
   if (s.valence_search < 0 || s.valence_search > 10000)
     throw InputError("remesh: the valence search must be between 0 and 10000 flips per chain");
+  if (s.curvature_sweeps < 0 || s.curvature_sweeps > 1000)
+    throw InputError("remesh: the curvature sweeps must be between 0 and 1000");
   if (s.iterations < 0 || s.iterations > 100)
     throw InputError("remesh: iterations must be between 0 and 100");
 }

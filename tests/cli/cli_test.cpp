@@ -72,6 +72,8 @@ TEST(Cli, BadInputGivesOneLineAndDistinctExitCode) {
       {"mesh torus --method mc --grid 0" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --valence-search -1" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --valence-search 20000" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --curvature-sweeps -1" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --curvature-sweeps 1001" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --method mc -o /nonexistent/folder/m.ply", ErrorKind::Io},
       {"mesh torus --method mc -o " + (dir / "m.xyz").string(), ErrorKind::Io},
       {"mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Parse},

@@ -1,0 +1,265 @@
+// Tangential moves towards a cotangent Laplacian exact for quadratics, see laplacian_exactness.hpp.
+#include "remesh/laplacian_exactness.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "remesh/triangle_angle.hpp"
+
+namespace isopatch {
+namespace {
+
+/// A vertex's tangent frame.
+struct Frame {
+  Vec3 e1, e2;
+  explicit Frame(const Vec3& normal) : e1(normal.unitOrthogonal()), e2(normal.cross(e1)) {}
+  Frame() = default;
+};
+
+/// What one triangle adds at one corner: the cotangent-weighted second moment of the corner's two
+/// edges in the corner's tangent frame (m11, m12, m22) and the corner's mixed Voronoi area.
+struct MomentSums {
+  double m11 = 0.0, m12 = 0.0, m22 = 0.0, area = 0.0;
+  MomentSums& operator+=(const MomentSums& o) {
+    m11 += o.m11, m12 += o.m12, m22 += o.m22, area += o.area;
+    return *this;
+  }
+  MomentSums& operator-=(const MomentSums& o) {
+    m11 -= o.m11, m12 -= o.m12, m22 -= o.m22, area -= o.area;
+    return *this;
+  }
+};
+
+/// The sums of triangle (x0, x1, x2) at each of its corners, corner k in frame *frames[k] (null: that
+/// corner is not needed). False for a degenerate triangle. The mixed area follows Meyer et al. (2003)
+/// exactly as the curvature analysis computes it.
+bool triangle_sums(const std::array<const Vec3*, 3>& x, const std::array<const Frame*, 3>& frames,
+                   std::array<MomentSums, 3>& out) {
+  const Vec3 edge[3] = {*x[2] - *x[1], *x[0] - *x[2], *x[1] - *x[0]};  // edge[k] is opposite corner k
+  const double twice_area = edge[2].cross(-edge[1]).norm();
+  if (!(twice_area > 0.0)) return false;
+  double cot[3];
+  for (int k = 0; k < 3; ++k) cot[k] = -edge[(k + 1) % 3].dot(edge[(k + 2) % 3]) / twice_area;
+  const int obtuse = cot[0] < 0.0 ? 0 : cot[1] < 0.0 ? 1 : cot[2] < 0.0 ? 2 : -1;
+  for (int k = 0; k < 3; ++k) {
+    if (!frames[static_cast<std::size_t>(k)]) continue;
+    const Frame& f = *frames[static_cast<std::size_t>(k)];
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    // The corner's edges: to corner i (opposite corner j) and to corner j (opposite corner i).
+    const Vec3& to_i = edge[j];
+    const Vec3 to_j = -edge[i];
+    MomentSums& s = out[static_cast<std::size_t>(k)];
+    const double ai = to_i.dot(f.e1), bi = to_i.dot(f.e2), aj = to_j.dot(f.e1), bj = to_j.dot(f.e2);
+    s.m11 = cot[j] * ai * ai + cot[i] * aj * aj;
+    s.m12 = cot[j] * ai * bi + cot[i] * aj * bj;
+    s.m22 = cot[j] * bi * bi + cot[i] * bj * bj;
+    s.area = obtuse < 0 ? (to_i.squaredNorm() * cot[j] + to_j.squaredNorm() * cot[i]) / 8.0
+                        : twice_area / (obtuse == k ? 4.0 : 8.0);
+  }
+  return true;
+}
+
+/// The residual of summed moments (see the header); large when the area is not positive.
+Eigen::Vector3d residual_of(const MomentSums& s) {
+  if (!(s.area > 0.0)) return Eigen::Vector3d::Constant(1e3);
+  const double scale = 1.0 / (4.0 * s.area);
+  return {s.m11 * scale - 1.0, s.m22 * scale - 1.0, std::sqrt(2.0) * s.m12 * scale};
+}
+
+/// Position of vertex w when `moved` sits at p.
+const Vec3& position(const EditableMesh& mesh, std::uint32_t w, std::uint32_t moved, const Vec3& p) {
+  return w == moved ? p : mesh.positions[w];
+}
+
+/// Index of v in triangle t.
+std::size_t corner_of(const Triangle& t, std::uint32_t v) {
+  return t[0] == v ? 0 : t[1] == v ? 1 : 2;
+}
+
+/// Moment sums of v over its triangles in `frame`, `moved` at p; false when one is degenerate.
+bool vertex_sums(const EditableMesh& mesh, std::uint32_t v, const Frame& frame, std::uint32_t moved,
+                 const Vec3& p, MomentSums& sums) {
+  sums = {};
+  std::array<MomentSums, 3> corners;
+  for (std::uint32_t t : mesh.incident[v]) {
+    const Triangle& tri = mesh.triangles[t];
+    std::array<const Frame*, 3> frames{nullptr, nullptr, nullptr};
+    const std::size_t k = corner_of(tri, v);
+    frames[k] = &frame;
+    if (!triangle_sums({&position(mesh, tri[0], moved, p), &position(mesh, tri[1], moved, p),
+                        &position(mesh, tri[2], moved, p)},
+                       frames, corners))
+      return false;
+    sums += corners[k];
+  }
+  return true;
+}
+
+}  // namespace
+
+Eigen::Vector3d quadratic_exactness_residual(const EditableMesh& mesh, std::uint32_t v, std::uint32_t moved,
+                                             const Vec3& p) {
+  MomentSums sums;
+  if (!vertex_sums(mesh, v, Frame(mesh.normals[v]), moved, p, sums)) return Eigen::Vector3d::Constant(1e3);
+  return residual_of(sums);
+}
+
+double laplacian_exactness_energy(const EditableMesh& mesh) {
+  double energy = 0.0;
+  for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v)
+    if (mesh.alive(v) && !mesh.locked[v])
+      energy += quadratic_exactness_residual(mesh, v, v, mesh.positions[v]).squaredNorm();
+  return energy;
+}
+
+namespace {
+
+/// Gauss-Seidel sweeps with the moment sums of every vertex cached: a trial position of u only
+/// recomputes u's triangles, once for all three corners, and adds the change to the cached sums.
+class ExactnessSweeper {
+ public:
+  ExactnessSweeper(EditableMesh& mesh, const ExactnessMoveRules& rules) : mesh_(mesh), rules_(rules) {}
+
+  std::size_t sweep() {
+    refresh();
+    std::size_t kept = 0;
+    for (std::uint32_t u = 0; u < mesh_.vertex_slots(); ++u)
+      if (free(u) && usable_[u] && move(u)) ++kept;
+    return kept;
+  }
+
+ private:
+  bool free(std::uint32_t v) const { return mesh_.alive(v) && !mesh_.locked[v]; }
+
+  /// Frames and sums of every live vertex from scratch (once per sweep: no drift of the updates).
+  void refresh() {
+    const std::size_t n = mesh_.vertex_slots();
+    frame_.resize(n), sums_.resize(n), usable_.assign(n, false);
+    for (std::uint32_t v = 0; v < n; ++v) {
+      if (!mesh_.alive(v)) continue;
+      frame_[v] = Frame(mesh_.normals[v]);
+      usable_[v] = vertex_sums(mesh_, v, frame_[v], v, mesh_.positions[v], sums_[v]);
+    }
+  }
+
+  /// The ring of u (its neighbours and u) with their residuals when u sits at q, stacked into `out`;
+  /// the sums with u at q into ring_sums_. False when a triangle of u degenerates.
+  bool evaluate(std::uint32_t u, const Vec3& q, Eigen::VectorXd& out) {
+    for (std::size_t i = 0; i < ring_.size(); ++i) ring_sums_[i] = sums_[ring_[i]];
+    std::array<MomentSums, 3> now;
+    for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) {
+      const Triangle& tri = mesh_.triangles[mesh_.incident[u][k]];
+      std::array<const Frame*, 3> frames;
+      for (std::size_t c = 0; c < 3; ++c) frames[c] = &frame_[tri[c]];
+      if (!triangle_sums({&position(mesh_, tri[0], u, q), &position(mesh_, tri[1], u, q),
+                          &position(mesh_, tri[2], u, q)},
+                         frames, now))
+        return false;
+      for (std::size_t c = 0; c < 3; ++c) {
+        MomentSums& s = ring_sums_[slot(tri[c])];
+        s -= before_[3 * k + c];
+        s += now[c];
+      }
+    }
+    for (std::size_t i = 0; i < ring_.size(); ++i)
+      out.segment<3>(3 * static_cast<Eigen::Index>(i)) =
+          free(ring_[i]) ? residual_of(ring_sums_[i]) : Eigen::Vector3d::Zero();
+    return true;
+  }
+
+  std::size_t slot(std::uint32_t v) const {
+    return static_cast<std::size_t>(std::find(ring_.begin(), ring_.end(), v) - ring_.begin());
+  }
+
+  bool move(std::uint32_t u) {
+    ring_ = mesh_.neighbours(u);
+    ring_.push_back(u);
+    ring_sums_.resize(ring_.size());
+    // Each triangle of u at its current position, per corner (what a trial position replaces).
+    before_.resize(3 * mesh_.incident[u].size());
+    for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) {
+      const Triangle& tri = mesh_.triangles[mesh_.incident[u][k]];
+      std::array<MomentSums, 3> corners;
+      std::array<const Frame*, 3> frames;
+      for (std::size_t c = 0; c < 3; ++c) frames[c] = &frame_[tri[c]];
+      if (!triangle_sums({&mesh_.positions[tri[0]], &mesh_.positions[tri[1]], &mesh_.positions[tri[2]]},
+                         frames, corners))
+        return false;
+      for (std::size_t c = 0; c < 3; ++c) before_[3 * k + c] = corners[c];
+    }
+    const Eigen::Index rows = 3 * static_cast<Eigen::Index>(ring_.size());
+    r0_.resize(rows), r1_.resize(rows), jacobian_.resize(rows, 2);
+    for (std::size_t i = 0; i < ring_.size(); ++i)
+      r0_.segment<3>(3 * static_cast<Eigen::Index>(i)) =
+          free(ring_[i]) ? residual_of(sums_[ring_[i]]) : Eigen::Vector3d::Zero();
+    const double before = r0_.squaredNorm();
+    const Vec3 p = mesh_.positions[u];
+    const Vec3 n = mesh_.normals[u];
+    const Frame& f = frame_[u];
+    const double h = rules_.size(u);
+    const double delta = 1e-4 * h;
+    for (int k = 0; k < 2; ++k) {
+      if (!evaluate(u, p + delta * (k == 0 ? f.e1 : f.e2), r1_)) return false;
+      jacobian_.col(k) = (r1_ - r0_) / delta;
+    }
+    Eigen::Matrix2d normal = jacobian_.transpose() * jacobian_;
+    normal.diagonal().array() += 1e-9 * normal.trace() + 1e-300;
+    Eigen::Vector2d step = -normal.ldlt().solve(jacobian_.transpose() * r0_);
+    if (!step.allFinite()) return false;
+    if (step.norm() > 0.2 * h) step *= 0.2 * h / step.norm();
+    double floor = rules_.angle_floor;
+    for (std::uint32_t t : mesh_.incident[u]) floor = std::min(floor, angle(t, u, p));
+    for (int halving = 0; halving < 4; ++halving, step *= 0.5) {
+      Vec3 q = p + step[0] * f.e1 + step[1] * f.e2;
+      Vec3 nq = n;
+      if (!rules_.project(q, nq, step.norm() + h)) return false;
+      if (!evaluate(u, q, r1_) || !(r1_.squaredNorm() < before)) continue;
+      bool valid = true;
+      for (std::uint32_t t : mesh_.incident[u])
+        if (!rules_.triangle_valid(t, u, q, nq) || angle(t, u, q) < floor) {
+          valid = false;
+          break;
+        }
+      if (!valid) continue;
+      mesh_.positions[u] = q;
+      mesh_.normals[u] = nq;
+      for (std::size_t i = 0; i < ring_.size(); ++i) sums_[ring_[i]] = ring_sums_[i];
+      // u's own sums move to the tangent plane of its new normal.
+      frame_[u] = Frame(nq);
+      usable_[u] = vertex_sums(mesh_, u, frame_[u], u, q, sums_[u]);
+      return true;
+    }
+    return false;
+  }
+
+  /// Smallest angle of triangle t with vertex u at q.
+  double angle(std::uint32_t t, std::uint32_t u, const Vec3& q) const {
+    const Triangle& tri = mesh_.triangles[t];
+    return smallest_angle(position(mesh_, tri[0], u, q), position(mesh_, tri[1], u, q),
+                          position(mesh_, tri[2], u, q));
+  }
+
+  EditableMesh& mesh_;
+  const ExactnessMoveRules& rules_;
+  std::vector<Frame> frame_;      ///< per vertex slot: tangent frame of its normal
+  std::vector<MomentSums> sums_;  ///< per vertex slot: moment sums in that frame
+  std::vector<bool> usable_;      ///< per vertex slot: no degenerate triangle around it
+  std::vector<std::uint32_t> ring_;
+  std::vector<MomentSums> ring_sums_, before_;
+  Eigen::VectorXd r0_, r1_;
+  Eigen::Matrix<double, Eigen::Dynamic, 2> jacobian_;
+};
+
+}  // namespace
+
+std::size_t improve_laplacian_exactness(EditableMesh& mesh, const ExactnessMoveRules& rules, int sweeps) {
+  ExactnessSweeper sweeper(mesh, rules);
+  std::size_t kept = 0;
+  for (int s = 0; s < sweeps; ++s) kept += sweeper.sweep();
+  return kept;
+}
+
+}  // namespace isopatch

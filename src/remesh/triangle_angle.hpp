@@ -1,0 +1,26 @@
+#pragma once
+// The smallest interior angle of a triangle, shared by the remesher's checks.
+
+#include <isopatch/geometry.hpp>
+
+#include <cmath>
+#include <numbers>
+
+namespace isopatch {
+
+/// The smallest angle of triangle (p0, p1, p2) in degrees: the one opposite its shortest edge.
+/// 0 for a degenerate triangle.
+inline double smallest_angle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const Vec3 p[3] = {p0, p1, p2};
+  int opposite_shortest = 0;  // vertex i is opposite edge (i+1, i+2)
+  double shortest = INFINITY;
+  for (int i = 0; i < 3; ++i) {
+    const double l = (p[(i + 2) % 3] - p[(i + 1) % 3]).squaredNorm();
+    if (l < shortest) shortest = l, opposite_shortest = i;
+  }
+  const Vec3 u = p[(opposite_shortest + 1) % 3] - p[opposite_shortest];
+  const Vec3 v = p[(opposite_shortest + 2) % 3] - p[opposite_shortest];
+  return std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / std::numbers::pi;
+}
+
+}  // namespace isopatch
