@@ -38,25 +38,36 @@ struct MomentSums {
 /// exactly as the curvature analysis computes it.
 bool triangle_sums(const std::array<const Vec3*, 3>& x, const std::array<const Frame*, 3>& frames,
                    std::array<MomentSums, 3>& out) {
-  const Vec3 edge[3] = {*x[2] - *x[1], *x[0] - *x[2], *x[1] - *x[0]};  // edge[k] is opposite corner k
-  const double twice_area = edge[2].cross(-edge[1]).norm();
+  // Plain arithmetic on doubles: this is the inner loop of the sweeps (and Eigen expressions are not
+  // inlined in the sanitizer builds at -O1).
+  double edge[3][3];  // edge[k] is opposite corner k: from corner k+1 to corner k+2
+  for (int k = 0; k < 3; ++k)
+    for (int c = 0; c < 3; ++c) edge[k][c] = (*x[(k + 2) % 3])[c] - (*x[(k + 1) % 3])[c];
+  const auto dot = [](const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  const double* u = edge[2];  // corner 0 -> corner 1
+  const double* w = edge[1];  // corner 2 -> corner 0
+  const double cross[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+  const double twice_area = std::sqrt(dot(cross, cross));
   if (!(twice_area > 0.0)) return false;
-  double cot[3];
-  for (int k = 0; k < 3; ++k) cot[k] = -edge[(k + 1) % 3].dot(edge[(k + 2) % 3]) / twice_area;
+  double cot[3], length2[3];
+  for (int k = 0; k < 3; ++k) {
+    cot[k] = -dot(edge[(k + 1) % 3], edge[(k + 2) % 3]) / twice_area;
+    length2[k] = dot(edge[k], edge[k]);
+  }
   const int obtuse = cot[0] < 0.0 ? 0 : cot[1] < 0.0 ? 1 : cot[2] < 0.0 ? 2 : -1;
   for (int k = 0; k < 3; ++k) {
-    if (!frames[static_cast<std::size_t>(k)]) continue;
-    const Frame& f = *frames[static_cast<std::size_t>(k)];
+    const Frame* f = frames[static_cast<std::size_t>(k)];
+    if (!f) continue;
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    // The corner's edges: to corner i (opposite corner j) and to corner j (opposite corner i).
-    const Vec3& to_i = edge[j];
-    const Vec3 to_j = -edge[i];
+    // The corner's edges: to corner i is edge[j], to corner j is -edge[i] (the sign drops out of the
+    // second moments).
+    const double ai = dot(edge[j], f->e1.data()), bi = dot(edge[j], f->e2.data());
+    const double aj = dot(edge[i], f->e1.data()), bj = dot(edge[i], f->e2.data());
     MomentSums& s = out[static_cast<std::size_t>(k)];
-    const double ai = to_i.dot(f.e1), bi = to_i.dot(f.e2), aj = to_j.dot(f.e1), bj = to_j.dot(f.e2);
     s.m11 = cot[j] * ai * ai + cot[i] * aj * aj;
     s.m12 = cot[j] * ai * bi + cot[i] * aj * bj;
     s.m22 = cot[j] * bi * bi + cot[i] * bj * bj;
-    s.area = obtuse < 0 ? (to_i.squaredNorm() * cot[j] + to_j.squaredNorm() * cot[i]) / 8.0
+    s.area = obtuse < 0 ? (length2[j] * cot[j] + length2[i] * cot[i]) / 8.0
                         : twice_area / (obtuse == k ? 4.0 : 8.0);
   }
   return true;
@@ -117,8 +128,9 @@ double laplacian_exactness_energy(const EditableMesh& mesh) {
 
 namespace {
 
-/// Gauss-Seidel sweeps with the moment sums of every vertex cached: a trial position of u only
-/// recomputes u's triangles, once for all three corners, and adds the change to the cached sums.
+/// Gauss-Seidel sweeps with the moment sums of every vertex and every triangle corner cached: a trial
+/// position of u only recomputes u's triangles, once for all three corners, and adds the change to the
+/// cached sums of u and its neighbours.
 class ExactnessSweeper {
  public:
   ExactnessSweeper(EditableMesh& mesh, const ExactnessMoveRules& rules) : mesh_(mesh), rules_(rules) {}
@@ -134,34 +146,44 @@ class ExactnessSweeper {
  private:
   bool free(std::uint32_t v) const { return mesh_.alive(v) && !mesh_.locked[v]; }
 
-  /// Frames and sums of every live vertex from scratch (once per sweep: no drift of the updates).
+  /// Frames, per-corner sums of every triangle and per-vertex sums from scratch, once per sweep (no
+  /// drift of the updates). A vertex keeps its frame through the sweep even when it moves: all the
+  /// sums of a sweep are taken in the same frames.
   void refresh() {
     const std::size_t n = mesh_.vertex_slots();
-    frame_.resize(n), sums_.resize(n), usable_.assign(n, false);
-    for (std::uint32_t v = 0; v < n; ++v) {
-      if (!mesh_.alive(v)) continue;
-      frame_[v] = Frame(mesh_.normals[v]);
-      usable_[v] = vertex_sums(mesh_, v, frame_[v], v, mesh_.positions[v], sums_[v]);
+    frame_.resize(n), sums_.assign(n, MomentSums{}), usable_.assign(n, true);
+    corner_.resize(mesh_.triangles.size());
+    for (std::uint32_t v = 0; v < n; ++v)
+      if (mesh_.alive(v)) frame_[v] = Frame(mesh_.normals[v]);
+    for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!mesh_.triangle_alive[t]) continue;
+      const Triangle& tri = mesh_.triangles[t];
+      if (!triangle_sums({&mesh_.positions[tri[0]], &mesh_.positions[tri[1]], &mesh_.positions[tri[2]]},
+                         {&frame_[tri[0]], &frame_[tri[1]], &frame_[tri[2]]}, corner_[t])) {
+        for (std::uint32_t v : tri) usable_[v] = false;
+        continue;
+      }
+      for (std::size_t c = 0; c < 3; ++c) sums_[tri[c]] += corner_[t][c];
     }
   }
 
   /// The ring of u (its neighbours and u) with their residuals when u sits at q, stacked into `out`;
-  /// the sums with u at q into ring_sums_. False when a triangle of u degenerates.
+  /// the sums with u at q into ring_sums_, the corner sums of u's triangles into trial_. False when a
+  /// triangle of u degenerates.
   bool evaluate(std::uint32_t u, const Vec3& q, Eigen::VectorXd& out) {
     for (std::size_t i = 0; i < ring_.size(); ++i) ring_sums_[i] = sums_[ring_[i]];
-    std::array<MomentSums, 3> now;
+    trial_.resize(mesh_.incident[u].size());
     for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) {
-      const Triangle& tri = mesh_.triangles[mesh_.incident[u][k]];
-      std::array<const Frame*, 3> frames;
-      for (std::size_t c = 0; c < 3; ++c) frames[c] = &frame_[tri[c]];
+      const std::uint32_t t = mesh_.incident[u][k];
+      const Triangle& tri = mesh_.triangles[t];
       if (!triangle_sums({&position(mesh_, tri[0], u, q), &position(mesh_, tri[1], u, q),
                           &position(mesh_, tri[2], u, q)},
-                         frames, now))
+                         {&frame_[tri[0]], &frame_[tri[1]], &frame_[tri[2]]}, trial_[k]))
         return false;
       for (std::size_t c = 0; c < 3; ++c) {
         MomentSums& s = ring_sums_[slot(tri[c])];
-        s -= before_[3 * k + c];
-        s += now[c];
+        s -= corner_[t][c];
+        s += trial_[k][c];
       }
     }
     for (std::size_t i = 0; i < ring_.size(); ++i)
@@ -178,18 +200,6 @@ class ExactnessSweeper {
     ring_ = mesh_.neighbours(u);
     ring_.push_back(u);
     ring_sums_.resize(ring_.size());
-    // Each triangle of u at its current position, per corner (what a trial position replaces).
-    before_.resize(3 * mesh_.incident[u].size());
-    for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) {
-      const Triangle& tri = mesh_.triangles[mesh_.incident[u][k]];
-      std::array<MomentSums, 3> corners;
-      std::array<const Frame*, 3> frames;
-      for (std::size_t c = 0; c < 3; ++c) frames[c] = &frame_[tri[c]];
-      if (!triangle_sums({&mesh_.positions[tri[0]], &mesh_.positions[tri[1]], &mesh_.positions[tri[2]]},
-                         frames, corners))
-        return false;
-      for (std::size_t c = 0; c < 3; ++c) before_[3 * k + c] = corners[c];
-    }
     const Eigen::Index rows = 3 * static_cast<Eigen::Index>(ring_.size());
     r0_.resize(rows), r1_.resize(rows), jacobian_.resize(rows, 2);
     for (std::size_t i = 0; i < ring_.size(); ++i)
@@ -227,9 +237,7 @@ class ExactnessSweeper {
       mesh_.positions[u] = q;
       mesh_.normals[u] = nq;
       for (std::size_t i = 0; i < ring_.size(); ++i) sums_[ring_[i]] = ring_sums_[i];
-      // u's own sums move to the tangent plane of its new normal.
-      frame_[u] = Frame(nq);
-      usable_[u] = vertex_sums(mesh_, u, frame_[u], u, q, sums_[u]);
+      for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) corner_[mesh_.incident[u][k]] = trial_[k];
       return true;
     }
     return false;
@@ -244,11 +252,13 @@ class ExactnessSweeper {
 
   EditableMesh& mesh_;
   const ExactnessMoveRules& rules_;
-  std::vector<Frame> frame_;      ///< per vertex slot: tangent frame of its normal
+  std::vector<Frame> frame_;      ///< per vertex slot: tangent frame of its normal at the sweep's start
   std::vector<MomentSums> sums_;  ///< per vertex slot: moment sums in that frame
   std::vector<bool> usable_;      ///< per vertex slot: no degenerate triangle around it
+  std::vector<std::array<MomentSums, 3>> corner_;  ///< per triangle slot: the sums at each corner
   std::vector<std::uint32_t> ring_;
-  std::vector<MomentSums> ring_sums_, before_;
+  std::vector<MomentSums> ring_sums_;
+  std::vector<std::array<MomentSums, 3>> trial_;  ///< corner sums of u's triangles at the last trial
   Eigen::VectorXd r0_, r1_;
   Eigen::Matrix<double, Eigen::Dynamic, 2> jacobian_;
 };
