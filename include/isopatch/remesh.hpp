@@ -53,7 +53,7 @@ struct RemeshSettings {
   int valence_search = 30;
   /// Gauss-Seidel sweeps of tangential moves that make the cotangent Laplacian exact for quadratics
   /// at every vertex (laplacian_exactness.hpp; lower discrete-curvature error), 0..1000; 0 skips them.
-  int curvature_sweeps = 12;
+  int curvature_sweeps = 8;
   /// Rounds of split / collapse / flip / relax, 0..100; 0 leaves the mesh unchanged.
   int iterations = 4;
   /// Vertices never leave this box (moves that would are skipped). Empty: no constraint.

@@ -96,7 +96,7 @@ struct Settings {
   /// Clean-up: sweeps of tangential vertex moves that make the cotangent Laplacian exact for quadratic
   /// functions at every vertex, 0..1000 (RemeshSettings::curvature_sweeps): discrete mean-curvature
   /// error 2-3 times lower on 10k-vertex meshes; 0 skips them (faster).
-  int curvature_sweeps = 12;
+  int curvature_sweeps = 8;
   /// When set: a curvature-adapted size field keeps the distance of triangle centroids from f = 0 below
   /// this bound (edge lengths sqrt(3 eps / kappa_max), at most edge_length, graded); the projection
   /// octree refines where the field asks for smaller cells. Must be > 0.

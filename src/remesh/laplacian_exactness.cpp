@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 
 #include "remesh/triangle_angle.hpp"
 
@@ -133,7 +134,8 @@ namespace {
 /// cached sums of u and its neighbours.
 class ExactnessSweeper {
  public:
-  ExactnessSweeper(EditableMesh& mesh, const ExactnessMoveRules& rules) : mesh_(mesh), rules_(rules) {}
+  ExactnessSweeper(EditableMesh& mesh, const ExactnessMoveRules& rules)
+      : mesh_(mesh), rules_(rules), floor_cosine_(std::cos(rules.angle_floor * std::numbers::pi / 180.0)) {}
 
   std::size_t sweep() {
     refresh();
@@ -181,7 +183,7 @@ class ExactnessSweeper {
                          {&frame_[tri[0]], &frame_[tri[1]], &frame_[tri[2]]}, trial_[k]))
         return false;
       for (std::size_t c = 0; c < 3; ++c) {
-        MomentSums& s = ring_sums_[slot(tri[c])];
+        MomentSums& s = ring_sums_[corner_slot_[3 * k + c]];
         s -= corner_[t][c];
         s += trial_[k][c];
       }
@@ -192,16 +194,26 @@ class ExactnessSweeper {
     return true;
   }
 
-  std::size_t slot(std::uint32_t v) const {
-    return static_cast<std::size_t>(std::find(ring_.begin(), ring_.end(), v) - ring_.begin());
+  /// ring_: u's neighbours and u; corner_slot_[3 k + c]: the ring index of corner c of u's k-th
+  /// triangle.
+  void collect_ring(std::uint32_t u) {
+    ring_.clear();
+    corner_slot_.resize(3 * mesh_.incident[u].size());
+    for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) {
+      const Triangle& tri = mesh_.triangles[mesh_.incident[u][k]];
+      for (std::size_t c = 0; c < 3; ++c) {
+        const auto found = std::find(ring_.begin(), ring_.end(), tri[c]);
+        corner_slot_[3 * k + c] = static_cast<std::size_t>(found - ring_.begin());
+        if (found == ring_.end()) ring_.push_back(tri[c]);
+      }
+    }
   }
 
   bool move(std::uint32_t u) {
-    ring_ = mesh_.neighbours(u);
-    ring_.push_back(u);
+    collect_ring(u);
     ring_sums_.resize(ring_.size());
     const Eigen::Index rows = 3 * static_cast<Eigen::Index>(ring_.size());
-    r0_.resize(rows), r1_.resize(rows), jacobian_.resize(rows, 2);
+    r0_.resize(rows), r1_.resize(rows), column_[0].resize(rows), column_[1].resize(rows);
     for (std::size_t i = 0; i < ring_.size(); ++i)
       r0_.segment<3>(3 * static_cast<Eigen::Index>(i)) =
           free(ring_[i]) ? residual_of(sums_[ring_[i]]) : Eigen::Vector3d::Zero();
@@ -213,15 +225,20 @@ class ExactnessSweeper {
     const double delta = 1e-4 * h;
     for (int k = 0; k < 2; ++k) {
       if (!evaluate(u, p + delta * (k == 0 ? f.e1 : f.e2), r1_)) return false;
-      jacobian_.col(k) = (r1_ - r0_) / delta;
+      column_[k] = (r1_ - r0_) / delta;
     }
-    Eigen::Matrix2d normal = jacobian_.transpose() * jacobian_;
+    // Normal equations of the 2-column Jacobian, slightly damped.
+    Eigen::Matrix2d normal;
+    normal(0, 0) = column_[0].squaredNorm();
+    normal(1, 1) = column_[1].squaredNorm();
+    normal(0, 1) = normal(1, 0) = column_[0].dot(column_[1]);
     normal.diagonal().array() += 1e-9 * normal.trace() + 1e-300;
-    Eigen::Vector2d step = -normal.ldlt().solve(jacobian_.transpose() * r0_);
+    Eigen::Vector2d step = -normal.ldlt().solve(Eigen::Vector2d(column_[0].dot(r0_), column_[1].dot(r0_)));
     if (!step.allFinite()) return false;
     if (step.norm() > 0.2 * h) step *= 0.2 * h / step.norm();
-    double floor = rules_.angle_floor;
-    for (std::uint32_t t : mesh_.incident[u]) floor = std::min(floor, angle(t, u, p));
+    // The floor as the cosine of an angle: no smallest angle may fall below min(its own, the floor).
+    double floor_cosine = floor_cosine_;
+    for (std::uint32_t t : mesh_.incident[u]) floor_cosine = std::max(floor_cosine, angle_cosine(t, u, p));
     for (int halving = 0; halving < 4; ++halving, step *= 0.5) {
       Vec3 q = p + step[0] * f.e1 + step[1] * f.e2;
       Vec3 nq = n;
@@ -229,7 +246,7 @@ class ExactnessSweeper {
       if (!evaluate(u, q, r1_) || !(r1_.squaredNorm() < before)) continue;
       bool valid = true;
       for (std::uint32_t t : mesh_.incident[u])
-        if (!rules_.triangle_valid(t, u, q, nq) || angle(t, u, q) < floor) {
+        if (!rules_.triangle_valid(t, u, q, nq) || angle_cosine(t, u, q) > floor_cosine) {
           valid = false;
           break;
         }
@@ -243,24 +260,26 @@ class ExactnessSweeper {
     return false;
   }
 
-  /// Smallest angle of triangle t with vertex u at q.
-  double angle(std::uint32_t t, std::uint32_t u, const Vec3& q) const {
+  /// Cosine of the smallest angle of triangle t with vertex u at q (a larger cosine: a smaller angle).
+  double angle_cosine(std::uint32_t t, std::uint32_t u, const Vec3& q) const {
     const Triangle& tri = mesh_.triangles[t];
-    return smallest_angle(position(mesh_, tri[0], u, q), position(mesh_, tri[1], u, q),
-                          position(mesh_, tri[2], u, q));
+    return smallest_angle_cosine(position(mesh_, tri[0], u, q), position(mesh_, tri[1], u, q),
+                                 position(mesh_, tri[2], u, q));
   }
 
   EditableMesh& mesh_;
   const ExactnessMoveRules& rules_;
+  double floor_cosine_;
   std::vector<Frame> frame_;      ///< per vertex slot: tangent frame of its normal at the sweep's start
   std::vector<MomentSums> sums_;  ///< per vertex slot: moment sums in that frame
   std::vector<bool> usable_;      ///< per vertex slot: no degenerate triangle around it
   std::vector<std::array<MomentSums, 3>> corner_;  ///< per triangle slot: the sums at each corner
   std::vector<std::uint32_t> ring_;
+  std::vector<std::size_t> corner_slot_;
   std::vector<MomentSums> ring_sums_;
   std::vector<std::array<MomentSums, 3>> trial_;  ///< corner sums of u's triangles at the last trial
   Eigen::VectorXd r0_, r1_;
-  Eigen::Matrix<double, Eigen::Dynamic, 2> jacobian_;
+  Eigen::VectorXd column_[2];  ///< the Jacobian's columns (forward differences along e1, e2)
 };
 
 }  // namespace

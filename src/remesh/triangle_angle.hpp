@@ -23,4 +23,20 @@ inline double smallest_angle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
   return std::atan2(u.cross(v).norm(), u.dot(v)) * 180.0 / std::numbers::pi;
 }
 
+/// Cosine of the smallest angle of triangle (p0, p1, p2), without trigonometry (for comparisons:
+/// a larger cosine is a smaller angle). 1 for a degenerate triangle.
+inline double smallest_angle_cosine(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const Vec3 p[3] = {p0, p1, p2};
+  int opposite_shortest = 0;
+  double shortest = INFINITY;
+  for (int i = 0; i < 3; ++i) {
+    const double l = (p[(i + 2) % 3] - p[(i + 1) % 3]).squaredNorm();
+    if (l < shortest) shortest = l, opposite_shortest = i;
+  }
+  const Vec3 u = p[(opposite_shortest + 1) % 3] - p[opposite_shortest];
+  const Vec3 v = p[(opposite_shortest + 2) % 3] - p[opposite_shortest];
+  const double lengths = std::sqrt(u.squaredNorm() * v.squaredNorm());
+  return lengths > 0.0 ? u.dot(v) / lengths : 1.0;
+}
+
 }  // namespace isopatch
