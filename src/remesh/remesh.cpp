@@ -31,6 +31,10 @@ constexpr double kRepairAngle = 20.0;
 constexpr int kFinalRelaxationRounds = 8;
 /// Smallest angle (degrees) a neutral flip of a glide chain may leave in its two triangles.
 constexpr double kGlideAngle = 15.0;
+/// The Laplacian-exactness sweeps may not take a triangle's smallest angle below min(its current one,
+/// this) (degrees). 25 rather than the repair's 20: the same or lower curvature error on every surface
+/// but the torus at 2k vertices (docs/whole-surface-quality.md), and a better smallest angle.
+constexpr double kExactnessAngleFloor = 25.0;
 /// Edge length thresholds relative to the target size. The projection mesh is regular inside its
 /// patches and its edges already follow the target, so only clear outliers are split or collapsed:
 /// Botsch & Kobbelt's 4/3 and 4/5 rewire most seams and cost valence-6 vertices and curvature accuracy
@@ -77,7 +81,7 @@ class Remesher {
           .triangle_valid = [this](std::uint32_t t, std::uint32_t v, const Vec3& p,
                                    const Vec3& n) { return triangle_ok_with(t, v, p, n); },
           .size = [this](std::uint32_t v) { return sizes_.at(v); },
-          .angle_floor = kRepairAngle};
+          .angle_floor = kExactnessAngleFloor};
       stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
     }
     // A repair can make a new small angle next to one it already passed: repeat while it changes things.
