@@ -50,8 +50,12 @@ struct ExactnessMoveRules {
 };
 
 /// Runs `sweeps` Gauss-Seidel sweeps over the free (alive, unlocked) vertices and returns the number
-/// of moves kept. \post the sum of squared residuals over the free vertices did not rise; the
-/// connectivity is unchanged.
+/// of moves kept. Each vertex keeps the tangent frame it had at the start of a sweep until the next.
+/// \post within a sweep, every kept move lowered the residual sum of the moved vertex and its
+/// neighbours (in those frames), so the sum over all free vertices did not rise; where the normals
+/// are constant (a plane) that is also the sum of laplacian_exactness_energy. The connectivity is
+/// unchanged, every kept position passed rules.project and rules.triangle_valid, and no smallest
+/// angle fell below min(its value before the move, rules.angle_floor).
 std::size_t improve_laplacian_exactness(EditableMesh& mesh, const ExactnessMoveRules& rules, int sweeps);
 
 /// Sum of squared residuals over the free vertices (for tests and statistics).

@@ -75,14 +75,16 @@ class Remesher {
     // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     for (int round = 0; round < kFinalRelaxationRounds; ++round) relax();
     if (settings_.curvature_sweeps > 0) {
-      check_cancel();
       const ExactnessMoveRules rules{
           .project = [this](Vec3& p, Vec3& n, double max_step) { return project(p, n, max_step); },
           .triangle_valid = [this](std::uint32_t t, std::uint32_t v, const Vec3& p,
                                    const Vec3& n) { return triangle_ok_with(t, v, p, n); },
           .size = [this](std::uint32_t v) { return sizes_.at(v); },
           .angle_floor = kExactnessAngleFloor};
-      stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
+      for (int sweep = 0; sweep < settings_.curvature_sweeps; ++sweep) {  // cancellable between sweeps
+        check_cancel();
+        stats_.exactness_moves += improve_laplacian_exactness(mesh_, rules, 1);
+      }
     }
     // A repair can make a new small angle next to one it already passed: repeat while it changes things.
     for (int pass = 0; pass < 3; ++pass)
