@@ -1,6 +1,7 @@
 // `isopatch mesh`: SURFACE (catalogue name, formula or @file) -> Settings -> mesh_surface -> file.
 #include <isopatch/curvature.hpp>
 #include <isopatch/isopatch.hpp>
+#include <isopatch/remesh.hpp>
 #include <isopatch/resolve_surface.hpp>
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -157,13 +159,15 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--remesh", o->remesh,
                   "Rounds of surface-bound clean-up: split, collapse, flip, relax, re-project "
                   "(default: 6 for projection, 0 for mc; 0: the paper's method alone)");
-  cmd->add_option("--valence-search", o->valence_search,
-                  "Clean-up: flips tried per chain when pulling apart stuck 5-7 vertex pairs at the end "
-                  "(0..10000; 0: skip, faster, slightly fewer vertices of valence 6)")
+  cmd->add_option(
+         "--valence-search", o->valence_search,
+         "Clean-up: flips tried per chain when pulling apart stuck 5-7 vertex pairs at the end (0.." +
+             std::to_string(kMaxValenceSearch) + "; 0: skip, faster, slightly fewer vertices of valence 6)")
       ->capture_default_str();
   cmd->add_option("--curvature-sweeps", o->curvature_sweeps,
                   "Clean-up: sweeps of tangential vertex moves that make the cotangent Laplacian exact "
-                  "for quadratics at each vertex (0..1000; lower curvature error; 0: skip, faster)")
+                  "for quadratics at each vertex (0.." +
+                      std::to_string(kMaxCurvatureSweeps) + "; lower curvature error; 0: skip, faster)")
       ->capture_default_str();
   cmd->add_option("--max-error", o->max_error,
                   "Curvature-adapted sizes: triangle centroids stay within this distance of f = 0 "

@@ -31,6 +31,11 @@
 
 namespace isopatch {
 
+/// Largest accepted RemeshSettings::valence_search and RemeshSettings::curvature_sweeps (and their
+/// Settings counterparts): bounds on the work a request may ask for.
+inline constexpr int kMaxValenceSearch = 10000;
+inline constexpr int kMaxCurvatureSweeps = 1000;
+
 struct RemeshSettings {
   /// Target edge length h (uniform sizes), or the largest size when max_error is set. Must be > 0.
   double edge_length = 0.0;

@@ -109,12 +109,12 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   if (settings.remesh_iterations && (*settings.remesh_iterations < 0 || *settings.remesh_iterations > 100))
     throw InputError("remesh iterations must be between 0 and 100, got " +
                      std::to_string(*settings.remesh_iterations));
-  if (settings.valence_search < 0 || settings.valence_search > 10000)
-    throw InputError("the valence search must be between 0 and 10000 flips per chain, got " +
-                     std::to_string(settings.valence_search));
-  if (settings.curvature_sweeps < 0 || settings.curvature_sweeps > 1000)
-    throw InputError("the curvature sweeps must be between 0 and 1000, got " +
-                     std::to_string(settings.curvature_sweeps));
+  if (settings.valence_search < 0 || settings.valence_search > kMaxValenceSearch)
+    throw InputError("the valence search must be between 0 and " + std::to_string(kMaxValenceSearch) +
+                     " flips per chain, got " + std::to_string(settings.valence_search));
+  if (settings.curvature_sweeps < 0 || settings.curvature_sweeps > kMaxCurvatureSweeps)
+    throw InputError("the curvature sweeps must be between 0 and " + std::to_string(kMaxCurvatureSweeps) +
+                     ", got " + std::to_string(settings.curvature_sweeps));
   if (settings.max_error && !(std::isfinite(*settings.max_error) && *settings.max_error > 0.0))
     throw InputError("the maximum error must be a positive number");
   if (!(std::isfinite(settings.time_limit) && settings.time_limit >= 0.0))

@@ -9,13 +9,6 @@
 
 namespace isopatch {
 
-std::optional<std::uint32_t> opposite(const Triangle& t, std::uint32_t a, std::uint32_t b) {
-  for (int i = 0; i < 3; ++i)
-    if (t[static_cast<std::size_t>(i)] == a && t[static_cast<std::size_t>((i + 1) % 3)] == b)
-      return t[static_cast<std::size_t>((i + 2) % 3)];
-  return std::nullopt;
-}
-
 EditableMesh::EditableMesh(const Mesh& mesh, std::vector<Vec3> vertex_normals)
     : positions(mesh.positions),
       normals(std::move(vertex_normals)),
@@ -47,8 +40,7 @@ std::optional<EditableMesh::Edge> EditableMesh::interior_edge(std::uint32_t a, s
   int ab = 0, ba = 0;
   for (std::uint32_t t : incident[a]) {
     const Triangle& tri = triangles[t];
-    const std::size_t i =
-        tri[0] == a ? 0 : (tri[1] == a ? 1 : 2);  // a is in every triangle it is incident to
+    const std::size_t i = corner_index(tri, a);  // a is in every triangle it is incident to
     const std::uint32_t next = tri[(i + 1) % 3], previous = tri[(i + 2) % 3];
     if (next == b) {  // holds a -> b
       e.c = previous;

@@ -75,7 +75,9 @@ class EditableMesh {
   std::uint32_t add_triangle(const Triangle& t);
 };
 
-/// Third vertex of triangle t opposite the directed edge a -> b, or nullopt when t does not hold a -> b.
-std::optional<std::uint32_t> opposite(const Triangle& t, std::uint32_t a, std::uint32_t b);
+/// The position (0, 1, 2) of vertex v in triangle t. \pre t holds v.
+inline std::size_t corner_index(const Triangle& t, std::uint32_t v) {
+  return t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+}
 
 }  // namespace isopatch

@@ -86,11 +86,6 @@ const Vec3& position(const EditableMesh& mesh, std::uint32_t w, std::uint32_t mo
   return w == moved ? p : mesh.positions[w];
 }
 
-/// Index of v in triangle t.
-std::size_t corner_of(const Triangle& t, std::uint32_t v) {
-  return t[0] == v ? 0 : t[1] == v ? 1 : 2;
-}
-
 /// Moment sums of v over its triangles in `frame`, `moved` at p; false when one is degenerate.
 bool vertex_sums(const EditableMesh& mesh, std::uint32_t v, const Frame& frame, std::uint32_t moved,
                  const Vec3& p, MomentSums& sums) {
@@ -99,7 +94,7 @@ bool vertex_sums(const EditableMesh& mesh, std::uint32_t v, const Frame& frame, 
   for (std::uint32_t t : mesh.incident[v]) {
     const Triangle& tri = mesh.triangles[t];
     std::array<const Frame*, 3> frames{nullptr, nullptr, nullptr};
-    const std::size_t k = corner_of(tri, v);
+    const std::size_t k = corner_index(tri, v);
     frames[k] = &frame;
     if (!triangle_sums({&position(mesh, tri[0], moved, p), &position(mesh, tri[1], moved, p),
                         &position(mesh, tri[2], moved, p)},
@@ -287,7 +282,10 @@ class ExactnessSweeper {
 std::size_t improve_laplacian_exactness(EditableMesh& mesh, const ExactnessMoveRules& rules, int sweeps) {
   ExactnessSweeper sweeper(mesh, rules);
   std::size_t kept = 0;
-  for (int s = 0; s < sweeps; ++s) kept += sweeper.sweep();
+  for (int s = 0; s < sweeps; ++s) {
+    if (rules.before_sweep) rules.before_sweep();
+    kept += sweeper.sweep();
+  }
   return kept;
 }
 

@@ -47,6 +47,8 @@ struct ExactnessMoveRules {
   std::function<double(std::uint32_t v)> size;
   /// A triangle's smallest angle (degrees) may not drop below min(its current one, angle_floor).
   double angle_floor = 20.0;
+  /// Called before every sweep (may be empty); may throw to stop, e.g. on cancellation.
+  std::function<void()> before_sweep;
 };
 
 /// Runs `sweeps` Gauss-Seidel sweeps over the free (alive, unlocked) vertices and returns the number

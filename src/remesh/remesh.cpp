@@ -80,11 +80,9 @@ class Remesher {
           .triangle_valid = [this](std::uint32_t t, std::uint32_t v, const Vec3& p,
                                    const Vec3& n) { return triangle_ok_with(t, v, p, n); },
           .size = [this](std::uint32_t v) { return sizes_.at(v); },
-          .angle_floor = kExactnessAngleFloor};
-      for (int sweep = 0; sweep < settings_.curvature_sweeps; ++sweep) {  // cancellable between sweeps
-        check_cancel();
-        stats_.exactness_moves += improve_laplacian_exactness(mesh_, rules, 1);
-      }
+          .angle_floor = kExactnessAngleFloor,
+          .before_sweep = [this] { check_cancel(); }};
+      stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
     }
     // A repair can make a new small angle next to one it already passed: repeat while it changes things.
     for (int pass = 0; pass < 3; ++pass)
@@ -410,10 +408,12 @@ void check(const RemeshSettings& s) {
       throw InputError("remesh: the smallest size must be positive and at most the edge length");
   }
   if (!(s.grading > 0.0 && s.grading <= 1.0)) throw InputError("remesh: grading must lie in (0, 1]");
-  if (s.valence_search < 0 || s.valence_search > 10000)
-    throw InputError("remesh: the valence search must be between 0 and 10000 flips per chain");
-  if (s.curvature_sweeps < 0 || s.curvature_sweeps > 1000)
-    throw InputError("remesh: the curvature sweeps must be between 0 and 1000");
+  if (s.valence_search < 0 || s.valence_search > kMaxValenceSearch)
+    throw InputError("remesh: the valence search must be between 0 and " + std::to_string(kMaxValenceSearch) +
+                     " flips per chain");
+  if (s.curvature_sweeps < 0 || s.curvature_sweeps > kMaxCurvatureSweeps)
+    throw InputError("remesh: the curvature sweeps must be between 0 and " +
+                     std::to_string(kMaxCurvatureSweeps));
   if (s.iterations < 0 || s.iterations > 100)
     throw InputError("remesh: iterations must be between 0 and 100");
 }

@@ -66,7 +66,7 @@ class GlideSearch {
       previous.clear();
       for (std::uint32_t t : mesh_.incident[v]) {
         const auto& tri = mesh_.triangles[t];
-        const std::size_t i = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
+        const std::size_t i = corner_index(tri, v);
         next.push_back(tri[(i + 1) % 3]);
         previous.push_back(tri[(i + 2) % 3]);
       }

@@ -18,7 +18,8 @@ bool project_to_surface(const Sampler& f, Vec3& p, double tolerance, double max_
 /// The same inside the plane x_axis = p[axis] (a face of the box): the steps use the gradient without
 /// its `axis` component, so p[axis] never changes and the result lies on the curve where f = 0 meets
 /// the plane; converged when |f| / |grad f in the plane| <= tolerance. Returns false as above, and when
-/// the surface meets the plane at a right angle to it (no gradient in the plane).
+/// grad f is normal to the plane (the surface touches it tangentially or runs parallel to it: no
+/// gradient within the plane to follow).
 /// \pre 0 <= axis < 3. \throw EvaluationError if f or grad f is not finite on the way.
 bool project_to_surface_in_plane(const Sampler& f, Vec3& p, int axis, double tolerance, double max_step,
                                  Vec3* gradient = nullptr);

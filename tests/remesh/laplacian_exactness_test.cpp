@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "remesh/editable_mesh.hpp"
@@ -136,6 +137,7 @@ TEST(LaplacianExactness, SweepsRestoreAJitteredLattice) {
   const std::vector<Vec3> boundary_before = m.positions;
   const double angle_before = smallest_angle_of(m);
   const double floor = 25.0;
+  int sweeps_started = 0;
   const ExactnessMoveRules rules{
       .project = [](Vec3& p, Vec3& n, double) { return p.z() == 0.0 && n == Vec3(0, 0, 1); },
       .triangle_valid =
@@ -148,7 +150,8 @@ TEST(LaplacianExactness, SweepsRestoreAJitteredLattice) {
             return (x[1] - x[0]).cross(x[2] - x[0]).z() > 0.0;
           },
       .size = [](std::uint32_t) { return 1.0; },
-      .angle_floor = floor};
+      .angle_floor = floor,
+      .before_sweep = [&sweeps_started] { ++sweeps_started; }};
   double energy = laplacian_exactness_energy(m);
   const double start = energy;
   for (int s = 0; s < 20; ++s) {
@@ -158,6 +161,13 @@ TEST(LaplacianExactness, SweepsRestoreAJitteredLattice) {
     energy = now;
   }
   EXPECT_LT(energy, 0.05 * start);
+  EXPECT_EQ(sweeps_started, 20);
+  // A throwing hook stops before the sweep: nothing moves.
+  const std::vector<Vec3> before_throw = m.positions;
+  ExactnessMoveRules stopping = rules;
+  stopping.before_sweep = [] { throw std::runtime_error("stop"); };
+  EXPECT_THROW(improve_laplacian_exactness(m, stopping, 3), std::runtime_error);
+  EXPECT_EQ(m.positions, before_throw);
   EXPECT_EQ(m.triangles, triangles);
   EXPECT_GE(smallest_angle_of(m), std::min(angle_before, floor) - 1e-9);
   for (std::uint32_t v = 0; v < m.vertex_slots(); ++v) {
