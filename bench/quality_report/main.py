@@ -36,20 +36,25 @@ def catalogue(tool: str) -> dict[str, str]:
     return {m.group(1): m.group(2) for m in re.finditer(r"^(\w+)\s.*\bbox\s+(\S+)", stdout, re.MULTILINE)}
 
 
-def longest_side(box: str | None) -> float:
+def box_corners(box: str | None) -> list[float]:
+    """lo and hi of "x0,y0,z0,x1,y1,z1" as six numbers; the cube [-1, 1]^3 when it does not parse."""
     try:
         v = [float(x) for x in box.split(",")]
-        return max(v[3] - v[0], v[4] - v[1], v[5] - v[2])
-    except (AttributeError, ValueError, IndexError):
-        return 2.0
+        if len(v) == 6:
+            return v
+    except (AttributeError, ValueError):
+        pass
+    return [-1.0, -1.0, -1.0, 1.0, 1.0, 1.0]
+
+
+def longest_side(box: str | None) -> float:
+    v = box_corners(box)
+    return max(v[3] - v[0], v[4] - v[1], v[5] - v[2])
 
 
 def diagonal(box: str | None) -> float:
-    try:
-        v = [float(x) for x in box.split(",")]
-        return math.dist(v[:3], v[3:])
-    except (AttributeError, ValueError, IndexError):
-        return 2.0 * math.sqrt(3.0)
+    v = box_corners(box)
+    return math.dist(v[:3], v[3:])
 
 
 def describe(run: runs.Run) -> str:

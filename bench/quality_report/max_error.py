@@ -11,6 +11,7 @@ import os
 
 import runs
 from metrics import dig, metrics
+from targets import MAX_VERTEX_DISTANCE, MIN_ANGLE, MIN_VALENCE6
 
 SIZES = [("coarse", 3000), ("fine", 20000)]
 TOLERANCE = 0.35  # the count moves in steps with the octree; a factor in [0.65, 1.35] is close enough
@@ -69,11 +70,11 @@ def check(spec, run) -> tuple[str, str]:
         failures.append("topology")
     if m["genus"] != spec.genus or m["components"] != 1:
         failures.append(f"genus {m['genus']}, {m['components']} components")
-    if m["valence6"] is None or m["valence6"] < 0.90:
+    if m["valence6"] is None or m["valence6"] < MIN_VALENCE6:
         failures.append("valence 6 under 90%")
-    if m["min_angle"] is None or m["min_angle"] < 20.0:
+    if m["min_angle"] is None or m["min_angle"] < MIN_ANGLE:
         failures.append("angle under 20°")
-    if m["vertex_distance"] is None or m["vertex_distance"] > 1e-9:
+    if m["vertex_distance"] is None or m["vertex_distance"] > MAX_VERTEX_DISTANCE:
         failures.append("vertex off f = 0")
     if centroid is None or centroid >= run.value:
         failures.append("centroid distance not below EPS")

@@ -4,6 +4,11 @@ from metrics import metrics
 
 MET, NOT_MET, NA = "met", "**not met**", "n/a"
 
+# quality.md's thresholds, shared with the --max-error checks (max_error.py).
+MIN_VALENCE6 = 0.90
+MIN_ANGLE = 20.0
+MAX_VERTEX_DISTANCE = 1e-9  # relative to the box diagonal
+
 
 def _fmt(x, spec=".3g"):
     return "–" if x is None else format(x, spec)
@@ -73,12 +78,13 @@ def check(spec, groups) -> list[tuple[str, str, str]]:
     rows = _per_size(groups, "projection")
     out = [("watertight, manifold, outward, genus, 1 component", *_topology(rows, spec.genus))]
     out.append(("valence 6 >= 90% of interior vertices",
-                *_threshold(rows, "valence6", lambda v: v >= 0.9, lambda v: f"{100 * v:.1f}%")))
-    out.append(("smallest angle >= 20°", *_threshold(rows, "min_angle", lambda v: v >= 20, lambda v: f"{v:.1f}°")))
+                *_threshold(rows, "valence6", lambda v: v >= MIN_VALENCE6, lambda v: f"{100 * v:.1f}%")))
+    out.append(("smallest angle >= 20°",
+                *_threshold(rows, "min_angle", lambda v: v >= MIN_ANGLE, lambda v: f"{v:.1f}°")))
     out.append(("no angle < 10°",
                 *_threshold(rows, "below10", lambda v: v == 0, lambda v: f"{100 * v:.2f}% under 10°")))
     out.append(("vertex distance <= 1e-9 diagonal",
-                *_threshold(rows, "vertex_distance", lambda v: v <= 1e-9, lambda v: f"{v:.1e}")))
+                *_threshold(rows, "vertex_distance", lambda v: v <= MAX_VERTEX_DISTANCE, lambda v: f"{v:.1e}")))
 
     def ratio(key):
         return lambda p, mp, c, mc: None if mp[key] is None or not mc[key] else mp[key] / mc[key]
