@@ -106,7 +106,7 @@ def measure_surface(spec, args, names, work):
     if spec.targeted and not args.quick:
         adapted = max_error.measure(args.tool, spec, surface, diagonal(names.get(spec.name, spec.box)), work,
                                     lambda run, again, tag: finish(run, args.tool, surface, again, tag, work))
-    return (spec, surface, groups, checks), adapted
+    return (spec, surface, groups, checks), adapted, cgal_runs
 
 
 def main() -> int:
@@ -134,10 +134,10 @@ def main() -> int:
         if wanted and spec.name not in wanted:
             continue
         log(f"--- {spec.name}")
-        measured, adapted_runs = measure_surface(spec, args, names, args.work)
+        measured, adapted_runs, cgal_runs = measure_surface(spec, args, names, args.work)
         results.append(measured)
         if adapted_runs:
-            adapted.append((spec, adapted_runs))
+            adapted.append((spec, adapted_runs, cgal_runs))
 
     seconds = runs.now() - start
     header = machine.header(args.repo, args.command, seconds, bool(args.peer), args.quick)
@@ -148,7 +148,7 @@ def main() -> int:
         json.dump([{"surface": spec.name, "args": surface,
                     "groups": [{"size": label, "runs": {k: vars(r) for k, r in by.items()}} for label, by in groups],
                     "targets": checks,
-                    "max_error": [{"size": label, "run": vars(r)} for s2, rs in adapted if s2 is spec for label, r in rs]}
+                    "max_error": [{"size": label, "run": vars(r)} for s2, rs, _ in adapted if s2 is spec for label, r in rs]}
                    for spec, surface, groups, checks in results], f, indent=1)
     log(f"wrote {args.out} in {seconds / 60:.1f} min")
     return 0

@@ -1,7 +1,8 @@
 """The curvature-adapted meshes of the report: `isopatch mesh SURFACE --max-error EPS` on every closed
 public surface, at two error bounds chosen for about 3k and 20k vertices, analysed like the others and
-checked against the targets of issue 7 (valence 6, angles, topology, vertices on f = 0) and against the
-bound itself (largest centroid distance |f|/|grad f| below EPS).
+checked against the targets of issue 7 (valence 6, angles, topology, vertices on f = 0, H nRMS at most a
+fifth of CGAL's at a comparable vertex count) and against the bound itself (largest centroid distance
+|f|/|grad f| below EPS).
 
 Model for the choice of EPS: the size field gives h ~ sqrt(EPS), so V ~ c / EPS; one trial fixes c.
 """
@@ -11,7 +12,7 @@ import os
 
 import runs
 from metrics import dig, metrics
-from targets import MAX_VERTEX_DISTANCE, MIN_ANGLE, MIN_VALENCE6
+from targets import MAX_H_RATIO, MAX_VERTEX_DISTANCE, MIN_ANGLE, MIN_VALENCE6
 
 SIZES = [("coarse", 3000), ("fine", 20000)]
 TOLERANCE = 0.35  # the count moves in steps with the octree; a factor in [0.65, 1.35] is close enough
@@ -57,8 +58,35 @@ def measure(tool: str, spec, surface: list[str], diagonal: float, work: str, fin
     return out
 
 
-def check(spec, run) -> tuple[str, str]:
-    """('met' or '**not met**', what failed) for one analysed run."""
+def cgal_h_nrms_at(cgal_runs: list, vertices: int) -> float | None:
+    """CGAL's H nRMS at `vertices`: interpolated linearly in log(count) and log(H nRMS) between the two
+    analysed CGAL runs of the surface that bracket the count, the nearest run's value outside their range;
+    None without an analysed CGAL run."""
+    points = sorted((r.vertices, metrics(r.analysis)["h_nrms"]) for r in cgal_runs
+                    if r.ok and r.vertices and r.analysis and metrics(r.analysis)["h_nrms"])
+    if not points:
+        return None
+    if vertices <= points[0][0]:
+        return points[0][1]
+    for (v0, h0), (v1, h1) in zip(points, points[1:]):
+        if vertices <= v1:
+            t = math.log(vertices / v0) / math.log(v1 / v0) if v1 > v0 else 0.0
+            return math.exp(math.log(h0) + t * (math.log(h1) - math.log(h0)))
+    return points[-1][1]
+
+
+def h_ratio(run, cgal_runs: list) -> float | None:
+    """The run's H nRMS over CGAL's at its vertex count (cgal_h_nrms_at); None when either is missing."""
+    if not run.ok or not run.analysis:
+        return None
+    ours = metrics(run.analysis)["h_nrms"]
+    theirs = cgal_h_nrms_at(cgal_runs, run.vertices)
+    return None if ours is None or not theirs else ours / theirs
+
+
+def check(spec, run, cgal_runs: list) -> tuple[str, str]:
+    """('met' or '**not met**', what failed) for one analysed run; the H nRMS check needs `cgal_runs`
+    (the surface's analysed CGAL meshes) and is skipped without them."""
     if not run.ok:
         return "**not met**", f"failed: {run.error}"
     if not run.analysis:
@@ -78,4 +106,8 @@ def check(spec, run) -> tuple[str, str]:
         failures.append("vertex off f = 0")
     if centroid is None or centroid >= run.value:
         failures.append("centroid distance not below EPS")
+    if cgal_runs:
+        ratio = h_ratio(run, cgal_runs)
+        if ratio is None or ratio > MAX_H_RATIO:
+            failures.append("H nRMS above CGAL's / 5" if ratio is not None else "no H nRMS to compare")
     return ("met", "") if not failures else ("**not met**", ", ".join(failures))
