@@ -38,6 +38,7 @@ struct MeshOptions {
   int min_depth = defaults.min_depth;
   int max_depth = defaults.max_depth;
   int refinement_levels = defaults.refinement_levels;
+  double max_cell_curvature = defaults.max_cell_curvature;
   std::string coordinates = "wachspress";
   std::string base = "barycentric";
   double max_ray_angle = defaults.max_ray_angle;
@@ -81,6 +82,7 @@ int run_mesh(const MeshOptions& o) {
   settings.min_depth = o.min_depth;
   settings.max_depth = o.max_depth;
   settings.refinement_levels = o.refinement_levels;
+  settings.max_cell_curvature = o.max_cell_curvature;
   settings.max_ray_angle = o.max_ray_angle;
   settings.remesh_iterations = o.remesh;
   settings.valence_search = o.valence_search;
@@ -140,6 +142,10 @@ Runner add_mesh_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--refinement-levels", o->refinement_levels,
                   "Projection: levels of local refinement allowed where cells fail")
+      ->capture_default_str();
+  cmd->add_option("--max-cell-curvature", o->max_cell_curvature,
+                  "Projection: start one depth finer while most patch corners lie in cells longer than this "
+                  "many curvature radii (cells of at least 3 edge lengths; 0: off)")
       ->capture_default_str();
   cmd->add_option("--coordinates", o->coordinates, "Projection: wachspress | mean-value")
       ->capture_default_str();

@@ -61,6 +61,12 @@ struct Settings {
   /// fail the single-sheet or acceptance tests are refined up to max_depth. 0 <= min <= max <= 12.
   int min_depth = 2;
   int max_depth = 8;
+  /// With automatic resolution (resolution 0): the starting depth goes one level deeper while more than
+  /// half of the patch corners lie in cells longer than this many radii of the largest principal
+  /// curvature there (cell size * kappa_max, about the normal turn across the cell in radians), as long
+  /// as such cells stay above 3 target edge lengths. One patch then does not wrap around a tube, where
+  /// its lattice would be strained (docs/whole-surface-quality.md). 0 disables; otherwise > 0.
+  double max_cell_curvature = 1.5;
   /// A cell whose patch is rejected (or whose topology is in doubt) is split, locally, at most this many
   /// levels below the starting depth (and never below max_depth), 0..12; the octree stays 2:1 balanced
   /// and coarse patches take their finer neighbours' crossings as extra (flat) corners. Cells still

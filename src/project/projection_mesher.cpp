@@ -1,6 +1,7 @@
 // The projection mesher for whole surfaces (see include/isopatch/projection.hpp). Three phases per
 // partition, each a loop over independent items, so they can later run in parallel with the same
 // output: (1) the boundary vertices of every shared side, (2) every patch, (3) assembly by IDs.
+#include <isopatch/curvature.hpp>
 #include <isopatch/error.hpp>
 #include <isopatch/projection.hpp>
 
@@ -73,6 +74,8 @@ void check_settings(const Settings& s) {
       !(s.max_boundary_ray_angle > 0.0 && s.max_boundary_ray_angle < 90.0))
     throw InputError("acceptance angles must lie strictly between 0 and 90 degrees");
   if (s.march_steps < 4 || s.march_steps > 4096) throw InputError("march steps must be between 4 and 4096");
+  if (!(std::isfinite(s.max_cell_curvature) && s.max_cell_curvature >= 0.0))
+    throw InputError("the largest cell curvature must be a finite number >= 0 (0: off)");
   if (s.refinement_levels < 0 || s.refinement_levels > 12)
     throw InputError("refinement levels must be between 0 and 12");
 }
@@ -149,6 +152,32 @@ std::vector<CellKey> leaves_too_large_for(const Partition& partition,
     if (leaf.box.size().maxCoeff() > kAutoSegments * h) keys.push_back(CellKey{leaf.depth, leaf.coords});
   }
   return keys;
+}
+
+/// A cell must stay at least this many target edge lengths long to be split for its curvature.
+constexpr double kMinCurvedCellEdges = 3.0;
+
+/// Whether the surface is curved at the scale of the starting cells (Settings::max_cell_curvature):
+/// more than half of the corners of the starting-depth leaves sit in a cell longer than `max_turn`
+/// radii of the largest principal curvature at the corner and longer than kMinCurvedCellEdges target
+/// sizes. A median, not a per-leaf rule: splitting single leaves adds depth transitions, whose seams
+/// cost more than the strain they remove (measured in docs/whole-surface-quality.md).
+bool starting_cells_too_curved(const Partition& partition, const Surface& surface, int depth, double max_turn,
+                               const std::function<double(const Vec3&)>& size_at) {
+  std::size_t curved = 0, corners = 0;
+  for (const Leaf& leaf : partition.leaves) {
+    if (leaf.depth != depth) continue;
+    const double size = leaf.box.size().maxCoeff();
+    for (const Loop& loop : leaf.loops)
+      for (std::uint32_t c : loop.corners) {
+        const Vec3& p = partition.crossings[c].position;
+        ++corners;
+        // Infinite curvature (a singular point) counts as curved; NaN compares false.
+        if (size * max_abs_principal_curvature(surface, p) > max_turn && size > kMinCurvedCellEdges * size_at(p))
+          ++curved;
+      }
+  }
+  return 2 * curved > corners;
 }
 
 void check_cancel(const Settings& s) {
@@ -505,7 +534,8 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   const Sampler f(surface);
   Counters counters;
   std::uint64_t partition_values = 0, partition_gradients = 0;
-  std::size_t refinements = 0;
+  std::size_t refinements = 0, curvature_depth_steps = 0;
+  bool depth_settled = false;
   const Lattice root = make_lattice(box, 0);
   PartitionSettings ps;
   ps.adaptive = true;
@@ -536,6 +566,21 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       ++ps.surface_depth;
       ps.force_split.clear();
       continue;
+    }
+    // With automatic resolution, patches should not wrap around the surface's tubes: while most of the
+    // starting cells are too curved, start one level deeper (once per depth, before any local split).
+    if (!depth_settled) {
+      depth_settled = settings.resolution != 0 || settings.max_cell_curvature == 0.0 ||
+                      ps.surface_depth >= settings.max_depth ||
+                      !starting_cells_too_curved(partition, surface, ps.surface_depth, settings.max_cell_curvature,
+                                                 size_at);
+      if (!depth_settled) {
+        ++ps.surface_depth;
+        ++curvature_depth_steps;
+        ps.force_split.clear();
+        --round;  // a new starting depth, not a refinement round
+        continue;
+      }
     }
     // Sides get their own segment counts unless the resolution is fixed.
     const int resolution = settings.resolution;
@@ -586,6 +631,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
           stats->extra["leaves_depth_" + std::to_string(d)] =
               static_cast<double>(partition.stats.leaves_per_depth[static_cast<std::size_t>(d)]);
       stats->extra["refinements"] = static_cast<double>(refinements);
+      stats->extra["curvature_depth_steps"] = static_cast<double>(curvature_depth_steps);
       stats->extra["fallback_cells"] = static_cast<double>(counters.fallback_cells);
       stats->extra["unprojected"] = static_cast<double>(counters.unprojected_vertices);
       stats->extra["gradient_rays"] = static_cast<double>(counters.patch.gradient_rays);

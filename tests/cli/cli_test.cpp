@@ -74,6 +74,8 @@ TEST(Cli, BadInputGivesOneLineAndDistinctExitCode) {
       {"mesh torus --valence-search 20000" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --curvature-sweeps -1" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --curvature-sweeps 1001" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --max-cell-curvature -1" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --max-cell-curvature nan" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --method mc -o /nonexistent/folder/m.ply", ErrorKind::Io},
       {"mesh torus --method mc -o " + (dir / "m.xyz").string(), ErrorKind::Io},
       {"mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Parse},

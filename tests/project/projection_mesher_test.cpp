@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "mesh_checks.hpp"
 #include "self_intersection.hpp"
 #include "test_surfaces.hpp"
@@ -104,6 +106,37 @@ TEST(ProjectionMesher, RejectsBadSettings) {
   settings.min_depth = 5;
   settings.max_depth = 3;
   EXPECT_THROW(mesh_projection(*s, settings), InputError);
+  settings = Settings{};
+  settings.max_cell_curvature = -0.5;
+  EXPECT_THROW(mesh_projection(*s, settings), InputError);
+  settings.max_cell_curvature = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(mesh_projection(*s, settings), InputError);
+}
+
+TEST(ProjectionMesher, StartsDeeperOnlyWhereCellsAreCurved) {
+  struct Case {
+    SurfacePtr surface;
+    double edge_length;
+    int resolution;
+    double steps;
+  };
+  // Torus (tube radius 0.4): cells of 0.8 are two radii long, one level deeper they are one radius.
+  // Sphere of radius 1: cells of 0.5 turn the normal by half a radian. A fixed resolution keeps the
+  // paper's depth. Tiny cells are never split for curvature (at least 3 edge lengths long).
+  const Case cases[] = {{test::torus(), 0.12, 0, 1.0}, {test::torus(), 0.12, 7, 0.0},
+                        {test::sphere(), 0.1, 0, 0.0}, {test::torus(), 0.3, 0, 0.0}};
+  for (const Case& c : cases) {
+    Settings settings;
+    settings.edge_length = c.edge_length;
+    settings.resolution = c.resolution;
+    settings.remesh_iterations = 0;
+    MeshStats stats;
+    const Mesh mesh = mesh_projection(*c.surface, settings, &stats);
+    const std::string what = c.surface->name() + " h=" + std::to_string(c.edge_length) +
+                             " r=" + std::to_string(c.resolution);
+    EXPECT_EQ(stats.extra.at("curvature_depth_steps"), c.steps) << what;
+    EXPECT_TRUE(analyze_topology(mesh).watertight()) << what;
+  }
 }
 
 TEST(ProjectionMesher, ReportsNoSurfaceAndNaN) {

@@ -64,5 +64,44 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, WholeSurfaceQuality,
                            return std::string(param.param.name);
                          });
 
+/// Mean-curvature nRMS of the default pipeline's torus mesh at a coarse edge length, and the depth its
+/// patches started at.
+struct CoarseTorus {
+  double h_nrms;
+  double depth;
+  double depth_steps;
+  std::size_t vertices;
+};
+
+CoarseTorus coarse_torus(double edge_length, double max_cell_curvature) {
+  const SurfacePtr s = test::torus();
+  Settings settings;
+  settings.edge_length = edge_length;
+  settings.max_cell_curvature = max_cell_curvature;
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*s, settings, &stats);
+  const QualityReport q = analyze_quality(mesh, s.get());
+  EXPECT_TRUE(q.topology.watertight());
+  EXPECT_EQ(q.topology.genus, 1);
+  EXPECT_GE(q.shape.min_angle.min, 20.0);
+  EXPECT_GE(q.valence.share_6, 0.90);
+  return {q.accuracy->mean_curvature.nrms, stats.extra.at("depth"), stats.extra.at("curvature_depth_steps"),
+          mesh.vertex_count()};
+}
+
+// Torus of tube radius 0.4 in a box of side 3.2: at edge length 0.12 the starting cells (0.8) are two
+// tube radii long and each patch wraps half the tube. Starting one level deeper (cells of one radius)
+// meets the torus target at about a thousand vertices; wrapped patches miss it at twice as many.
+TEST(WholeSurfaceQualityCoarse, PatchesDoNotWrapAroundTheTube) {
+  const CoarseTorus deeper = coarse_torus(0.12, Settings{}.max_cell_curvature);
+  const CoarseTorus wrapped = coarse_torus(0.12, 0.0);
+  EXPECT_EQ(deeper.depth_steps, 1.0);
+  EXPECT_EQ(deeper.depth, wrapped.depth + 1.0);
+  EXPECT_EQ(wrapped.depth_steps, 0.0);
+  EXPECT_LE(deeper.h_nrms, 0.015) << deeper.vertices << " vertices";
+  EXPECT_GT(wrapped.h_nrms, 0.015) << wrapped.vertices << " vertices";
+  EXPECT_GT(wrapped.vertices, deeper.vertices);
+}
+
 }  // namespace
 }  // namespace isopatch
