@@ -54,7 +54,8 @@ struct Settings {
   /// Must be > 0.
   std::optional<double> edge_length;
   /// Segments per patch side (the template resolution r), 1..64; 0 (default): chosen per depth as the
-  /// cell size over the edge length (4..8 at the starting depth, at least 2 after refinement).
+  /// mean length of the loop sides at that depth over the edge length (with a size field: the cell size
+  /// over the local size), at least 1, so the mean edge is about the edge length.
   int resolution = 0;
   /// Octree depth limits (the root cell is the box made cubic). Surface cells start at the depth whose
   /// cell size fits the resolution and edge_length, clamped to [min_depth, max_depth]; cells that

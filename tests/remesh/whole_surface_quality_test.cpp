@@ -21,9 +21,9 @@ struct QualityCase {
   double edge_length;
   int genus;
   /// Mean-curvature nRMS bound: the target, a fifth of CGAL's at a comparable size (torus 0.015;
-  /// tanglecube 0.019, CGAL 0.098 at 10k and 20k vertices in docs/quality.md; 0.015 measured). On
-  /// genus2 the target (about 0.017) is not met (0.021 measured): held to a regression bound a quarter
-  /// above what it reaches.
+  /// tanglecube 0.019, CGAL 0.098 at 10k and 20k vertices in docs/quality.md; 0.0164 measured at 16k
+  /// vertices). On genus2 the target (about 0.017) is not met (0.020 measured at 16k vertices): held
+  /// to a regression bound a quarter above what it reaches.
   double max_h_nrms;
 };
 
@@ -58,8 +58,8 @@ TEST_P(WholeSurfaceQuality, MeetsTheTargets) {
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, WholeSurfaceQuality,
                          ::testing::Values(QualityCase{"torus", &torus, 0.04, 1, 0.015},
-                                           QualityCase{"tanglecube", &test::tanglecube, 0.12, 5, 0.019},
-                                           QualityCase{"genus2", &test::genus2, 0.02, 2, 0.026}),
+                                           QualityCase{"tanglecube", &test::tanglecube, 0.09, 5, 0.019},
+                                           QualityCase{"genus2", &test::genus2, 0.016, 2, 0.025}),
                          [](const ::testing::TestParamInfo<QualityCase>& param) {
                            return std::string(param.param.name);
                          });
