@@ -252,7 +252,9 @@ class PartitionMesher {
     for (const Loop& loop : leaf.loops)
       for (std::uint32_t c : loop.corners) h = std::min(h, crossing_size(c));
     const double cell = part_.lattice.unit() * part_.lattice.step(leaf.depth);
-    const double r = std::round(cell * side_factor(leaf.depth) / h);
+    // The side factor never takes a leaf down to one segment per side (a patch of corners only, whose
+    // fans leave most vertices irregular) where the cell size alone gives two or more.
+    const double r = std::max(std::round(cell * side_factor(leaf.depth) / h), std::min(2.0, std::round(cell / h)));
     return static_cast<int>(std::clamp(r, 1.0, static_cast<double>(PatchTemplate::kMaxResolution)));
   }
 
