@@ -173,7 +173,8 @@ bool starting_cells_too_curved(const Partition& partition, const Surface& surfac
         const Vec3& p = partition.crossings[c].position;
         ++corners;
         // Infinite curvature (a singular point) counts as curved; NaN compares false.
-        if (size * max_abs_principal_curvature(surface, p) > max_turn && size > kMinCurvedCellEdges * size_at(p))
+        if (size * max_abs_principal_curvature(surface, p) > max_turn &&
+            size > kMinCurvedCellEdges * size_at(p))
           ++curved;
       }
   }
@@ -254,7 +255,8 @@ class PartitionMesher {
     const double cell = part_.lattice.unit() * part_.lattice.step(leaf.depth);
     // The side factor never takes a leaf down to one segment per side (a patch of corners only, whose
     // fans leave most vertices irregular) where the cell size alone gives two or more.
-    const double r = std::max(std::round(cell * side_factor(leaf.depth) / h), std::min(2.0, std::round(cell / h)));
+    const double r =
+        std::max(std::round(cell * side_factor(leaf.depth) / h), std::min(2.0, std::round(cell / h)));
     return static_cast<int>(std::clamp(r, 1.0, static_cast<double>(PatchTemplate::kMaxResolution)));
   }
 
@@ -542,7 +544,7 @@ class PartitionMesher {
   std::function<double(const Vec3&)> size_at_;
   std::vector<double> crossing_sizes_;     // target size at each crossing, -1 until asked
   std::vector<int> leaf_resolutions_;      // per leaf, 0 until asked
-  bool uniform_sizes_;
+  bool uniform_sizes_;                     // size_at_ is constant (see side_factor)
   std::vector<double> side_factors_;       // per depth, 0 until asked (see side_factor)
   std::vector<int> side_segments_;         // per side, in key order
   std::vector<std::size_t> side_offsets_;  // per side, the mesh id of its first inner point
@@ -605,8 +607,8 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     if (!depth_settled) {
       depth_settled = settings.resolution != 0 || settings.max_cell_curvature == 0.0 ||
                       ps.surface_depth >= settings.max_depth ||
-                      !starting_cells_too_curved(partition, surface, ps.surface_depth, settings.max_cell_curvature,
-                                                 size_at);
+                      !starting_cells_too_curved(partition, surface, ps.surface_depth,
+                                                 settings.max_cell_curvature, size_at);
       if (!depth_settled) {
         ++ps.surface_depth;
         ++curvature_depth_steps;

@@ -123,8 +123,11 @@ TEST(ProjectionMesher, MeanEdgeIsTheRequestedEdgeLength) {
     SurfacePtr surface;
     double edge_length;
   };
-  const Case cases[] = {{test::sphere(), 0.05}, {test::tanglecube(), 0.16}, {test::genus2(), 0.023},
-                        {test::genus2(), 0.058}, {test::torus(), 0.05}};
+  const Case cases[] = {{test::sphere(), 0.05},
+                        {test::tanglecube(), 0.16},
+                        {test::genus2(), 0.023},
+                        {test::genus2(), 0.058},
+                        {test::torus(), 0.05}};
   for (const Case& c : cases) {
     Settings settings;
     settings.edge_length = c.edge_length;
@@ -146,8 +149,10 @@ TEST(ProjectionMesher, StartsDeeperOnlyWhereCellsAreCurved) {
   // Torus (tube radius 0.4): cells of 0.8 are two radii long, one level deeper they are one radius.
   // Sphere of radius 1: cells of 0.5 turn the normal by half a radian. A fixed resolution keeps the
   // paper's depth. Tiny cells are never split for curvature (at least 3 edge lengths long).
-  const Case cases[] = {{test::torus(), 0.12, 0, 1.0}, {test::torus(), 0.12, 7, 0.0},
-                        {test::sphere(), 0.1, 0, 0.0}, {test::torus(), 0.3, 0, 0.0}};
+  const Case cases[] = {{test::torus(), 0.12, 0, 1.0},
+                        {test::torus(), 0.12, 7, 0.0},
+                        {test::sphere(), 0.1, 0, 0.0},
+                        {test::torus(), 0.3, 0, 0.0}};
   for (const Case& c : cases) {
     Settings settings;
     settings.edge_length = c.edge_length;
@@ -155,8 +160,8 @@ TEST(ProjectionMesher, StartsDeeperOnlyWhereCellsAreCurved) {
     settings.remesh_iterations = 0;
     MeshStats stats;
     const Mesh mesh = mesh_projection(*c.surface, settings, &stats);
-    const std::string what = c.surface->name() + " h=" + std::to_string(c.edge_length) +
-                             " r=" + std::to_string(c.resolution);
+    const std::string what =
+        c.surface->name() + " h=" + std::to_string(c.edge_length) + " r=" + std::to_string(c.resolution);
     EXPECT_EQ(stats.extra.at("curvature_depth_steps"), c.steps) << what;
     EXPECT_TRUE(analyze_topology(mesh).watertight()) << what;
   }
