@@ -164,6 +164,8 @@ constexpr double kMinCurvedCellEdges = 3.0;
 /// cost more than the strain they remove (measured in docs/whole-surface-quality.md).
 bool starting_cells_too_curved(const Partition& partition, const Surface& surface, int depth, double max_turn,
                                const std::function<double(const Vec3&)>& size_at) {
+  // A crossing is a corner of up to four leaves: its curvature and size are evaluated once (-1: not yet).
+  std::vector<double> kappa(partition.crossings.size(), -1.0), h(partition.crossings.size(), -1.0);
   std::size_t curved = 0, corners = 0;
   for (const Leaf& leaf : partition.leaves) {
     if (leaf.depth != depth) continue;
@@ -171,11 +173,10 @@ bool starting_cells_too_curved(const Partition& partition, const Surface& surfac
     for (const Loop& loop : leaf.loops)
       for (std::uint32_t c : loop.corners) {
         const Vec3& p = partition.crossings[c].position;
+        if (kappa[c] < 0.0) kappa[c] = max_abs_principal_curvature(surface, p), h[c] = size_at(p);
         ++corners;
         // Infinite curvature (a singular point) counts as curved; NaN compares false.
-        if (size * max_abs_principal_curvature(surface, p) > max_turn &&
-            size > kMinCurvedCellEdges * size_at(p))
-          ++curved;
+        if (size * kappa[c] > max_turn && size > kMinCurvedCellEdges * h[c]) ++curved;
       }
   }
   return 2 * curved > corners;
