@@ -62,8 +62,8 @@ def cgal_h_nrms_at(cgal_runs: list, vertices: int) -> float | None:
     """CGAL's H nRMS at `vertices`: interpolated linearly in log(count) and log(H nRMS) between the two
     analysed CGAL runs of the surface that bracket the count, the nearest run's value outside their range;
     None without an analysed CGAL run."""
-    points = sorted((r.vertices, metrics(r.analysis)["h_nrms"]) for r in cgal_runs
-                    if r.ok and r.vertices and r.analysis and metrics(r.analysis)["h_nrms"])
+    measured = [(r.vertices, metrics(r.analysis)["h_nrms"]) for r in cgal_runs if r.ok and r.vertices and r.analysis]
+    points = sorted((v, h) for v, h in measured if h)
     if not points:
         return None
     if vertices <= points[0][0]:

@@ -105,9 +105,13 @@ std::vector<std::uint32_t> EditableMesh::neighbours(std::uint32_t v) const {
 }
 
 std::vector<std::uint32_t> EditableMesh::common_neighbours(std::uint32_t a, std::uint32_t b) const {
-  const std::vector<std::uint32_t> na = neighbours(a), nb = neighbours(b);
+  return sorted_intersection(neighbours(a), neighbours(b));
+}
+
+std::vector<std::uint32_t> sorted_intersection(const std::vector<std::uint32_t>& a,
+                                               const std::vector<std::uint32_t>& b) {
   std::vector<std::uint32_t> common;
-  std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
   return common;
 }
 

@@ -75,6 +75,10 @@ class EditableMesh {
   std::uint32_t add_triangle(const Triangle& t);
 };
 
+/// The elements of both sorted lists, sorted (e.g. two vertices' neighbours()).
+std::vector<std::uint32_t> sorted_intersection(const std::vector<std::uint32_t>& a,
+                                               const std::vector<std::uint32_t>& b);
+
 /// The position (0, 1, 2) of vertex v in triangle t. \pre t holds v.
 inline std::size_t corner_index(const Triangle& t, std::uint32_t v) {
   return t[0] == v ? 0 : (t[1] == v ? 1 : 2);

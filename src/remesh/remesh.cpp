@@ -188,9 +188,9 @@ class Remesher {
     const auto e = mesh_.interior_edge(a, b);
     if (!e) return false;
     // Link condition: a and b share exactly the neighbours c and d.
-    if (mesh_.common_neighbours(a, b).size() != 2) return false;
-    if (mesh_.valence(e->c) <= 3 || mesh_.valence(e->d) <= 3) return false;
     const std::vector<std::uint32_t> na = mesh_.neighbours(a), nb = mesh_.neighbours(b);
+    if (sorted_intersection(na, nb).size() != 2) return false;
+    if (mesh_.valence(e->c) <= 3 || mesh_.valence(e->d) <= 3) return false;
     if (na.size() + nb.size() - 4 > 9) return false;
     Vec3 p = mesh_.positions[b], n = mesh_.normals[b];
     if (!mesh_.locked[b]) {

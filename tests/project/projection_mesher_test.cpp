@@ -157,7 +157,6 @@ TEST(ProjectionMesher, StartsDeeperOnlyWhereCellsAreCurved) {
     Settings settings;
     settings.edge_length = c.edge_length;
     settings.resolution = c.resolution;
-    settings.remesh_iterations = 0;
     MeshStats stats;
     const Mesh mesh = mesh_projection(*c.surface, settings, &stats);
     const std::string what =
