@@ -7,7 +7,8 @@
 #
 # Usage: scripts/quality_report.sh [--quick] [--no-build] [--surfaces a,b,...] [--out FILE] [BUILD_DIR]
 #   BUILD_DIR   build folder (default: $ISOPATCH_BUILD, else build); configured and built here
-#               (targets isopatch_cli and, when CGAL is found, isopatch_cgal_peer) unless --no-build
+#               (targets isopatch_cli, isopatch_ideal_lattice and, when CGAL is found, isopatch_cgal_peer)
+#               unless --no-build
 #   --quick     one size (about 2k vertices) for smoke testing
 #   --surfaces  only these public surfaces
 #   --out FILE  the report (default docs/quality.md); meshes and results.json go to out/quality/
@@ -24,7 +25,7 @@ while [ $# -gt 0 ]; do
     --no-build) build=0 ;;
     --surfaces) surfaces="${2:?--surfaces needs a list}"; shown+=" --surfaces $2"; shift ;;
     --out) out="${2:?--out needs a file}"; shift ;;
-    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "quality_report: unknown option $1" >&2; exit 2 ;;
     *) build_dir="$1" ;;
   esac
@@ -39,7 +40,7 @@ if [ "$build" = 1 ]; then
   fi
   # The peer target exists only when CMake found CGAL (bench/CMakeLists.txt); benchmarks must be on.
   cmake -S . -B "$build_dir" -DISOPATCH_BUILD_BENCH=ON -DISOPATCH_BUILD_CGAL_PEER=ON >/dev/null
-  targets=(isopatch_cli)
+  targets=(isopatch_cli isopatch_ideal_lattice)
   if cmake --build "$build_dir" --target help 2>/dev/null | grep -q isopatch_cgal_peer; then
     targets+=(isopatch_cgal_peer)
   fi
@@ -54,7 +55,13 @@ if [ ! -x "$peer" ]; then
   peer=""
 fi
 
+ideal="$build_dir/bin/isopatch_ideal_lattice"
+if [ ! -x "$ideal" ]; then
+  echo "quality_report: $ideal not built: the report will have no ideal-lattice yardstick" >&2
+  ideal=""
+fi
+
 work="out/quality"
 mkdir -p "$work" "$(dirname "$out")"
-exec python3 -B bench/quality_report/main.py --tool "$tool" --peer "$peer" --out "$out" --work "$work" \
+exec python3 -B bench/quality_report/main.py --tool "$tool" --peer "$peer" --ideal "$ideal" --out "$out" --work "$work" \
   --repo "$repo" --surfaces "$surfaces" --command "$shown" "${quick[@]}"

@@ -86,6 +86,7 @@ def measure_surface(spec, args, names, work):
                                       projection_runs)
         p = finish(p, args.tool, surface, lambda p=p: runs.projection(args.tool, surface, p.value, p.mesh),
                    f"{tag}-projection", work)
+        runs.ideal_lattice(args.ideal, p, surface, "uniform")
         count = p.vertices if p.ok else target
         m = matching.match_mc(args.tool, surface, count, work, f"{tag}-mc")
         m = finish(m, args.tool, surface, lambda m=m: runs.marching_cubes(args.tool, surface, int(m.value), m.mesh),
@@ -104,8 +105,13 @@ def measure_surface(spec, args, names, work):
     checks = targets.check(spec, groups) if spec.targeted else []
     adapted = []
     if spec.targeted and not args.quick:
+        def finish_adapted(run, again, tag):
+            run = finish(run, args.tool, surface, again, tag, work)
+            runs.ideal_lattice(args.ideal, run, surface, "graded")
+            return run
+
         adapted = max_error.measure(args.tool, spec, surface, diagonal(names.get(spec.name, spec.box)), work,
-                                    lambda run, again, tag: finish(run, args.tool, surface, again, tag, work))
+                                    finish_adapted)
     return (spec, surface, groups, checks), adapted, cgal_runs
 
 
@@ -113,6 +119,7 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--tool", required=True, help="the isopatch command-line tool")
     parser.add_argument("--peer", default="", help="isopatch_cgal_peer (empty: no CGAL rows)")
+    parser.add_argument("--ideal", default="", help="isopatch_ideal_lattice (empty: no ideal-lattice yardstick)")
     parser.add_argument("--out", required=True, help="the Markdown report to write")
     parser.add_argument("--work", required=True, help="folder for the meshes and results.json")
     parser.add_argument("--repo", default=".", help="repository root (for the commit in the header)")

@@ -94,8 +94,8 @@ def overview(results):
 def adapted_section(adapted):
     """The `--max-error` meshes: one row per surface and error bound, with the targets checked."""
     header = ["surface", "size", "EPS", "vertices", "ms", "% val 6", "min ∠", "% < 10°", "H nRMS",
-              "H / CGAL", "max centroid dist", "/ EPS", "topology", "targets"]
-    aligns = ["l", "l", "r", "r", "r", "r", "r", "r", "r", "r", "r", "r", "l", "l"]
+              "H / CGAL", "ideal / CGAL", "max centroid dist", "/ EPS", "topology", "targets"]
+    aligns = ["l", "l", "r", "r", "r", "r", "r", "r", "r", "r", "r", "r", "r", "l", "l"]
     rows, met, total = [], 0, 0
     for spec, runs_by_size, cgal_runs in adapted:
         for label, run in runs_by_size:
@@ -104,14 +104,14 @@ def adapted_section(adapted):
             met += status == "met"
             verdict = status + (f" ({why})" if why else "")
             if not run.ok or not run.analysis:
-                rows.append([spec.name, label, run.knob] + ["–"] * 10 + [verdict])
+                rows.append([spec.name, label, run.knob] + ["–"] * 11 + [verdict])
                 continue
             m = metrics(run.analysis)
             centroid = dig(run.analysis, "accuracy", "centroid_distance", "max")
             ms = _f(run.ms, ".1f") + (f" (min of {len(run.timings)})" if len(run.timings) > 1 else "")
             rows.append([spec.name, label, f"{run.value:.3g}", str(run.vertices), ms, _pct(m["valence6"]),
                          _f(m["min_angle"], ".1f"), _pct(m["below10"], ".2f"), _f(m["h_nrms"], ".3g"),
-                         _f(max_error.h_ratio(run, cgal_runs), ".2f"),
+                         _f(max_error.h_ratio(run, cgal_runs), ".2f"), _f(max_error.ideal_ratio(run, cgal_runs), ".2f"),
                          _f(centroid, ".2e"), _f(None if centroid is None else centroid / run.value, ".2f"),
                          _topology(m), verdict])
     intro = (f"`isopatch mesh SURFACE --max-error EPS` on every closed surface, EPS chosen for about "
@@ -120,6 +120,9 @@ def adapted_section(adapted):
              "|f|/|grad f| (absolute, the chordal error) below EPS, and H nRMS at most a fifth of CGAL's at "
              "the same vertex count (`H / CGAL`: CGAL's H nRMS interpolated in log-log between its two runs of "
              "the surface that bracket the count, the nearest run's outside them; not checked without CGAL). "
+             "`ideal / CGAL`: the same for ideal equilateral rings of the same vertex count with edges shrinking "
+             "like the size field, c / sqrt(kappa_max) (`isopatch_ideal_lattice --sizes graded`, see "
+             "[quality-method.md](quality-method.md)): what a perfect lattice of this size law would give. "
              f"{met} of {total} meshes meet them all.")
     return "\n".join(["## Curvature-adapted meshes (`--max-error`)", "", intro, "", _table(header, aligns, rows), ""])
 

@@ -84,6 +84,14 @@ def h_ratio(run, cgal_runs: list) -> float | None:
     return None if ours is None or not theirs else ours / theirs
 
 
+def ideal_ratio(run, cgal_runs: list) -> float | None:
+    """The ideal lattice's H nRMS (run.ideal: rings graded like --max-error at the run's vertex count)
+    over CGAL's at that count; None when either is missing."""
+    ideal = (run.ideal or {}).get("nrms_mean") if run.ok else None
+    theirs = cgal_h_nrms_at(cgal_runs, run.vertices) if run.ok else None
+    return None if ideal is None or not theirs else ideal / theirs
+
+
 def check(spec, run, cgal_runs: list) -> tuple[str, str]:
     """('met' or '**not met**', what failed) for one analysed run; the H nRMS check needs `cgal_runs`
     (the surface's analysed CGAL meshes) and is skipped without them."""

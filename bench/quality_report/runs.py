@@ -29,6 +29,7 @@ class Run:
     timings: list[float] = field(default_factory=list)  # every timed repetition, ms
     analysis: dict | None = None
     analysis_error: str | None = None
+    ideal: dict | None = None  # isopatch_ideal_lattice --json on this mesh (projection meshes only)
 
 
 def log_attempt(run: Run) -> None:
@@ -130,6 +131,22 @@ def analyze(tool: str, run: Run, surface: list[str]) -> None:
         run.analysis = json.loads(stdout)
     except ValueError as e:
         run.analysis_error = f"unreadable analysis JSON: {e}"
+
+
+def ideal_lattice(tool: str, run: Run, surface: list[str], sizes: str) -> None:
+    """Fills run.ideal with `isopatch_ideal_lattice MESH --surface ... --sizes SIZES --json`: the H nRMS
+    of ideal equilateral rings at the mesh's vertex count (bench/ideal_lattice). Left None on failure."""
+    if not (tool and run.ok and run.mesh):
+        return
+    args = [tool, run.mesh, "--surface", surface[0], *surface[1:], "--sizes", sizes, "--json"]
+    code, stdout, err = run_command(args, ANALYZE_TIMEOUT_S)
+    if code != 0:
+        print(f"[quality]    ideal lattice failed: {err.strip()}", file=sys.stderr, flush=True)
+        return
+    try:
+        run.ideal = json.loads(stdout.strip().splitlines()[-1])
+    except (ValueError, IndexError) as e:
+        print(f"[quality]    unreadable ideal-lattice JSON: {e}", file=sys.stderr, flush=True)
 
 
 def now() -> float:

@@ -1,5 +1,6 @@
 """Unit tests of the quality report's --max-error checks (bench/quality_report/max_error.py): CGAL's
-H nRMS at a vertex count, the ratio and the verdict. Run by ctest (tests/report/CMakeLists.txt)."""
+H nRMS at a vertex count, the ratio and the verdict; and of the ideal-lattice yardstick set beside the
+H checks (max_error.ideal_ratio, targets.h_versus_cgal). Run by ctest (tests/report/CMakeLists.txt)."""
 
 import math
 import os
@@ -9,6 +10,8 @@ import unittest
 sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "bench", "quality_report"))
 
 import max_error  # noqa: E402
+import targets  # noqa: E402
+from metrics import metrics  # noqa: E402
 from runs import Run  # noqa: E402
 from surfaces import SurfaceSpec  # noqa: E402
 
@@ -75,6 +78,35 @@ class Verdict(unittest.TestCase):
         status, why = max_error.check(TORUS, analysed("max-error", 10000, 0.001, centroid=1.2), CGAL)
         self.assertEqual(status, "**not met**")
         self.assertIn("EPS", why)
+
+
+class IdealLattice(unittest.TestCase):
+    def test_ratio_to_cgal_at_the_runs_count(self):
+        run = analysed("max-error", 10000, 0.02)
+        run.ideal = {"nrms_mean": 0.025, "nrms_best": 0.02}
+        self.assertAlmostEqual(max_error.ideal_ratio(run, CGAL), 0.5)
+
+    def test_missing_yardstick_or_cgal_gives_none(self):
+        run = analysed("max-error", 10000, 0.02)
+        self.assertIsNone(max_error.ideal_ratio(run, CGAL))
+        run.ideal = {"nrms_mean": 0.025}
+        self.assertIsNone(max_error.ideal_ratio(run, []))
+
+    def test_the_yardstick_does_not_change_the_verdict(self):
+        run = analysed("max-error", 10000, 0.0099)
+        run.ideal = {"nrms_mean": 1.0}
+        self.assertEqual(max_error.check(TORUS, run, CGAL), ("met", ""))
+
+    def test_edge_length_check_shows_both_ratios(self):
+        p, c = analysed("projection", 2000, 0.04), CGAL[0]
+        p.ideal = {"nrms_mean": 0.12}
+        v = targets.h_versus_cgal(p, metrics(p.analysis), c, metrics(c.analysis))
+        self.assertAlmostEqual(v[0], 0.5)
+        self.assertAlmostEqual(v[1], 1.5)
+        self.assertEqual(targets.describe_h_ratio(v), "0.500× CGAL's (ideal lattice 1.50×)")
+        p.ideal = None
+        v = targets.h_versus_cgal(p, metrics(p.analysis), c, metrics(c.analysis))
+        self.assertEqual(targets.describe_h_ratio(v), "0.500× CGAL's")
 
 
 if __name__ == "__main__":
