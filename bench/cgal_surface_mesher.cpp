@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "cgal_peer/peer_mesher.hpp"
+#include "tool_errors.hpp"
 
 namespace {
 
@@ -99,18 +100,5 @@ int main(int argc, char** argv) {
   app.add_flag("--keep-box-faces", a.peer.keep_box_faces,
                "Keep the facets closing an open surface on the box");
   app.add_flag("--json", a.json, "Print one JSON line instead of a summary");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
-  try {
-    return run(a);
-  } catch (const isopatch::Error& e) {
-    std::fprintf(stderr, "isopatch_cgal_peer: %s\n", e.what());
-    return isopatch::exit_code(e.kind());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "isopatch_cgal_peer: internal error: %s\n", e.what());
-    return 1;
-  }
+  return isopatch::bench::run_tool("isopatch_cgal_peer", app, argc, argv, [&] { return run(a); });
 }

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "ideal_lattice/ideal_rings.hpp"
+#include "tool_errors.hpp"
 
 namespace {
 
@@ -71,18 +72,5 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(std::size_t{1}, std::size_t{10000000}))
       ->capture_default_str();
   app.add_flag("--json", a.json, "Print one JSON line instead of a summary");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e) == 0 ? 0 : 2;
-  }
-  try {
-    return run(a);
-  } catch (const isopatch::Error& e) {
-    std::fprintf(stderr, "isopatch_ideal_lattice: %s\n", e.what());
-    return isopatch::exit_code(e.kind());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "isopatch_ideal_lattice: internal error: %s\n", e.what());
-    return 1;
-  }
+  return isopatch::bench::run_tool("isopatch_ideal_lattice", app, argc, argv, [&] { return run(a); });
 }
