@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -34,35 +35,16 @@ std::optional<Vec3> lift(const Surface& surface, const Vec3& p, const Vec3& n, d
 }
 
 /// Cotangent mean curvature at `centre` of the closed fan over `ring` (counter-clockwise about the
-/// outward normal), with the mixed Voronoi area and the fan's area-weighted normal, as
-/// discrete_curvature computes it for a mesh vertex. NaN for a degenerate triangle.
+/// outward normal): discrete_curvature of the seven-vertex fan, whose centre is its only interior
+/// vertex, so the value is the one `isopatch analyze` gives a mesh vertex with this ring. NaN for a
+/// degenerate triangle.
 double fan_mean_curvature(const Vec3& centre, const std::array<Vec3, kRing>& ring) {
-  Vec3 laplacian = Vec3::Zero(), normal = Vec3::Zero();
-  double area = 0.0;
-  for (int k = 0; k < kRing; ++k) {
-    const std::array<Vec3, 3> x{centre, ring[static_cast<std::size_t>(k)],
-                                ring[static_cast<std::size_t>((k + 1) % kRing)]};
-    const Vec3 cross = (x[1] - x[0]).cross(x[2] - x[0]);
-    const double twice_area = cross.norm();
-    if (!(twice_area > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-    normal += cross;
-    std::array<double, 3> cot{};
-    int obtuse = -1;
-    for (int c = 0; c < 3; ++c) {
-      const Vec3& p = x[static_cast<std::size_t>(c)];
-      const double d =
-          (x[static_cast<std::size_t>((c + 1) % 3)] - p).dot(x[static_cast<std::size_t>((c + 2) % 3)] - p);
-      cot[static_cast<std::size_t>(c)] = d / twice_area;
-      if (d < 0.0) obtuse = c;
-    }
-    const Vec3 to_a = x[0] - x[1], to_b = x[0] - x[2];
-    laplacian += cot[2] * to_a + cot[1] * to_b;
-    area += obtuse < 0 ? (to_a.squaredNorm() * cot[2] + to_b.squaredNorm() * cot[1]) / 8.0
-                       : twice_area / (obtuse == 0 ? 4.0 : 8.0);
-  }
-  const double n = normal.norm();
-  if (!(n > 0.0 && area > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-  return laplacian.dot(normal / n) / (4.0 * area);
+  Mesh fan;
+  fan.positions.reserve(kRing + 1);
+  fan.positions.push_back(centre);
+  fan.positions.insert(fan.positions.end(), ring.begin(), ring.end());
+  for (std::uint32_t k = 0; k < kRing; ++k) fan.triangles.push_back({0, 1 + k, 1 + (k + 1) % kRing});
+  return discrete_curvature(fan).mean[0];
 }
 
 /// Interior vertices of a mesh: those whose every edge has two triangles.
@@ -78,6 +60,7 @@ std::vector<std::size_t> interior_vertices(const Mesh& mesh) {
 
 IdealRingResult ideal_ring_error(const Mesh& mesh, const Surface& surface, const IdealRingOptions& options) {
   if (options.orientations < 1) throw InputError("orientations must be at least 1");
+  if (options.max_samples < 1) throw InputError("max_samples must be at least 1");
   const std::vector<std::size_t> interior = interior_vertices(mesh);
   double area = 0.0, curvature_area = 0.0;
   // Largest principal curvature per vertex (graded sizes), floored so that flat parts get finite rings.

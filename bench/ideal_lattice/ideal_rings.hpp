@@ -38,7 +38,8 @@ struct IdealRingResult {
 
 /// The error of ideal rings centred at the interior vertices of `mesh` (which lie on `surface`), sized
 /// from the mesh's total area and vertex count as `options.sizes` says.
-/// \throw InputError when the mesh has no interior vertex or no area, or orientations < 1.
+/// \throw InputError when the mesh has no interior vertex or no area, orientations < 1 or
+///        max_samples < 1.
 IdealRingResult ideal_ring_error(const Mesh& mesh, const Surface& surface, const IdealRingOptions& options);
 
 }  // namespace isopatch::bench

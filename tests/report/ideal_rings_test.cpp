@@ -34,7 +34,8 @@ TEST(IdealRings, GiveTheSecondOrderErrorOfALatticeOnATorus) {
   // About 1.9k vertices: a parametric valence-6 torus mesh of that size has H nRMS near 0.002; the
   // rings' error is of that order, falls like h^2 and the best orientation is never worse than the mean.
   const SurfacePtr s = catalogue_surface("torus");
-  const IdealRingResult coarse = ideal_ring_error(mesh_of(*s, 0.1), *s, {});
+  const Mesh coarse_mesh = mesh_of(*s, 0.1);
+  const IdealRingResult coarse = ideal_ring_error(coarse_mesh, *s, {});
   const IdealRingResult fine = ideal_ring_error(mesh_of(*s, 0.05), *s, {});
   EXPECT_GT(coarse.nrms_mean, 2e-4);
   EXPECT_LT(coarse.nrms_mean, 5e-3);
@@ -45,7 +46,7 @@ TEST(IdealRings, GiveTheSecondOrderErrorOfALatticeOnATorus) {
   // kappa_max is 1 / (tube radius) everywhere on a torus: graded rings are the uniform ones.
   IdealRingOptions graded;
   graded.sizes = RingSizes::Graded;
-  EXPECT_NEAR(ideal_ring_error(mesh_of(*s, 0.1), *s, graded).nrms_mean, coarse.nrms_mean, 1e-12);
+  EXPECT_NEAR(ideal_ring_error(coarse_mesh, *s, graded).nrms_mean, coarse.nrms_mean, 1e-12);
 }
 
 TEST(IdealRings, GradedSizesHelpWhereTheCurvatureVaries) {
@@ -67,7 +68,11 @@ TEST(IdealRings, RejectBadInput) {
   EXPECT_THROW(ideal_ring_error(Mesh{}, *s, {}), InputError);
   IdealRingOptions none;
   none.orientations = 0;
-  EXPECT_THROW(ideal_ring_error(mesh_of(*s, 0.3), *s, none), InputError);
+  const Mesh mesh = mesh_of(*s, 0.3);
+  EXPECT_THROW(ideal_ring_error(mesh, *s, none), InputError);
+  IdealRingOptions no_samples;
+  no_samples.max_samples = 0;
+  EXPECT_THROW(ideal_ring_error(mesh, *s, no_samples), InputError);
 }
 
 }  // namespace
