@@ -74,6 +74,9 @@ struct RemeshStats {
   std::size_t repairs = 0;          ///< small-angle triangles removed by the final pass
   std::size_t rejected_moves = 0;   ///< relaxation moves skipped (fold, projection failure, box)
   std::size_t exactness_moves = 0;  ///< vertex moves kept by the curvature sweeps
+  /// With max_error: triangles whose centroid is still farther than max_error from f = 0 at the end
+  /// (after the splits that enforce the bound).
+  std::size_t error_bound_violations = 0;
   std::uint64_t gradient_evaluations = 0;
   std::uint64_t hessian_evaluations = 0;
 };

@@ -60,6 +60,8 @@ struct Settings {
   /// Octree depth limits (the root cell is the box made cubic). Surface cells start at the depth whose
   /// cell size fits the resolution and edge_length, clamped to [min_depth, max_depth]; cells that
   /// fail the single-sheet or acceptance tests are refined up to max_depth. 0 <= min <= max <= 12.
+  /// With automatic resolution, when the edge length asks for starting cells at max_depth or deeper, the
+  /// limit becomes that depth plus refinement_levels (at most 12), so small features can still be refined.
   int min_depth = 2;
   int max_depth = 8;
   /// With automatic resolution (resolution 0): the starting depth goes one level deeper while more than

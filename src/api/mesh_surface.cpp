@@ -71,6 +71,8 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
   stats->extra["remesh_repairs"] = static_cast<double>(r.repairs);
   stats->extra["remesh_rejected_moves"] = static_cast<double>(r.rejected_moves);
   stats->extra["remesh_exactness_moves"] = static_cast<double>(r.exactness_moves);
+  if (settings.max_error)
+    stats->extra["error_bound_violations"] = static_cast<double>(r.error_bound_violations);
   stats->extra["hessian_evaluations"] = static_cast<double>(r.hessian_evaluations);
 }
 

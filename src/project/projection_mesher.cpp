@@ -59,6 +59,8 @@ constexpr int kMaxRounds = 8;
 
 /// Automatic resolution aims at this many segments per side (cells of 4..8 edge lengths).
 constexpr double kAutoSegments = 8.0;
+/// The deepest octree level a mesh may use (Settings::max_depth).
+constexpr int kDepthLimit = 12;
 
 void check_settings(const Settings& s) {
   if (s.edge_length && !(std::isfinite(*s.edge_length) && *s.edge_length > 0.0))
@@ -67,7 +69,7 @@ void check_settings(const Settings& s) {
       (s.resolution < PatchTemplate::kMinResolution || s.resolution > PatchTemplate::kMaxResolution))
     throw InputError("resolution must be 0 (automatic) or between 1 and 64, got " +
                      std::to_string(s.resolution));
-  if (s.min_depth < 0 || s.max_depth > 12 || s.min_depth > s.max_depth)
+  if (s.min_depth < 0 || s.max_depth > kDepthLimit || s.min_depth > s.max_depth)
     throw InputError("depths must satisfy 0 <= min-depth <= max-depth <= 12, got " +
                      std::to_string(s.min_depth) + " and " + std::to_string(s.max_depth));
   if (!(s.max_ray_angle > 0.0 && s.max_ray_angle < 90.0) ||
@@ -96,12 +98,28 @@ double target_edge(const Box& box, const Settings& s) {
 
 /// With a fixed resolution r: the depth whose cells are closest (in log scale) to r * edge length.
 /// With automatic resolution: the coarsest depth whose cells are at most kAutoSegments edges long.
-int initial_depth(const Lattice& lattice, const Box& box, const Settings& s) {
+/// Not clamped.
+double depth_for_edge(const Lattice& lattice, const Box& box, const Settings& s) {
   const double edge = target_edge(box, s);
-  const double depth = s.resolution > 0 ? std::round(std::log2(lattice.size / (edge * s.resolution)))
-                                        : std::ceil(std::log2(lattice.size / (edge * kAutoSegments)) - 1e-9);
-  return static_cast<int>(
-      std::clamp(depth, static_cast<double>(s.min_depth), static_cast<double>(s.max_depth)));
+  return s.resolution > 0 ? std::round(std::log2(lattice.size / (edge * s.resolution)))
+                          : std::ceil(std::log2(lattice.size / (edge * kAutoSegments)) - 1e-9);
+}
+
+/// The refinement limit: max_depth, raised with automatic resolution when the edge length asks for
+/// starting cells at or below it to that depth plus refinement_levels (at most kDepthLimit). Otherwise an
+/// edge length far below the finest cells leaves features of a few cells (a sphere of radius 0.01 in a
+/// box of side 2 at depth 8) no room to refine, and the fans that close the rejected patches fold over.
+/// A fixed resolution keeps max_depth (single-cell meshes set both depths to 0).
+int depth_limit(const Lattice& lattice, const Box& box, const Settings& s) {
+  if (s.resolution != 0) return s.max_depth;
+  const double wanted = depth_for_edge(lattice, box, s);
+  if (!(wanted >= s.max_depth)) return s.max_depth;
+  return static_cast<int>(std::min<double>(kDepthLimit, wanted + s.refinement_levels));
+}
+
+int initial_depth(const Lattice& lattice, const Box& box, const Settings& s, int max_depth) {
+  return static_cast<int>(std::clamp(depth_for_edge(lattice, box, s), static_cast<double>(s.min_depth),
+                                     static_cast<double>(max_depth)));
 }
 
 CoordinateKind coordinate_kind(const Settings& s) {
@@ -576,7 +594,8 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   PartitionSettings ps;
   ps.adaptive = true;
   ps.cancel = settings.cancel;
-  ps.surface_depth = initial_depth(root, box, settings);
+  const int max_depth = depth_limit(root, box, settings);
+  ps.surface_depth = initial_depth(root, box, settings, max_depth);
   const SizeSpec sizes = size_spec(settings, box);
   const std::function<double(const Vec3&)> size_at = size_function(surface, sizes);
   for (int round = 0;; ++round) {
@@ -584,11 +603,10 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     // Cells whose topology is in doubt (two sheets, an ambiguous face) are split by the partition down to
     // max_depth: a coarser fan there would give a closed mesh of the wrong topology. Rejected patches
     // are refined at most refinement_levels below the starting depth (a size field: down to max_depth).
-    ps.max_depth = std::max(settings.max_depth, ps.surface_depth);
+    ps.max_depth = std::max(max_depth, ps.surface_depth);
     const int patch_depth = std::max(
-        ps.surface_depth, sizes.varies()
-                              ? settings.max_depth
-                              : std::min(settings.max_depth, ps.surface_depth + settings.refinement_levels));
+        ps.surface_depth,
+        sizes.varies() ? max_depth : std::min(max_depth, ps.surface_depth + settings.refinement_levels));
     const Partition partition = build_partition(surface, box, ps);
     partition_values += partition.stats.value_evaluations;
     partition_gradients += partition.stats.gradient_evaluations;
@@ -596,7 +614,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       settings.progress(Progress{static_cast<std::size_t>(round), static_cast<std::size_t>(kMaxRounds)});
     if (partition.leaves.empty()) {
       // Nothing found yet: look finer (cheap where intervals or the heuristic prune), down to max_depth.
-      if (ps.surface_depth >= settings.max_depth)
+      if (ps.surface_depth >= max_depth)
         throw NoSurfaceError("no surface in the box: f = 0 crosses no cell down to depth " +
                              std::to_string(ps.surface_depth));
       ++ps.surface_depth;
@@ -607,7 +625,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
     // starting cells are too curved, start one level deeper (once per depth, before any local split).
     if (!depth_settled) {
       depth_settled = settings.resolution != 0 || settings.max_cell_curvature == 0.0 ||
-                      ps.surface_depth >= settings.max_depth ||
+                      ps.surface_depth >= max_depth ||
                       !starting_cells_too_curved(partition, surface, ps.surface_depth,
                                                  settings.max_cell_curvature, size_at);
       if (!depth_settled) {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -35,14 +36,20 @@ constexpr double kGlideAngle = 15.0;
 /// this) (degrees). 25 rather than the repair's 20: the same or lower curvature error on every surface
 /// but the torus at 2k vertices (docs/whole-surface-quality.md), and a better smallest angle.
 constexpr double kExactnessAngleFloor = 25.0;
-/// Edge length thresholds relative to the target size. The projection mesh is regular inside its
-/// patches and its edges already follow the target, so only clear outliers are split or collapsed:
-/// Botsch & Kobbelt's 4/3 and 4/5 rewire most seams and cost valence-6 vertices and curvature accuracy
-/// (docs/whole-surface-quality.md). With a chordal error bound, edges longer than 4/3 of the size are split,
-/// as size_for_error assumes.
-constexpr double kSplitFactor = 2.0;
-constexpr double kErrorSplitFactor = 4.0 / 3.0;
-constexpr double kCollapseFactor = 0.1;
+/// Edge length thresholds relative to the target size. The n-gon templates stretch the patch lattice
+/// (a quad patch fills 90 degrees with each 60-degree lattice wedge: 1.5 times across), so rings are
+/// anisotropic (median 1.24-1.41 on the report's surfaces) until edges beyond 4/3 h are split and edges
+/// under 0.7 h collapsed: median 1.17-1.19 and a lower curvature error at the same vertex count on most
+/// surfaces (docs/whole-surface-quality.md; 0.8 h, Botsch & Kobbelt's 4/5, costs more on thin surfaces).
+/// With a chordal error bound, edges shorter than the size are the bound's margin (size_for_error assumes
+/// edges up to 4/3 h), so only slivers' edges (0.1 h) are collapsed there.
+constexpr double kSplitFactor = 4.0 / 3.0;
+constexpr double kCollapseFactor = 0.7;
+constexpr double kErrorCollapseFactor = 0.1;
+/// The chordal error bound is enforced at the end down to this fraction of EPS, in at most kBoundRounds
+/// rounds of splits (enforce_error_bound).
+constexpr double kBoundMargin = 0.9;
+constexpr int kBoundRounds = 8;
 
 class Remesher {
  public:
@@ -87,6 +94,7 @@ class Remesher {
     // A repair can make a new small angle next to one it already passed: repeat while it changes things.
     for (int pass = 0; pass < 3; ++pass)
       if (repair_small_angles() == 0) break;
+    if (settings_.max_error) stats_.error_bound_violations = enforce_error_bound();
     stats_.gradient_evaluations = f_.gradient_count();
     stats_.hessian_evaluations = sizes_.hessian_evaluations();
     return stats_;
@@ -146,7 +154,7 @@ class Remesher {
     return (mesh_.positions[a] - mesh_.positions[b]).norm();
   }
 
-  double split_factor() const { return settings_.max_error ? kErrorSplitFactor : kSplitFactor; }
+  double collapse_factor() const { return settings_.max_error ? kErrorCollapseFactor : kCollapseFactor; }
 
   bool try_split(std::uint32_t a, std::uint32_t b) {
     const auto e = mesh_.interior_edge(a, b);
@@ -171,7 +179,7 @@ class Remesher {
     std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
     for (const auto& [a, b] : mesh_.edges()) {
       const double l = length(a, b);
-      if (l > split_factor() * sizes_.edge(a, b)) work.push_back({-l, {a, b}});
+      if (l > kSplitFactor * sizes_.edge(a, b)) work.push_back({-l, {a, b}});
     }
     std::sort(work.begin(), work.end());
     for (const auto& [key, edge] : work) try_split(edge.first, edge.second);
@@ -234,15 +242,15 @@ class Remesher {
     std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
     for (const auto& [a, b] : mesh_.edges()) {
       const double l = length(a, b);
-      if (l < kCollapseFactor * sizes_.edge(a, b)) work.push_back({l, {a, b}});
+      if (l < collapse_factor() * sizes_.edge(a, b)) work.push_back({l, {a, b}});
     }
     std::sort(work.begin(), work.end());
     for (const auto& [l, edge] : work) {
       const auto [a, b] = edge;
       if (!mesh_.alive(a) || !mesh_.alive(b) || !mesh_.adjacent(a, b)) continue;
       const double h = sizes_.edge(a, b);
-      if (length(a, b) >= kCollapseFactor * h) continue;
-      try_collapse(a, b, split_factor() * h);
+      if (length(a, b) >= collapse_factor() * h) continue;
+      try_collapse(a, b, kSplitFactor * h);
     }
   }
 
@@ -387,6 +395,65 @@ class Remesher {
     }
     stats_.repairs += changes;
     return changes;
+  }
+
+  /// |f| / |grad f| at the centroid of triangle t: its first-order distance from f = 0 (what `analyze`
+  /// reports as the centroid distance).
+  double centroid_distance(const Triangle& t) const {
+    const Vec3 c = (mesh_.positions[t[0]] + mesh_.positions[t[1]] + mesh_.positions[t[2]]) / 3.0;
+    const auto vg = f_.value_gradient_unchecked(c);
+    const double g = vg.gradient.norm();
+    return g > 0.0 && std::isfinite(vg.value) ? std::abs(vg.value) / g
+                                              : std::numeric_limits<double>::infinity();
+  }
+
+  /// The longest edges of the triangles whose centroid is farther than `bound` from f = 0, longest
+  /// first, each once.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges_of_distant_triangles(double bound) const {
+    std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
+    for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
+      if (!mesh_.triangle_alive[t]) continue;
+      const Triangle& tri = mesh_.triangles[t];
+      if (!(centroid_distance(tri) > bound)) continue;
+      std::pair<std::uint32_t, std::uint32_t> longest{tri[0], tri[1]};
+      for (int i = 1; i < 3; ++i) {
+        const std::uint32_t a = tri[static_cast<std::size_t>(i)],
+                            b = tri[static_cast<std::size_t>((i + 1) % 3)];
+        if (length(a, b) > length(longest.first, longest.second)) longest = {a, b};
+      }
+      if (longest.first > longest.second) std::swap(longest.first, longest.second);
+      work.push_back({-length(longest.first, longest.second), longest});
+    }
+    std::sort(work.begin(), work.end());
+    work.erase(std::unique(work.begin(), work.end()), work.end());
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    for (const auto& [key, edge] : work) edges.push_back(edge);
+    return edges;
+  }
+
+  /// The size law takes the curvature of one point and the edges' spread from the grading, so where the
+  /// curvature changes within an edge (rounded box edges, the tips of a thin ellipsoid that the
+  /// partition cut short) a triangle's centroid can end up beyond the bound. Splits the longest edge of
+  /// each such triangle, the new vertex projected onto f = 0, until none is beyond kBoundMargin * EPS or
+  /// kBoundRounds rounds pass; the small-angle repair follows each round (relaxation would bend the new
+  /// vertices back: x^16 + y^16 + z^16 = 1 at EPS 0.0012 stayed at 1.09 EPS with it, 0.89 EPS without).
+  /// Returns the triangles still beyond EPS.
+  std::size_t enforce_error_bound() {
+    const double eps = *settings_.max_error;
+    for (int round = 0; round < kBoundRounds; ++round) {
+      check_cancel();
+      std::size_t splits = 0;
+      for (const auto& [a, b] : edges_of_distant_triangles(kBoundMargin * eps))
+        if (mesh_.alive(a) && mesh_.alive(b) && mesh_.adjacent(a, b) && try_split(a, b)) ++splits;
+      if (splits == 0) break;
+      sizes_.update(mesh_);
+      for (int pass = 0; pass < 3; ++pass)
+        if (repair_small_angles() == 0) break;
+    }
+    std::size_t beyond = 0;
+    for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t)
+      if (mesh_.triangle_alive[t] && centroid_distance(mesh_.triangles[t]) > eps) ++beyond;
+    return beyond;
   }
 
   std::vector<int> slide_axis_;  ///< per vertex slot at the start; empty without a box
