@@ -30,6 +30,10 @@ struct ComponentTopology {
   /// Signed enclosed volume by the divergence theorem; positive for a closed outward-oriented
   /// component. Meaningless (origin-dependent) when the component has boundary edges.
   double volume = 0.0;
+  /// Closed and oriented outward: positive volume where the winding number of the other closed
+  /// components about it is 0, negative where it is 1 (the wall of a cavity faces into the cavity).
+  /// With more than 64 closed components: positive volume.
+  bool outward = false;
 
   bool closed() const { return boundary_edges == 0 && non_manifold_edges == 0; }
 };
@@ -60,7 +64,7 @@ struct TopologyReport {
   bool manifold() const { return non_manifold_edges == 0 && non_manifold_vertices == 0; }
   /// Every edge of two triangles is traversed in opposite directions by them.
   bool consistently_oriented() const { return inconsistent_edges == 0; }
-  /// Consistently oriented and every closed component encloses a positive volume.
+  /// Consistently oriented, and every closed component outward (ComponentTopology::outward).
   bool outward_oriented() const;
 };
 

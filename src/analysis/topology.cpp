@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <string>
 
@@ -105,12 +106,62 @@ std::optional<int> genus_of(const ComponentTopology& c) {
   return static_cast<int>(twice_genus / 2);
 }
 
+/// Closed components beyond which nesting is not tested (each test costs a pass over the triangles).
+constexpr std::ptrdiff_t kMaxNestingTests = 64;
+
+/// Solid angle of triangle (a, b, c) seen from the origin, over 4 pi (Van Oosterom & Strackee 1983):
+/// summed over a closed mesh, the winding number of the origin.
+double winding_share(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double la = a.norm(), lb = b.norm(), lc = c.norm();
+  const double numerator = a.dot(b.cross(c));
+  const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+  return std::atan2(numerator, denominator) / (2.0 * std::numbers::pi);
+}
+
+/// Sets `outward` on every closed component: the winding number of the other closed components about
+/// one of its vertices is 0 (an outer wall) and its volume positive, or 1 (the wall of a cavity) and its
+/// volume negative. With more than kMaxNestingTests closed components (marching cubes of noise) only
+/// the sign of the volume is looked at.
+void mark_outward_components(const Mesh& mesh, const std::vector<std::uint32_t>& kept,
+                             const std::vector<std::uint32_t>& component,
+                             std::vector<ComponentTopology>& components) {
+  const auto closed = std::count_if(components.begin(), components.end(),
+                                    [](const ComponentTopology& c) { return c.closed(); });
+  for (std::uint32_t index = 0; index < components.size(); ++index) {
+    ComponentTopology& c = components[index];
+    if (!c.closed()) continue;
+    c.outward = c.volume > 0.0;
+    if (closed > kMaxNestingTests || closed == 1) continue;
+    // A vertex of this component; every other closed component's triangles wind around it.
+    Vec3 p = Vec3::Zero();
+    for (std::uint32_t t : kept)
+      if (component[mesh.triangles[t][0]] == index) {
+        p = mesh.positions[mesh.triangles[t][0]];
+        break;
+      }
+    double winding = 0.0;
+    for (std::uint32_t t : kept) {
+      const std::uint32_t other = component[mesh.triangles[t][0]];
+      if (other == index || !components[other].closed()) continue;
+      const Triangle& tri = mesh.triangles[t];
+      winding +=
+          winding_share(mesh.positions[tri[0]] - p, mesh.positions[tri[1]] - p, mesh.positions[tri[2]] - p);
+    }
+    if (std::abs(winding) < 0.5)
+      c.outward = c.volume > 0.0;
+    else if (std::abs(winding - 1.0) < 0.5)
+      c.outward = c.volume < 0.0;
+    else
+      c.outward = false;
+  }
+}
+
 }  // namespace
 
 bool TopologyReport::outward_oriented() const {
   if (!consistently_oriented()) return false;
   return std::all_of(components.begin(), components.end(),
-                     [](const ComponentTopology& c) { return !c.closed() || c.volume > 0.0; });
+                     [](const ComponentTopology& c) { return !c.closed() || c.outward; });
 }
 
 TopologyReport analyze_topology(const Mesh& mesh) {
@@ -227,6 +278,8 @@ TopologyReport analyze_topology(const Mesh& mesh) {
     if (fans[v] > 1) ++c.non_manifold_vertices;
     if (on_boundary[v] && boundary_sets.find(v) == v) ++c.boundary_loops;
   }
+
+  mark_outward_components(mesh, kept, component, report.components);
 
   for (ComponentTopology& c : report.components) {
     c.euler_characteristic =

@@ -189,6 +189,38 @@ TEST(Topology, InwardOrientationHasNegativeVolume) {
   EXPECT_NEAR(r.components[0].volume, -1.0, 1e-14);
 }
 
+// A hollow cube: the outer wall outward, the wall of the cavity facing into the cavity (negative
+// volume). That is the outward orientation of the solid between them; both walls outward, or both
+// inward, are not.
+TEST(Topology, CavityWallFacesIntoTheCavity) {
+  auto scaled_cube = [](double scale, const Vec3& shift, bool inward) {
+    Mesh m = cube();
+    for (Vec3& p : m.positions) p = scale * p + shift;
+    if (inward)
+      for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
+    return m;
+  };
+  Mesh hollow = scaled_cube(3.0, Vec3::Zero(), false);
+  append(hollow, scaled_cube(1.0, Vec3::Constant(1.0), true));
+  const TopologyReport r = analyze_topology(hollow);
+  ASSERT_EQ(r.components.size(), 2u);
+  EXPECT_TRUE(r.components[0].outward);
+  EXPECT_TRUE(r.components[1].outward);
+  EXPECT_TRUE(r.outward_oriented());
+
+  Mesh both_out = scaled_cube(3.0, Vec3::Zero(), false);
+  append(both_out, scaled_cube(1.0, Vec3::Constant(1.0), false));
+  EXPECT_FALSE(analyze_topology(both_out).outward_oriented());
+
+  Mesh both_in = scaled_cube(3.0, Vec3::Zero(), true);
+  append(both_in, scaled_cube(1.0, Vec3::Constant(1.0), true));
+  EXPECT_FALSE(analyze_topology(both_in).outward_oriented());
+
+  // A cube inside the cavity (three nested walls) is an outer wall again.
+  append(hollow, scaled_cube(0.2, Vec3::Constant(1.4), false));
+  EXPECT_TRUE(analyze_topology(hollow).outward_oriented());
+}
+
 TEST(Topology, NonManifoldEdgeOfThreeTriangles) {
   Mesh m = tetrahedron();
   m.positions.emplace_back(-1, -1, 0);

@@ -166,6 +166,28 @@ TEST(ProjectionMesher, StartsDeeperOnlyWhereCellsAreCurved) {
   }
 }
 
+// A sphere of radius 0.01 in a box of side 2 at edge length 0.0007: the edge asks for starting cells
+// below the default finest depth (8, cells of 0.0078, two and a half across the sphere), where the
+// rejected patches could not be refined and a fan closed them with folded triangles. The refinement
+// limit follows the edge length down.
+TEST(ProjectionMesher, EdgeLengthBelowTheFinestCellsRaisesTheDepthLimit) {
+  const auto s = make_surface([](auto x, auto y, auto z) { return x * x + y * y + z * z - 1e-4; },
+                              Box{Vec3::Constant(-1.0), Vec3::Constant(1.0)});
+  Settings settings;
+  settings.edge_length = 7e-4;
+  MeshStats stats;
+  const Mesh patches = mesh_projection(*s, settings, &stats);
+  EXPECT_GE(stats.extra.at("depth"), 9.0);
+  EXPECT_EQ(stats.extra.at("fallback_cells"), 0.0);
+  EXPECT_EQ(test::count_self_intersections(patches), 0u);
+  const Mesh mesh = mesh_surface(*s, settings);
+  const QualityReport q = analyze_quality(mesh, s.get());
+  EXPECT_TRUE(q.topology.watertight() && q.topology.manifold() && q.topology.outward_oriented());
+  EXPECT_EQ(q.topology.genus, 0);
+  EXPECT_GE(q.shape.min_angle.min, 20.0);
+  EXPECT_EQ(test::count_self_intersections(mesh), 0u);
+}
+
 TEST(ProjectionMesher, ReportsNoSurfaceAndNaN) {
   const Box box{Vec3::Constant(-1), Vec3::Constant(1)};
   Settings settings;
