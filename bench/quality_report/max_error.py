@@ -75,21 +75,23 @@ def cgal_h_nrms_at(cgal_runs: list, vertices: int) -> float | None:
     return points[-1][1]
 
 
+def _over_cgal(value, run, cgal_runs: list) -> float | None:
+    """value over CGAL's H nRMS at the run's vertex count (cgal_h_nrms_at); None when either is missing."""
+    theirs = cgal_h_nrms_at(cgal_runs, run.vertices) if run.ok else None
+    return None if value is None or not theirs else value / theirs
+
+
 def h_ratio(run, cgal_runs: list) -> float | None:
-    """The run's H nRMS over CGAL's at its vertex count (cgal_h_nrms_at); None when either is missing."""
-    if not run.ok or not run.analysis:
-        return None
-    ours = metrics(run.analysis)["h_nrms"]
-    theirs = cgal_h_nrms_at(cgal_runs, run.vertices)
-    return None if ours is None or not theirs else ours / theirs
+    """The run's H nRMS over CGAL's at its vertex count; None when either is missing."""
+    ours = metrics(run.analysis)["h_nrms"] if run.ok and run.analysis else None
+    return _over_cgal(ours, run, cgal_runs)
 
 
 def ideal_ratio(run, cgal_runs: list) -> float | None:
     """The ideal lattice's H nRMS (run.ideal: rings graded like --max-error at the run's vertex count)
     over CGAL's at that count; None when either is missing."""
     ideal = (run.ideal or {}).get("nrms_mean") if run.ok else None
-    theirs = cgal_h_nrms_at(cgal_runs, run.vertices) if run.ok else None
-    return None if ideal is None or not theirs else ideal / theirs
+    return _over_cgal(ideal, run, cgal_runs)
 
 
 def check(spec, run, cgal_runs: list) -> tuple[str, str]:

@@ -70,8 +70,8 @@ void check_settings(const Settings& s) {
     throw InputError("resolution must be 0 (automatic) or between 1 and 64, got " +
                      std::to_string(s.resolution));
   if (s.min_depth < 0 || s.max_depth > kDepthLimit || s.min_depth > s.max_depth)
-    throw InputError("depths must satisfy 0 <= min-depth <= max-depth <= 12, got " +
-                     std::to_string(s.min_depth) + " and " + std::to_string(s.max_depth));
+    throw InputError("depths must satisfy 0 <= min-depth <= max-depth <= " + std::to_string(kDepthLimit) +
+                     ", got " + std::to_string(s.min_depth) + " and " + std::to_string(s.max_depth));
   if (!(s.max_ray_angle > 0.0 && s.max_ray_angle < 90.0) ||
       !(s.max_boundary_ray_angle > 0.0 && s.max_boundary_ray_angle < 90.0))
     throw InputError("acceptance angles must lie strictly between 0 and 90 degrees");

@@ -407,55 +407,52 @@ class Remesher {
                                               : std::numeric_limits<double>::infinity();
   }
 
-  /// The longest edges of the triangles whose centroid is farther than `bound` from f = 0, longest
-  /// first, each once.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges_of_distant_triangles(double bound) const {
-    std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
-    for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
-      if (!mesh_.triangle_alive[t]) continue;
-      const Triangle& tri = mesh_.triangles[t];
-      if (!(centroid_distance(tri) > bound)) continue;
-      std::pair<std::uint32_t, std::uint32_t> longest{tri[0], tri[1]};
-      for (int i = 1; i < 3; ++i) {
-        const std::uint32_t a = tri[static_cast<std::size_t>(i)],
-                            b = tri[static_cast<std::size_t>((i + 1) % 3)];
-        if (length(a, b) > length(longest.first, longest.second)) longest = {a, b};
-      }
-      if (longest.first > longest.second) std::swap(longest.first, longest.second);
-      work.push_back({-length(longest.first, longest.second), longest});
-    }
-    std::sort(work.begin(), work.end());
-    work.erase(std::unique(work.begin(), work.end()), work.end());
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-    for (const auto& [key, edge] : work) edges.push_back(edge);
-    return edges;
+  /// The longest edge (lower index first) of a triangle.
+  std::pair<std::uint32_t, std::uint32_t> longest_edge(const Triangle& tri) const {
+    std::pair<std::uint32_t, std::uint32_t> longest{tri[0], tri[1]};
+    for (std::size_t i = 1; i < 3; ++i)
+      if (length(tri[i], tri[(i + 1) % 3]) > length(longest.first, longest.second))
+        longest = {tri[i], tri[(i + 1) % 3]};
+    if (longest.first > longest.second) std::swap(longest.first, longest.second);
+    return longest;
   }
 
   /// The size law takes the curvature of one point and the edges' spread from the grading, so where the
   /// curvature changes within an edge (the rounded edges of x^16 + y^16 + z^16 = 1) a triangle's centroid
-  /// can end up beyond the bound. Splits the longest edge of
-  /// each such triangle, the new vertex projected onto f = 0, until none is beyond kBoundMargin * EPS or
-  /// kBoundRounds rounds pass; the small-angle repair follows each round (relaxation would bend the new
-  /// vertices back: x^16 + y^16 + z^16 = 1 at EPS 0.0012 stayed at 1.09 EPS with it, 0.89 EPS without).
-  /// Returns the triangles still beyond EPS: where the partition cut a thin tip short, the splits there
-  /// make triangles whose normals leave their vertices' and are refused (a needle 1:0.05:0.05 along the
-  /// diagonal).
+  /// can end up beyond the bound. Splits the longest edge of each triangle beyond kBoundMargin * EPS
+  /// (longest first), the new vertex projected onto f = 0, until none is left or kBoundRounds rounds
+  /// pass; the small-angle repair follows each round (relaxation would bend the new vertices back:
+  /// x^16 + y^16 + z^16 = 1 at EPS 0.0012 stayed at 1.09 EPS with it, 0.89 EPS without). Each round
+  /// evaluates f once per triangle. Returns the triangles beyond EPS after the last change: where the
+  /// partition cut a thin tip short, the splits there make triangles whose normals leave their vertices'
+  /// and are refused (a needle 1:0.05:0.05 along the diagonal).
   std::size_t enforce_error_bound() {
     const double eps = *settings_.max_error;
-    for (int round = 0; round < kBoundRounds; ++round) {
+    for (int round = 0;; ++round) {
       check_cancel();
+      std::size_t beyond = 0;
+      std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
+      for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
+        if (!mesh_.triangle_alive[t]) continue;
+        const double distance = centroid_distance(mesh_.triangles[t]);
+        beyond += distance > eps;
+        if (!(distance > kBoundMargin * eps)) continue;
+        const auto edge = longest_edge(mesh_.triangles[t]);
+        work.push_back({-length(edge.first, edge.second), edge});
+      }
+      if (work.empty() || round == kBoundRounds) return beyond;
+      std::sort(work.begin(), work.end());
+      work.erase(std::unique(work.begin(), work.end()), work.end());
       std::size_t splits = 0;
-      for (const auto& [a, b] : edges_of_distant_triangles(kBoundMargin * eps))
+      for (const auto& [key, edge] : work) {
+        const auto [a, b] = edge;
         if (mesh_.alive(a) && mesh_.alive(b) && mesh_.adjacent(a, b) && try_split(a, b)) ++splits;
-      if (splits == 0) break;
+      }
+      if (splits == 0) return beyond;
       sizes_.update(mesh_);
       for (int pass = 0; pass < 3; ++pass)
         if (repair_small_angles() == 0) break;
     }
-    std::size_t beyond = 0;
-    for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t)
-      if (mesh_.triangle_alive[t] && centroid_distance(mesh_.triangles[t]) > eps) ++beyond;
-    return beyond;
   }
 
   std::vector<int> slide_axis_;  ///< per vertex slot at the start; empty without a box

@@ -21,8 +21,8 @@ struct QualityCase {
   double edge_length;
   int genus;
   /// Mean-curvature nRMS bound: the target, a fifth of CGAL's at a comparable size (torus 0.015;
-  /// tanglecube 0.019, CGAL 0.098 at 10k and 20k vertices in docs/quality.md; 0.0164 measured at 16k
-  /// vertices). On genus2 the target (about 0.017) is not met (0.020 measured at 16k vertices): held
+  /// tanglecube 0.019, CGAL 0.098 at 10k and 20k vertices in docs/quality.md; 0.0118 measured at 16k
+  /// vertices). On genus2 the target (about 0.017) is not met (0.020 measured at 15k vertices): held
   /// to a regression bound a quarter above what it reaches.
   double max_h_nrms;
 };

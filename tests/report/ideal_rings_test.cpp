@@ -50,7 +50,7 @@ TEST(IdealRings, GiveTheSecondOrderErrorOfALatticeOnATorus) {
 }
 
 TEST(IdealRings, GradedSizesHelpWhereTheCurvatureVaries) {
-  // genus2 at about 2.6k vertices: its tips are narrower than a uniform edge, the rings there are
+  // genus2 at about 1.5k vertices: its tips are narrower than a uniform edge, the rings there are
   // badly off; edges shrinking with the curvature (the --max-error law) give far less error.
   const SurfacePtr s = catalogue_surface("genus2");
   const Mesh mesh = mesh_of(*s, 0.05068);
