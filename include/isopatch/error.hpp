@@ -19,6 +19,7 @@ enum class ErrorKind {
   Evaluation,       ///< f returned NaN or infinity where it was evaluated
   NoSurface,        ///< f = 0 does not cross the box
   Limit,            ///< a resource budget (evaluations, time, vertices) was exhausted or cancelled
+  SingularSurface,  ///< grad f vanishes on f = 0 (a repeated factor, f = g^3): no gradient to mesh with
 };
 
 /// Exit code of the command-line tool for an error kind (0 is success, 1 internal, 2 usage).
@@ -62,6 +63,12 @@ class EvaluationError : public Error {
 class NoSurfaceError : public Error {
  public:
   explicit NoSurfaceError(const std::string& message) : Error(ErrorKind::NoSurface, message) {}
+};
+
+/// grad f vanishes on (much of) f = 0, so neither projection nor curvature can use it.
+class SingularSurfaceError : public Error {
+ public:
+  explicit SingularSurfaceError(const std::string& message) : Error(ErrorKind::SingularSurface, message) {}
 };
 
 /// A budget ran out or the run was cancelled.

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include "api/budgeted_surface.hpp"
+#include "surface/singular_level_set.hpp"
 #include "surface/target_size.hpp"
 #include "surface/zero_function.hpp"
 
@@ -79,7 +80,12 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
 /// Meshes with the method of `settings`, then cleans up (remesh.hpp) when asked.
 Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats) {
   // f = 0 everywhere is no surface, and neither mesher could tell quickly (see zero_function.hpp).
-  reject_zero_function(surface, settings.box.value_or(surface.box()));
+  const Box box = settings.box.value_or(surface.box());
+  reject_zero_function(surface, box);
+  // Projection and every clean-up follow grad f; marching cubes alone needs only signs.
+  const bool uses_gradient = settings.method == Method::Projection || settings.fair_iterations > 0 ||
+                             settings.remesh_iterations.value_or(0) > 0;
+  if (uses_gradient) reject_singular_level_set(surface, box);
   switch (settings.method) {
     case Method::MarchingCubes: {
       Mesh mesh = marching_cubes(surface, settings, stats);

@@ -21,6 +21,8 @@ int exit_code(ErrorKind kind) {
       return 8;
     case ErrorKind::Limit:
       return 9;
+    case ErrorKind::SingularSurface:
+      return 10;
   }
   return 1;
 }

@@ -81,6 +81,7 @@ TEST(Cli, BadInputGivesOneLineAndDistinctExitCode) {
       {"mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Parse},
       {"mesh \"x^2+y^2+z^2+1\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::NoSurface},
       {"mesh \"sqrt(x)+y\" --box -1,-1,-1,1,1,1 --method mc" + ok_out, ErrorKind::Evaluation},
+      {"mesh \"(x^2+y^2+z^2-1)^3\" --box -2,-2,-2,2,2,2" + ok_out, ErrorKind::SingularSurface},
       {"mesh @" + (dir / "missing.txt").string() + " --box -1,-1,-1,1,1,1 --method mc" + ok_out,
        ErrorKind::Io},
   };
