@@ -13,6 +13,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "mesh_warnings.hpp"
 #include "progress_line.hpp"
 
 namespace isopatch::cli {
@@ -117,9 +118,7 @@ int run_mesh(const MeshOptions& o) {
   if (o.fields) attach_fields(mesh, *surface);
   write_mesh(mesh, o.output);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
-  if (const auto it = stats.extra.find("error_bound_violations"); it != stats.extra.end() && it->second > 0)
-    std::fprintf(stderr, "warning: %g triangles have their centroid farther than --max-error from f = 0\n",
-                 it->second);
+  print_mesh_warnings(stats, stderr);
   return 0;
 }
 

@@ -146,9 +146,20 @@ bool needs_refinement(const Leaf& leaf) {
   return true;
 }
 
-std::size_t leaves_needing_refinement(const Partition& partition) {
-  return static_cast<std::size_t>(
-      std::count_if(partition.leaves.begin(), partition.leaves.end(), needs_refinement));
+struct DoubtfulLeaves {
+  std::size_t count = 0;
+  double largest_side = 0.0;  ///< of the largest doubtful leaf (0 without any)
+};
+
+/// The leaves still in doubt (needs_refinement) after the partition has split them to its depth limit.
+DoubtfulLeaves leaves_needing_refinement(const Partition& partition) {
+  DoubtfulLeaves doubtful;
+  for (const Leaf& leaf : partition.leaves)
+    if (needs_refinement(leaf)) {
+      ++doubtful.count;
+      doubtful.largest_side = std::max(doubtful.largest_side, leaf.box.size().maxCoeff());
+    }
+  return doubtful;
 }
 
 /// The target edge length at a point (target_size.hpp): constant unless max_error or a size_field is set.
@@ -661,7 +672,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       continue;
     }
     const int depth = ps.surface_depth;
-    const std::size_t doubtful = leaves_needing_refinement(partition);
+    const DoubtfulLeaves doubtful = leaves_needing_refinement(partition);
     mesh->triangles.shrink_to_fit();
     if (stats) {
       stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -677,7 +688,9 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
         stats->extra["patches_" + std::to_string(n)] = static_cast<double>(count);
       stats->extra["rejected_patches"] = static_cast<double>(counters.rejected_patches);
       stats->extra["rejected_sides"] = static_cast<double>(counters.rejected_sides);
-      stats->extra["doubtful_cells"] = static_cast<double>(doubtful);
+      stats->extra["doubtful_cells"] = static_cast<double>(doubtful.count);
+      stats->extra["doubtful_cell_size"] = doubtful.largest_side;
+      stats->extra["max_depth"] = ps.max_depth;
       stats->extra["refined_patches"] = static_cast<double>(counters.refined_patches);
       stats->extra["flat_corner_leaves"] = static_cast<double>(partition.stats.leaves_with_flat_corners);
       for (int d = 0; d <= Lattice::kMaxDepth; ++d)

@@ -220,5 +220,23 @@ TEST(Cli, ProgressLineEndsBeforeAnErrorMessage) {
   EXPECT_GT(last_progress(r.err, "slabs").first, 0) << r.err;
 }
 
+TEST(Cli, WarnsWhereCellsAtTheDepthLimitStayInDoubt) {
+  // Two spheres 0.01 apart (radii 0.995 and 1.005) cannot be told apart by cells of 0.19: the mesh is
+  // written, with a warning that names the depth limit; a surface the cells resolve gives no warning.
+  const auto dir = test::scratch_dir("cli_doubtful");
+  const std::string out = " -o " + (dir / "m.ply").string();
+  const auto thin =
+      test::run_command(kCli + " mesh \"(x^2+y^2+z^2-1)^2-0.0001\" --box -1.5,-1.5,-1.5,1.5,1.5,1.5" +
+                            " --max-depth 4 --edge-length 0.3 -q" + out,
+                        dir);
+  ASSERT_EQ(thin.exit_code, 0) << thin.err;
+  EXPECT_EQ(count_lines(thin.err), 1) << thin.err;
+  EXPECT_EQ(thin.err.rfind("warning: ", 0), 0u) << thin.err;
+  EXPECT_NE(thin.err.find("at the depth limit 4 (side 0.191)"), std::string::npos) << thin.err;
+  const auto torus = test::run_command(kCli + " mesh torus --edge-length 0.1 -q" + out, dir);
+  ASSERT_EQ(torus.exit_code, 0) << torus.err;
+  EXPECT_TRUE(torus.err.empty()) << torus.err;
+}
+
 }  // namespace
 }  // namespace isopatch
