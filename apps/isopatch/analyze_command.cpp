@@ -100,6 +100,15 @@ json to_json(const AccuracyReport& a) {
           {"gaussian_curvature", to_json(a.gaussian_curvature)}};
 }
 
+json to_json(const SelfIntersectionReport& r) {
+  json j = {{"pairs", r.pairs}, {"capped", r.capped}};
+  if (r.pairs > 0) {
+    j["example_triangles"] = {r.example[0], r.example[1]};
+    j["example_point"] = {r.example_point.x(), r.example_point.y(), r.example_point.z()};
+  }
+  return j;
+}
+
 // ---- text -----------------------------------------------------------------------------------------
 
 std::string yes_no(bool b) {
@@ -120,6 +129,17 @@ void print_topology(const TopologyReport& t) {
         "duplicate vertices %zu, unreferenced %zu\n",
         t.boundary_edges, t.non_manifold_edges, t.non_manifold_vertices, t.degenerate_triangles,
         t.duplicate_vertices, t.unreferenced_vertices);
+}
+
+void print_self_intersections(const SelfIntersectionReport& r) {
+  if (r.pairs == 0) {
+    std::printf("           self-intersections none\n");
+    return;
+  }
+  std::printf(
+      "           self-intersections %s%zu pairs of triangles (e.g. %zu and %zu at %.6g, %.6g, %.6g)\n",
+      r.capped ? "at least " : "", r.pairs, r.example[0], r.example[1], r.example_point.x(),
+      r.example_point.y(), r.example_point.z());
 }
 
 void print_shape(const ShapeReport& s) {
@@ -200,6 +220,7 @@ int run_analyze(const AnalyzeOptions& o) {
     json j = {
         {"mesh", {{"file", o.mesh}, {"vertices", mesh.vertex_count()}, {"triangles", mesh.triangle_count()}}},
         {"topology", to_json(report.topology)},
+        {"self_intersections", to_json(report.self_intersections)},
         {"shape", to_json(report.shape)},
         {"valence", to_json(report.valence)}};
     if (report.accuracy) {
@@ -211,6 +232,7 @@ int run_analyze(const AnalyzeOptions& o) {
     std::printf("mesh       %s: %s vertices, %s triangles\n", o.mesh.c_str(),
                 group_digits(mesh.vertex_count()).c_str(), group_digits(mesh.triangle_count()).c_str());
     print_topology(report.topology);
+    print_self_intersections(report.self_intersections);
     print_shape(report.shape);
     print_valence(report.valence);
     if (report.accuracy) print_accuracy(surface->name(), *report.accuracy);

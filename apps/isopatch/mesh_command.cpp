@@ -118,7 +118,7 @@ int run_mesh(const MeshOptions& o) {
   if (o.fields) attach_fields(mesh, *surface);
   write_mesh(mesh, o.output);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
-  print_mesh_warnings(stats, stderr);
+  print_mesh_warnings(stats, mesh, stderr);
   return 0;
 }
 

@@ -1,6 +1,8 @@
 // Warnings of `isopatch mesh` (see mesh_warnings.hpp).
 #include "mesh_warnings.hpp"
 
+#include <isopatch/self_intersection.hpp>
+
 #include <string>
 
 namespace isopatch::cli {
@@ -13,16 +15,21 @@ double extra(const MeshStats& stats, const std::string& name) {
 
 }  // namespace
 
-void print_mesh_warnings(const MeshStats& stats, std::FILE* out) {
-  if (const double doubtful = extra(stats, "doubtful_cells"); doubtful > 0)
+void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out) {
+  if (const double doubtful = extra(stats, "doubtful_topology_cells"); doubtful > 0)
     std::fprintf(out,
-                 "warning: %g cells at the depth limit %g (side %.3g) still hold two sheets of f = 0 or an "
-                 "ambiguous face: sheets closer than that may be joined or dropped there (a larger "
+                 "warning: %g cells at the depth limit %g (side %.3g) still hold two sheets of f = 0, an "
+                 "ambiguous face or edges crossed twice: sheets closer than that may be joined or dropped "
+                 "there (a larger "
                  "--max-depth looks finer)\n",
                  doubtful, extra(stats, "max_depth"), extra(stats, "doubtful_cell_size"));
   if (const double beyond = extra(stats, "error_bound_violations"); beyond > 0)
     std::fprintf(out, "warning: %g triangles have their centroid farther than --max-error from f = 0\n",
                  beyond);
+  if (const SelfIntersectionReport r = find_self_intersections(mesh); r.pairs > 0)
+    std::fprintf(
+        out, "warning: the mesh intersects itself: %s%zu pairs of triangles (e.g. at %.6g, %.6g, %.6g)\n",
+        r.capped ? "at least " : "", r.pairs, r.example_point.x(), r.example_point.y(), r.example_point.z());
 }
 
 }  // namespace isopatch::cli

@@ -1,15 +1,18 @@
 #pragma once
-// Warnings of `isopatch mesh`: what the mesh written may get wrong, read from the mesher's statistics.
+// Warnings of `isopatch mesh`: what the mesh written may get wrong, from the mesher's statistics and a
+// self-intersection test of the mesh.
 
 #include <isopatch/isopatch.hpp>
+#include <isopatch/mesh.hpp>
 
 #include <cstdio>
 
 namespace isopatch::cli {
 
-/// Prints one "warning: ..." line on `out` for each doubt the statistics record: cells left in doubt
-/// at the depth limit (doubtful_cells: sheets closer than a cell may be joined or dropped there) and
-/// triangles beyond the --max-error bound (error_bound_violations). Prints nothing for a clean run.
-void print_mesh_warnings(const MeshStats& stats, std::FILE* out);
+/// Prints one "warning: ..." line on `out` for each doubt: cells left in doubt at the depth limit
+/// (stats doubtful_topology_cells: sheets closer than a cell may be joined or dropped there), triangles beyond
+/// the --max-error bound (stats error_bound_violations), and pairs of triangles of `mesh` that
+/// intersect (find_self_intersections, up to 1000 pairs). Prints nothing for a clean run.
+void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out);
 
 }  // namespace isopatch::cli

@@ -23,7 +23,8 @@ def _pct(x, spec=".1f"):
 def _topology(m):
     if m["watertight"] is None:
         return "–"
-    letters = "".join(c if m[k] else "-" for c, k in (("W", "watertight"), ("M", "manifold"), ("O", "oriented")))
+    letters = "".join(c if m[k] else "-" for c, k in (("W", "watertight"), ("M", "manifold"), ("O", "oriented"),
+                                                       ("I", "intersection_free")))
     return f"{letters} g {_f(m['genus'], 'd')} · {_f(m['components'], 'd')} comp"
 
 
@@ -144,7 +145,8 @@ def document(header_lines, results, adapted, cgal_note):
               "and `% < 20°` share of triangles; `H nRMS` normalized RMS error of the cotangent mean "
               "curvature; distances are maxima of |f|/|grad f| at vertices and at triangle centroids divided "
               "by the box diagonal; `normal err` mean angle between triangle normal and grad f; topology "
-              "`W M O` = watertight, manifold, consistently oriented (a `-` marks a failure), genus, "
+              "`W M O I` = watertight, manifold, consistently oriented, free of self-intersections (a `-` marks a "
+              "failure), genus, "
               "components.", ""]
     for spec, surface_args, groups, checks in results:
         parts.append(surface_section(spec, surface_args, groups, checks))

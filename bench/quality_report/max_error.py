@@ -104,7 +104,7 @@ def check(spec, run, cgal_runs: list) -> tuple[str, str]:
     m = metrics(run.analysis)
     centroid = dig(run.analysis, "accuracy", "centroid_distance", "max")
     failures = []
-    if not (m["watertight"] and m["manifold"] and m["oriented"] and m["outward"]):
+    if not (m["watertight"] and m["manifold"] and m["oriented"] and m["outward"] and m["intersection_free"]):
         failures.append("topology")
     if m["genus"] != spec.genus or m["components"] != 1:
         failures.append(f"genus {m['genus']}, {m['components']} components")

@@ -31,4 +31,6 @@ def metrics(analysis: dict | None) -> dict:
         "genus": dig(a, "topology", "genus"),
         "components": dig(a, "topology", "components"),
         "boundary_edges": dig(a, "topology", "boundary_edges"),
+        "intersection_free": None if dig(a, "self_intersections", "pairs") is None
+        else dig(a, "self_intersections", "pairs") == 0,
     }

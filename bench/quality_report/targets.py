@@ -47,7 +47,8 @@ def _topology(rows, genus):
         return NOT_MET, failed
     problems = []
     for label, _, m in rows:
-        flags = [name for name in ("watertight", "manifold", "oriented", "outward") if m[name] is not True]
+        flags = [name for name in ("watertight", "manifold", "oriented", "outward", "intersection_free")
+                 if m[name] is not True]
         if m["components"] != 1:
             flags.append(f"{m['components']} components")
         if genus is not None and m["genus"] != genus:
@@ -91,7 +92,7 @@ def describe_h_ratio(v) -> str:
 def check(spec, groups) -> list[tuple[str, str, str]]:
     """[(target, status, detail)] for the projection rows of one surface."""
     rows = _per_size(groups, "projection")
-    out = [("watertight, manifold, outward, genus, 1 component", *_topology(rows, spec.genus))]
+    out = [("watertight, manifold, outward, no self-intersections, genus, 1 component", *_topology(rows, spec.genus))]
     out.append(("valence 6 >= 90% of interior vertices",
                 *_threshold(rows, "valence6", lambda v: v >= MIN_VALENCE6, lambda v: f"{100 * v:.1f}%")))
     out.append(("smallest angle >= 20°",

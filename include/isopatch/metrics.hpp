@@ -6,6 +6,7 @@
 /// values (curvature.hpp).
 
 #include <isopatch/mesh.hpp>
+#include <isopatch/self_intersection.hpp>
 #include <isopatch/surface.hpp>
 #include <isopatch/topology.hpp>
 
@@ -76,6 +77,7 @@ struct AccuracyReport {
 
 struct QualityReport {
   TopologyReport topology;
+  SelfIntersectionReport self_intersections;  ///< find_self_intersections(mesh), up to 1000 pairs
   ShapeReport shape;
   ValenceReport valence;
   std::optional<AccuracyReport> accuracy;  ///< present when a surface was given

@@ -6,6 +6,7 @@
 #include <isopatch/projection.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -146,9 +147,17 @@ bool needs_refinement(const Leaf& leaf) {
   return true;
 }
 
+/// An edge crossed twice in a few cells is mostly an edge grazing the surface, which the fans close
+/// correctly; in more than this share of the leaves, sheets closer than a cell are the likelier cause.
+constexpr double kDoubtfulEdgeShare = 0.01;
+
 struct DoubtfulLeaves {
   std::size_t count = 0;
   double largest_side = 0.0;  ///< of the largest doubtful leaf (0 without any)
+  std::array<std::size_t, kComplexReasonCount> by_reason{};
+  /// Doubtful leaves that put the topology in question: two loops or an ambiguous face always, edges
+  /// crossed twice when they are more than kDoubtfulEdgeShare of the leaves.
+  std::size_t topology = 0;
 };
 
 /// The leaves still in doubt (needs_refinement) after the partition has split them to its depth limit.
@@ -157,8 +166,14 @@ DoubtfulLeaves leaves_needing_refinement(const Partition& partition) {
   for (const Leaf& leaf : partition.leaves)
     if (needs_refinement(leaf)) {
       ++doubtful.count;
+      ++doubtful.by_reason[static_cast<std::size_t>(leaf.reason)];
       doubtful.largest_side = std::max(doubtful.largest_side, leaf.box.size().maxCoeff());
     }
+  const auto reason = [&](ComplexReason r) { return doubtful.by_reason[static_cast<std::size_t>(r)]; };
+  doubtful.topology = reason(ComplexReason::SeveralLoops) + reason(ComplexReason::AmbiguousFace);
+  if (static_cast<double>(reason(ComplexReason::EdgeTest)) >
+      kDoubtfulEdgeShare * static_cast<double>(partition.leaves.size()))
+    doubtful.topology += reason(ComplexReason::EdgeTest);
   return doubtful;
 }
 
@@ -690,6 +705,11 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       stats->extra["rejected_sides"] = static_cast<double>(counters.rejected_sides);
       stats->extra["doubtful_cells"] = static_cast<double>(doubtful.count);
       stats->extra["doubtful_cell_size"] = doubtful.largest_side;
+      stats->extra["doubtful_topology_cells"] = static_cast<double>(doubtful.topology);
+      for (int r = 0; r < kComplexReasonCount; ++r)
+        if (const std::size_t n = doubtful.by_reason[static_cast<std::size_t>(r)]; n > 0)
+          stats->extra[std::string("doubtful_") + to_string(static_cast<ComplexReason>(r))] =
+              static_cast<double>(n);
       stats->extra["max_depth"] = ps.max_depth;
       stats->extra["refined_patches"] = static_cast<double>(counters.refined_patches);
       stats->extra["flat_corner_leaves"] = static_cast<double>(partition.stats.leaves_with_flat_corners);

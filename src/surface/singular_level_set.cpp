@@ -15,7 +15,7 @@ namespace {
 
 /// Fractions of a sample cell by which the samples are shifted (no dyadic components; not those of the
 /// zero-function check, so the two grids differ).
-const Vec3 kShift(0.3141, 0.2718, 0.1618);
+const Vec3 kCrossingShift(0.3141, 0.2718, 0.1618);
 /// |grad f| below this fraction of the slope of f across the crossing is singular.
 constexpr double kSingularSlope = 1e-3;
 /// Fewer examined crossings than this give no verdict.
@@ -28,7 +28,7 @@ struct GridEdge {
   double fb;
 };
 
-bool negative(double v) {
+bool below_zero(double v) {
   return v < 0.0;
 }
 
@@ -49,7 +49,7 @@ bool singular_crossing(const Surface& surface, const GridEdge& e, Vec3* root) {
 }
 
 /// p with coordinates below 1e-9 of the box's size shown as 0 (a root found to rounding).
-std::string format_point(const Vec3& p, const Box& box) {
+std::string format_example(const Vec3& p, const Box& box) {
   const double tiny = 1e-9 * box.size().maxCoeff();
   const auto shown = [&](double c) { return std::abs(c) < tiny ? 0.0 : c; };
   char text[96];
@@ -63,7 +63,7 @@ SingularEvidence singular_level_set_evidence(const Surface& surface, const Box& 
   constexpr int n = kSingularCheckSamples;
   const Vec3 step = box.size() / n;
   const auto point = [&](int i, int j, int k) {
-    return Vec3(box.lo + (Vec3(i, j, k) + kShift).cwiseProduct(step));
+    return Vec3(box.lo + (Vec3(i, j, k) + kCrossingShift).cwiseProduct(step));
   };
   std::vector<double> values(static_cast<std::size_t>(n * n * n));
   const auto at = [&](int i, int j, int k) -> double& {
@@ -82,7 +82,7 @@ SingularEvidence singular_level_set_evidence(const Surface& surface, const Box& 
         for (const auto& q : next) {
           if (q[0] >= n || q[1] >= n || q[2] >= n) continue;
           const double w = at(q[0], q[1], q[2]);
-          if (std::isfinite(w) && negative(v) != negative(w))
+          if (std::isfinite(w) && below_zero(v) != below_zero(w))
             crossings.push_back({point(i, j, k), v, point(q[0], q[1], q[2]), w});
         }
       }
@@ -106,7 +106,7 @@ void reject_singular_level_set(const Surface& surface, const Box& box) {
   const long percent = std::lround(100.0 * static_cast<double>(e.singular) / static_cast<double>(e.roots));
   throw SingularSurfaceError("grad f vanishes on f = 0 at " + std::to_string(percent) + "% of " +
                              std::to_string(e.roots) + " sampled surface points (e.g. " +
-                             format_point(e.example, box) +
+                             format_example(e.example, box) +
                              "): a repeated factor such as g^3? Mesh g instead (projection needs grad f)");
 }
 

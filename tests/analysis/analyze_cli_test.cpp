@@ -35,6 +35,7 @@ TEST(AnalyzeCli, JsonReportParsesAndDescribesTheMesh) {
   EXPECT_EQ(j["topology"]["genus"], 0);
   EXPECT_EQ(j["topology"]["watertight"], true);
   EXPECT_EQ(j["topology"]["outward_oriented"], true);
+  EXPECT_EQ(j["self_intersections"]["pairs"], 0);
   EXPECT_EQ(j["valence"]["interior_vertices"], 642);
   EXPECT_EQ(j["valence"]["histogram"][5], 12);
   EXPECT_EQ(j["valence"]["histogram"][6], 630);
@@ -61,7 +62,8 @@ TEST(AnalyzeCli, TextReportNamesEverySection) {
   const auto r =
       test::run_command(kCli + " analyze " + mesh + " --surface x^2+y^2+z^2-1 --box -2,-2,-2,2,2,2", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  for (const char* word : {"topology", "min angle", "valence", "distance", "normals", "nRMS"})
+  for (const char* word :
+       {"topology", "self-intersections none", "min angle", "valence", "distance", "normals", "nRMS"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word << "\n" << r.out;
 }
 

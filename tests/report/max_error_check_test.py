@@ -16,7 +16,7 @@ from runs import Run  # noqa: E402
 from surfaces import SurfaceSpec  # noqa: E402
 
 
-def analysed(system, vertices, h_nrms, value=1.0, centroid=0.5, valence6=0.95, min_angle=25.0):
+def analysed(system, vertices, h_nrms, value=1.0, centroid=0.5, valence6=0.95, min_angle=25.0, crossings=0):
     """A run with the parts of `isopatch analyze --json` that the checks read."""
     analysis = {
         "valence": {"share_6": valence6},
@@ -25,6 +25,7 @@ def analysed(system, vertices, h_nrms, value=1.0, centroid=0.5, valence6=0.95, m
                      "centroid_distance": {"max": centroid * value}},
         "topology": {"watertight": True, "manifold": True, "consistently_oriented": True,
                      "outward_oriented": True, "genus": 1, "components": 1},
+        "self_intersections": {"pairs": crossings},
     }
     return Run(system, f"knob {value}", value, ok=True, vertices=vertices, analysis=analysis)
 
@@ -73,6 +74,11 @@ class Verdict(unittest.TestCase):
         status, why = max_error.check(TORUS, analysed("max-error", 10000, None), CGAL)
         self.assertEqual(status, "**not met**")
         self.assertIn("no H nRMS", why)
+
+    def test_a_self_intersecting_mesh_is_not_met(self):
+        status, why = max_error.check(TORUS, analysed("max-error", 10000, 0.001, crossings=3), CGAL)
+        self.assertEqual(status, "**not met**")
+        self.assertIn("topology", why)
 
     def test_the_bound_is_still_checked(self):
         status, why = max_error.check(TORUS, analysed("max-error", 10000, 0.001, centroid=1.2), CGAL)

@@ -13,21 +13,21 @@
 namespace isopatch {
 namespace {
 
-const Box kCube{Vec3::Constant(-1.5), Vec3::Constant(1.5)};
+const Box kWideCube{Vec3::Constant(-1.5), Vec3::Constant(1.5)};
 
-SingularEvidence evidence(const std::string& formula) {
-  return singular_level_set_evidence(*resolve_surface(formula, kCube), kCube);
+SingularEvidence singular_evidence(const std::string& formula) {
+  return singular_level_set_evidence(*resolve_surface(formula, kWideCube), kWideCube);
 }
 
 TEST(SingularLevelSet, RepeatedFactorsAreSingularEverywhere) {
   for (const char* formula : {"x^3", "(x^2+y^2+z^2-1)^3", "(x^2+y^2+z^2-1)^5", "(x+y-0.3*z)^3*exp(x)"}) {
     SCOPED_TRACE(formula);
-    const SingularEvidence e = evidence(formula);
+    const SingularEvidence e = singular_evidence(formula);
     EXPECT_GE(e.roots, 8u);
     EXPECT_EQ(e.singular, e.roots);
   }
   // Half the sampled surface is the repeated plane, half the simple sphere.
-  const SingularEvidence mixed = evidence("(x-y)^3*(x^2+y^2+z^2-1)");
+  const SingularEvidence mixed = singular_evidence("(x-y)^3*(x^2+y^2+z^2-1)");
   EXPECT_GT(mixed.singular, mixed.roots / 5);
   EXPECT_LT(mixed.singular, mixed.roots);
 }
@@ -39,20 +39,20 @@ TEST(SingularLevelSet, RegularSurfacesAndIsolatedSingularitiesAreNot) {
        {"x^2+y^2-z^2", "x*y*z", "x^3+0.001*y", "(x^2+y^2+z^2-1)^2-0.0001", "exp(8*x)-exp(4*y)",
         "1e-9*(x^2+y^2+z^2-1)", "torus", "tanglecube", "chmutov6"}) {
     SCOPED_TRACE(formula);
-    const SurfacePtr s = resolve_surface(formula, kCube);
-    const Box box = std::string(formula).find('x') == std::string::npos ? s->box() : kCube;
+    const SurfacePtr s = resolve_surface(formula, kWideCube);
+    const Box box = std::string(formula).find('x') == std::string::npos ? s->box() : kWideCube;
     const SingularEvidence e = singular_level_set_evidence(*s, box);
     EXPECT_GE(e.roots, 8u);
     EXPECT_EQ(e.singular, 0u);
   }
   // No crossing at all: no evidence either way (the meshers report the missing surface).
-  EXPECT_EQ(evidence("x^2+y^2+z^2+1").roots, 0u);
+  EXPECT_EQ(singular_evidence("x^2+y^2+z^2+1").roots, 0u);
 }
 
 TEST(SingularLevelSet, ProjectionAndCleanUpRejectItMarchingCubesAloneMeshes) {
-  const SurfacePtr cubed = resolve_surface("(x^2+y^2+z^2-1)^3", kCube);
+  const SurfacePtr cubed = resolve_surface("(x^2+y^2+z^2-1)^3", kWideCube);
   Settings settings;
-  settings.box = kCube;
+  settings.box = kWideCube;
   settings.edge_length = 0.3;
   try {
     mesh_surface(*cubed, settings);

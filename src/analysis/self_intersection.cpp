@@ -1,0 +1,305 @@
+// Self-intersection test of a triangle mesh (see include/isopatch/self_intersection.hpp): a bounding
+// volume hierarchy over the triangles' boxes, traversed against itself so that every pair of
+// overlapping boxes is met once; each such pair is decided by segment-against-triangle tests (two
+// triangles in general position meet iff an edge of one meets the other, since each end of the segment
+// where they meet lies on an edge of one of them).
+#include <isopatch/error.hpp>
+#include <isopatch/self_intersection.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "analysis/exact_predicates.hpp"
+
+namespace isopatch {
+namespace {
+
+/// Six times the signed volume of (a, b, c, d), rounded: for the position of a crossing only; every
+/// decision uses the exact signs of exact_predicates.hpp.
+double signed_volume6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return (b - a).cross(c - a).dot(d - a);
+}
+
+/// A point of the plane that drops one coordinate axis (the one where a triangle's normal is largest).
+struct Point2 {
+  double x = 0.0;
+  double y = 0.0;
+};
+
+Point2 drop_axis(const Vec3& v, int dropped) {
+  const int i = (dropped + 1) % 3, j = (dropped + 2) % 3;
+  return {v[i], v[j]};
+}
+
+int dominant_axis(const Vec3& n) {
+  const Vec3 a = n.cwiseAbs();
+  return a.x() >= a.y() ? (a.x() >= a.z() ? 0 : 2) : (a.y() >= a.z() ? 1 : 2);
+}
+
+int orient2d(Point2 a, Point2 b, Point2 c) {
+  return exact::orient2d(a.x, a.y, b.x, b.y, c.x, c.y);
+}
+
+/// Signs that are not strictly one positive and one negative.
+bool opposite_or_zero(int s, int t) {
+  return s * t <= 0;
+}
+
+/// Signs of which none is positive, or none negative.
+bool one_side(int s1, int s2, int s3) {
+  const bool negative = s1 < 0 || s2 < 0 || s3 < 0;
+  const bool positive = s1 > 0 || s2 > 0 || s3 > 0;
+  return !(negative && positive);
+}
+
+/// Closed segments pq and ab meet (touching and collinear overlap included).
+bool segments_meet_2d(Point2 p, Point2 q, Point2 a, Point2 b) {
+  const int d1 = orient2d(a, b, p), d2 = orient2d(a, b, q);
+  if (d1 == 0 && d2 == 0) {  // collinear: overlap of the projections on the longer axis
+    const bool use_x = std::abs(q.x - p.x) + std::abs(b.x - a.x) >= std::abs(q.y - p.y) + std::abs(b.y - a.y);
+    const auto key = [use_x](Point2 v) { return use_x ? v.x : v.y; };
+    return std::max(std::min(key(p), key(q)), std::min(key(a), key(b))) <=
+           std::min(std::max(key(p), key(q)), std::max(key(a), key(b)));
+  }
+  return opposite_or_zero(d1, d2) && opposite_or_zero(orient2d(p, q, a), orient2d(p, q, b));
+}
+
+/// Closed triangle abc contains p.
+bool contains_2d(Point2 a, Point2 b, Point2 c, Point2 p) {
+  return one_side(orient2d(a, b, p), orient2d(b, c, p), orient2d(c, a, p));
+}
+
+/// The closed segment pq meets the closed triangle abc; *at receives a point they share.
+bool segment_meets_triangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c,
+                            Vec3* at) {
+  const int sp = exact::orient3d(a, b, c, p), sq = exact::orient3d(a, b, c, q);
+  if (sp * sq > 0) return false;
+  if (sp == 0 && sq == 0) {  // in the triangle's plane: decide in 2D
+    const Vec3 normal = (b - a).cross(c - a);
+    if (normal.squaredNorm() == 0.0) return false;  // a degenerate triangle has no plane
+    const int axis = dominant_axis(normal);
+    const Point2 p2 = drop_axis(p, axis), q2 = drop_axis(q, axis);
+    const Point2 a2 = drop_axis(a, axis), b2 = drop_axis(b, axis), c2 = drop_axis(c, axis);
+    if (contains_2d(a2, b2, c2, p2)) {
+      *at = p;
+      return true;
+    }
+    if (contains_2d(a2, b2, c2, q2)) {
+      *at = q;
+      return true;
+    }
+    const Vec3* corners[3] = {&a, &b, &c};
+    const Point2 corners2[3] = {a2, b2, c2};
+    for (int e = 0; e < 3; ++e)
+      if (segments_meet_2d(p2, q2, corners2[e], corners2[(e + 1) % 3])) {
+        *at = 0.5 * (*corners[e] + *corners[(e + 1) % 3]);
+        return true;
+      }
+    return false;
+  }
+  // The segment reaches the plane; the point where it does lies in the triangle iff the line pq passes
+  // every edge on the same side.
+  if (!one_side(exact::orient3d(p, q, a, b), exact::orient3d(p, q, b, c), exact::orient3d(p, q, c, a)))
+    return false;
+  const double dp = signed_volume6(a, b, c, p), dq = signed_volume6(a, b, c, q);
+  *at = dp == dq ? p : Vec3(p + dp / (dp - dq) * (q - p));
+  return true;
+}
+
+/// Triangles s and t of `mesh` meet other than in what they share by index (see the header).
+bool triangles_meet(const Mesh& mesh, const Triangle& s, const Triangle& t, Vec3* at) {
+  int shared = 0;
+  int s_only[3], t_only[3];  // positions in s (t) of the vertices t (s) does not have
+  int ns = 0, nt = 0;
+  for (int i = 0; i < 3; ++i) {
+    const bool in_t = s[i] == t[0] || s[i] == t[1] || s[i] == t[2];
+    shared += in_t ? 1 : 0;
+    if (!in_t) s_only[ns++] = i;
+    const bool in_s = t[i] == s[0] || t[i] == s[1] || t[i] == s[2];
+    if (!in_s) t_only[nt++] = i;
+  }
+  const auto& x = mesh.positions;
+  const auto vertex = [&](const Triangle& tri, int i) -> const Vec3& {
+    return x[tri[static_cast<std::size_t>(i)]];
+  };
+  const auto edge_meets = [&](const Triangle& a, int i, int j, const Triangle& b) {
+    return segment_meets_triangle(vertex(a, i), vertex(a, j), vertex(b, 0), vertex(b, 1), vertex(b, 2), at);
+  };
+  switch (shared) {
+    case 0:
+      for (int i = 0; i < 3; ++i)
+        if (edge_meets(s, i, (i + 1) % 3, t) || edge_meets(t, i, (i + 1) % 3, s)) return true;
+      return false;
+    case 1:
+      // Meeting anywhere but the common vertex means meeting the edge opposite it in the other.
+      return edge_meets(s, s_only[0], s_only[1], t) || edge_meets(t, t_only[0], t_only[1], s);
+    case 2: {
+      // Folded flat: the third vertices in the plane of the common edge, on the same side of it.
+      const Vec3& u = vertex(s, (s_only[0] + 1) % 3);
+      const Vec3& w = vertex(s, (s_only[0] + 2) % 3);
+      const Vec3& a = vertex(s, s_only[0]);
+      const Vec3& b = vertex(t, t_only[0]);
+      if (exact::orient3d(u, w, a, b) != 0) return false;
+      const Vec3 normal = (w - u).cross(a - u);
+      if (normal.squaredNorm() == 0.0) return false;
+      const int axis = dominant_axis(normal);
+      const int side_a = orient2d(drop_axis(u, axis), drop_axis(w, axis), drop_axis(a, axis));
+      const int side_b = orient2d(drop_axis(u, axis), drop_axis(w, axis), drop_axis(b, axis));
+      if (side_a * side_b <= 0) return false;
+      *at = u;
+      return true;
+    }
+    default:
+      *at = vertex(s, 0);
+      return true;  // the same triangle twice
+  }
+}
+
+struct BoxOf {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+  Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  void add(const BoxOf& b) {
+    lo = lo.cwiseMin(b.lo);
+    hi = hi.cwiseMax(b.hi);
+  }
+  bool overlaps(const BoxOf& b) const {
+    return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all();
+  }
+};
+
+/// A bounding volume hierarchy over triangle boxes, median split on the longest axis of the centres.
+class TriangleTree {
+ public:
+  static constexpr std::size_t kLeafSize = 4;
+
+  TriangleTree(std::vector<BoxOf> boxes, std::vector<std::size_t> order)
+      : boxes_(std::move(boxes)), order_(std::move(order)) {
+    nodes_.reserve(2 * order_.size() / kLeafSize + 2);
+    if (!order_.empty()) build(0, order_.size());
+  }
+
+  /// Calls visit(i, j) once for every pair of triangles (i != j) whose boxes overlap, until it
+  /// returns false.
+  template <class Visit>
+  void for_overlapping_pairs(Visit&& visit) const {
+    if (!nodes_.empty()) self_pairs(0, visit);
+  }
+
+ private:
+  struct Node {
+    BoxOf box;
+    std::size_t begin = 0, end = 0;   // triangle range in order_ (leaves)
+    std::size_t left = 0, right = 0;  // children (inner nodes; left == 0 for leaves)
+    bool leaf() const { return left == 0; }
+  };
+
+  std::size_t build(std::size_t begin, std::size_t end) {
+    const std::size_t index = nodes_.size();
+    nodes_.emplace_back();
+    BoxOf box, centres;
+    for (std::size_t k = begin; k < end; ++k) {
+      const BoxOf& b = boxes_[order_[k]];
+      box.add(b);
+      const Vec3 c = 0.5 * (b.lo + b.hi);
+      centres.add(BoxOf{c, c});
+    }
+    nodes_[index].box = box;
+    nodes_[index].begin = begin;
+    nodes_[index].end = end;
+    if (end - begin <= kLeafSize) return index;
+    int axis = 0;
+    (centres.hi - centres.lo).maxCoeff(&axis);
+    const std::size_t middle = begin + (end - begin) / 2;
+    const auto centre = [&](std::size_t t) { return boxes_[t].lo[axis] + boxes_[t].hi[axis]; };
+    std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(begin),
+                     order_.begin() + static_cast<std::ptrdiff_t>(middle),
+                     order_.begin() + static_cast<std::ptrdiff_t>(end),
+                     [&](std::size_t a, std::size_t b) { return centre(a) < centre(b); });
+    const std::size_t left = build(begin, middle);
+    const std::size_t right = build(middle, end);
+    nodes_[index].left = left;
+    nodes_[index].right = right;
+    return index;
+  }
+
+  template <class Visit>
+  bool self_pairs(std::size_t n, Visit& visit) const {
+    const Node& node = nodes_[n];
+    if (node.leaf()) {
+      for (std::size_t a = node.begin; a < node.end; ++a)
+        for (std::size_t b = a + 1; b < node.end; ++b)
+          if (boxes_[order_[a]].overlaps(boxes_[order_[b]]) && !visit(order_[a], order_[b])) return false;
+      return true;
+    }
+    return self_pairs(node.left, visit) && self_pairs(node.right, visit) &&
+           cross_pairs(node.left, node.right, visit);
+  }
+
+  template <class Visit>
+  bool cross_pairs(std::size_t m, std::size_t n, Visit& visit) const {
+    const Node& a = nodes_[m];
+    const Node& b = nodes_[n];
+    if (!a.box.overlaps(b.box)) return true;
+    if (a.leaf() && b.leaf()) {
+      for (std::size_t i = a.begin; i < a.end; ++i)
+        for (std::size_t j = b.begin; j < b.end; ++j)
+          if (boxes_[order_[i]].overlaps(boxes_[order_[j]]) && !visit(order_[i], order_[j])) return false;
+      return true;
+    }
+    const bool split_a = !a.leaf() && (b.leaf() || a.end - a.begin >= b.end - b.begin);
+    if (split_a) return cross_pairs(a.left, n, visit) && cross_pairs(a.right, n, visit);
+    return cross_pairs(m, b.left, visit) && cross_pairs(m, b.right, visit);
+  }
+
+  std::vector<BoxOf> boxes_;
+  std::vector<std::size_t> order_;
+  std::vector<Node> nodes_;
+};
+
+void check_mesh_for_intersections(const Mesh& mesh) {
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+    if (!mesh.positions[v].allFinite())
+      throw InputError("find_self_intersections: vertex " + std::to_string(v) + " is not finite");
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::uint32_t v : mesh.triangles[t])
+      if (v >= mesh.positions.size())
+        throw InputError("find_self_intersections: triangle " + std::to_string(t) + " refers to vertex " +
+                         std::to_string(v) + " of " + std::to_string(mesh.positions.size()));
+}
+
+}  // namespace
+
+SelfIntersectionReport find_self_intersections(const Mesh& mesh, std::size_t limit) {
+  check_mesh_for_intersections(mesh);
+  std::vector<BoxOf> boxes(mesh.triangles.size());
+  std::vector<std::size_t> order;
+  order.reserve(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Triangle& tri = mesh.triangles[t];
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
+    for (std::uint32_t v : tri) boxes[t].add(BoxOf{mesh.positions[v], mesh.positions[v]});
+    order.push_back(t);
+  }
+  SelfIntersectionReport report;
+  if (limit == 0) return report;
+  const TriangleTree tree(std::move(boxes), std::move(order));
+  tree.for_overlapping_pairs([&](std::size_t i, std::size_t j) {
+    Vec3 at;
+    if (!triangles_meet(mesh, mesh.triangles[i], mesh.triangles[j], &at)) return true;
+    if (report.pairs++ == 0) {
+      report.example = {std::min(i, j), std::max(i, j)};
+      report.example_point = at;
+    }
+    if (report.pairs < limit) return true;
+    report.capped = true;
+    return false;
+  });
+  return report;
+}
+
+}  // namespace isopatch
