@@ -20,8 +20,7 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
     std::fprintf(out,
                  "warning: %g cells at the depth limit %g (side %.3g) still hold two sheets of f = 0, an "
                  "ambiguous face or edges crossed twice: sheets closer than that may be joined or dropped "
-                 "there (a larger "
-                 "--max-depth looks finer)\n",
+                 "there (a larger --max-depth looks finer)\n",
                  doubtful, extra(stats, "max_depth"), extra(stats, "doubtful_cell_size"));
   if (const double beyond = extra(stats, "error_bound_violations"); beyond > 0)
     std::fprintf(out, "warning: %g triangles have their centroid farther than --max-error from f = 0\n",
