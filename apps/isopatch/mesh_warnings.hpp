@@ -10,8 +10,8 @@
 namespace isopatch::cli {
 
 /// Prints one "warning: ..." line on `out` for each doubt: cells left in doubt at the depth limit
-/// (stats doubtful_topology_cells: sheets closer than a cell may be joined or dropped there), triangles beyond
-/// the --max-error bound (stats error_bound_violations), and pairs of triangles of `mesh` that
+/// (stats doubtful_topology_cells: sheets closer than a cell may be joined or dropped there), triangles
+/// beyond the --max-error bound (stats error_bound_violations), and pairs of triangles of `mesh` that
 /// intersect (find_self_intersections, up to 1000 pairs). Prints nothing for a clean run.
 void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out);
 

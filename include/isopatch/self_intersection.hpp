@@ -3,10 +3,10 @@
 /// Self-intersection test of a triangle mesh: pairs of triangles that meet other than in the vertices
 /// and the edge they share (by index). A mesh that passes can be handed to solid modellers, boolean
 /// operations and volume meshers; one that fails has folds or sheets passing through each other.
-/// Candidate pairs come from a uniform grid of cells about two triangle sizes wide (a pair is tested
-/// once, in the first cell both overlap), so the cost is about linear for meshes of even triangle size.
-/// The predicates are evaluated in double precision: contacts within rounding of a touch may go either
-/// way, anything clearer is exact.
+/// Candidate pairs come from a hierarchy of triangle bounding boxes traversed against itself (each pair
+/// of overlapping boxes once), O(n log n) for meshes of even triangle size. Every decision uses exact
+/// orientation signs (a floating-point filter, then exact expansions; Shewchuk 1997), so nearly
+/// coplanar neighbours and touching triangles are classified as exactly as the positions allow.
 
 #include <isopatch/mesh.hpp>
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "analysis/exact_predicates.hpp"
+#include "analysis/mesh_neighbourhood.hpp"
 
 namespace isopatch {
 namespace {
@@ -261,27 +262,16 @@ class TriangleTree {
   std::vector<Node> nodes_;
 };
 
-void check_mesh_for_intersections(const Mesh& mesh) {
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v)
-    if (!mesh.positions[v].allFinite())
-      throw InputError("find_self_intersections: vertex " + std::to_string(v) + " is not finite");
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (std::uint32_t v : mesh.triangles[t])
-      if (v >= mesh.positions.size())
-        throw InputError("find_self_intersections: triangle " + std::to_string(t) + " refers to vertex " +
-                         std::to_string(v) + " of " + std::to_string(mesh.positions.size()));
-}
-
 }  // namespace
 
 SelfIntersectionReport find_self_intersections(const Mesh& mesh, std::size_t limit) {
-  check_mesh_for_intersections(mesh);
+  analysis::check_mesh(mesh, "find_self_intersections");
   std::vector<BoxOf> boxes(mesh.triangles.size());
   std::vector<std::size_t> order;
   order.reserve(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle& tri = mesh.triangles[t];
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) continue;
+    if (analysis::repeats_vertex(tri)) continue;
     for (std::uint32_t v : tri) boxes[t].add(BoxOf{mesh.positions[v], mesh.positions[v]});
     order.push_back(t);
   }

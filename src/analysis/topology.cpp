@@ -14,6 +14,8 @@
 #include <numeric>
 #include <string>
 
+#include "analysis/mesh_neighbourhood.hpp"
+
 namespace isopatch {
 namespace {
 
@@ -59,18 +61,7 @@ void check_input(const Mesh& mesh) {
   if (n > std::numeric_limits<std::uint32_t>::max() ||
       mesh.triangles.size() * 3 > std::numeric_limits<std::uint32_t>::max())
     throw InputError("analyze_topology: mesh too large for 32-bit indices");
-  for (std::size_t v = 0; v < n; ++v)
-    if (!mesh.positions[v].allFinite())
-      throw InputError("analyze_topology: vertex " + std::to_string(v) + " is not finite");
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (std::uint32_t i : mesh.triangles[t])
-      if (i >= n)
-        throw InputError("analyze_topology: triangle " + std::to_string(t) + " refers to vertex " +
-                         std::to_string(i) + " of " + std::to_string(n));
-}
-
-bool repeats_vertex(const Triangle& t) {
-  return t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+  analysis::check_mesh(mesh, "analyze_topology");
 }
 
 bool zero_area(const Mesh& mesh, const Triangle& t) {
@@ -178,7 +169,7 @@ TopologyReport analyze_topology(const Mesh& mesh) {
   kept.reserve(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t) {
     for (std::uint32_t i : triangles[t]) referenced[i] = true;
-    if (repeats_vertex(triangles[t])) {
+    if (analysis::repeats_vertex(triangles[t])) {
       ++report.degenerate_triangles;
       continue;
     }

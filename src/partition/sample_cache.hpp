@@ -12,12 +12,9 @@
 #include <span>
 #include <vector>
 
-namespace isopatch {
+#include "surface/sign_rule.hpp"
 
-/// The sign rule of method.md 3: a sample with f >= 0 counts as positive.
-inline bool is_negative(double value) {
-  return value < 0.0;
-}
+namespace isopatch {
 
 class SampleCache {
  public:

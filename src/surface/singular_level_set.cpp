@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "surface/bracketed_root.hpp"
+#include "surface/sign_rule.hpp"
 
 namespace isopatch {
 namespace {
@@ -27,10 +28,6 @@ struct GridEdge {
   Vec3 b;
   double fb;
 };
-
-bool below_zero(double v) {
-  return v < 0.0;
-}
 
 /// Whether the crossing of f = 0 on `e` (f of opposite signs at its ends) is singular; sets *root.
 bool singular_crossing(const Surface& surface, const GridEdge& e, Vec3* root) {
@@ -82,7 +79,7 @@ SingularEvidence singular_level_set_evidence(const Surface& surface, const Box& 
         for (const auto& q : next) {
           if (q[0] >= n || q[1] >= n || q[2] >= n) continue;
           const double w = at(q[0], q[1], q[2]);
-          if (std::isfinite(w) && below_zero(v) != below_zero(w))
+          if (std::isfinite(w) && is_negative(v) != is_negative(w))
             crossings.push_back({point(i, j, k), v, point(q[0], q[1], q[2]), w});
         }
       }

@@ -232,7 +232,7 @@ TEST(Cli, WarnsWhereCellsAtTheDepthLimitStayInDoubt) {
   ASSERT_EQ(thin.exit_code, 0) << thin.err;
   EXPECT_EQ(count_lines(thin.err), 1) << thin.err;
   EXPECT_EQ(thin.err.rfind("warning: ", 0), 0u) << thin.err;
-  EXPECT_NE(thin.err.find("at the depth limit 4 (side 0.191)"), std::string::npos) << thin.err;
+  EXPECT_NE(thin.err.find("at the depth limit 4 (side "), std::string::npos) << thin.err;
   const auto torus = test::run_command(kCli + " mesh torus --edge-length 0.1 -q" + out, dir);
   ASSERT_EQ(torus.exit_code, 0) << torus.err;
   EXPECT_TRUE(torus.err.empty()) << torus.err;
