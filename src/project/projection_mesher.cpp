@@ -28,6 +28,7 @@
 #include "project/ray_march.hpp"
 #include "project/side_points.hpp"
 #include "surface/sampler.hpp"
+#include "surface/sign_rule.hpp"
 #include "surface/target_size.hpp"
 
 namespace isopatch {
@@ -151,26 +152,67 @@ bool needs_refinement(const Leaf& leaf) {
 /// correctly; in more than this share of the leaves, sheets closer than a cell are the likelier cause.
 constexpr double kDoubtfulEdgeShare = 0.01;
 
+/// A face whose every sample (corners and centre) lies within this share of the cell side of f = 0,
+/// with grad f within acos(kGrazingNormal) of the face normal, holds the surface nearly in its plane.
+constexpr double kGrazingDistance = 0.05;
+constexpr double kGrazingNormal = 0.9;
+
+/// Whether the surface grazes a face of `box` with mixed signs at its corners: it lies nearly in the
+/// face's plane (a point where its tangent plane is the face). Such a face stays ambiguous at every
+/// depth, since finer faces lie in the same plane, yet it holds one sheet whose cut is decided within
+/// kGrazingDistance of the cell: not two sheets closer than the cell. Sheets that close have a sign
+/// change of f between them, where grad f turns, and fail the normal condition.
+bool grazes_a_face(const Sampler& f, const Box& box) {
+  const double side = box.size().maxCoeff();
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double plane : {box.lo[axis], box.hi[axis]}) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      std::array<Vec3, 5> points;
+      for (int k = 0; k < 5; ++k) {
+        Vec3 p;
+        p[axis] = plane;
+        p[u] = k == 4 ? box.centre()[u] : (k & 1 ? box.hi[u] : box.lo[u]);
+        p[v] = k == 4 ? box.centre()[v] : (k & 2 ? box.hi[v] : box.lo[v]);
+        points[static_cast<std::size_t>(k)] = p;
+      }
+      bool negative = false, positive = false, grazing = true;
+      for (const Vec3& p : points) {
+        const ValueGradient vg = f.value_gradient(p);
+        const double g = vg.gradient.norm();
+        (is_negative(vg.value) ? negative : positive) = true;
+        grazing = grazing && g > 0.0 && std::abs(vg.value) <= kGrazingDistance * side * g &&
+                  std::abs(vg.gradient[axis]) >= kGrazingNormal * g;
+        if (!grazing) break;
+      }
+      if (grazing && negative && positive) return true;
+    }
+  return false;
+}
+
 struct DoubtfulLeaves {
   std::size_t count = 0;
   double largest_side = 0.0;  ///< of the largest doubtful leaf (0 without any)
   std::array<std::size_t, kComplexReasonCount> by_reason{};
   /// Doubtful leaves that put the topology in question: two loops or an ambiguous face always, edges
-  /// crossed twice when they are more than kDoubtfulEdgeShare of the leaves.
+  /// crossed twice when they are more than kDoubtfulEdgeShare of the leaves; not the ambiguous faces
+  /// that the surface grazes (grazing_faces).
   std::size_t topology = 0;
+  std::size_t grazing_faces = 0;  ///< leaves whose ambiguous face the surface grazes (grazes_a_face)
 };
 
 /// The leaves still in doubt (needs_refinement) after the partition has split them to its depth limit.
-DoubtfulLeaves leaves_needing_refinement(const Partition& partition) {
+DoubtfulLeaves leaves_needing_refinement(const Partition& partition, const Sampler& f) {
   DoubtfulLeaves doubtful;
   for (const Leaf& leaf : partition.leaves)
     if (needs_refinement(leaf)) {
       ++doubtful.count;
       ++doubtful.by_reason[static_cast<std::size_t>(leaf.reason)];
       doubtful.largest_side = std::max(doubtful.largest_side, leaf.box.size().maxCoeff());
+      if (leaf.reason == ComplexReason::AmbiguousFace && grazes_a_face(f, leaf.box)) ++doubtful.grazing_faces;
     }
   const auto reason = [&](ComplexReason r) { return doubtful.by_reason[static_cast<std::size_t>(r)]; };
-  doubtful.topology = reason(ComplexReason::SeveralLoops) + reason(ComplexReason::AmbiguousFace);
+  doubtful.topology =
+      reason(ComplexReason::SeveralLoops) + reason(ComplexReason::AmbiguousFace) - doubtful.grazing_faces;
   if (static_cast<double>(reason(ComplexReason::EdgeTest)) >
       kDoubtfulEdgeShare * static_cast<double>(partition.leaves.size()))
     doubtful.topology += reason(ComplexReason::EdgeTest);
@@ -687,7 +729,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       continue;
     }
     const int depth = ps.surface_depth;
-    const DoubtfulLeaves doubtful = leaves_needing_refinement(partition);
+    const DoubtfulLeaves doubtful = leaves_needing_refinement(partition, f);
     mesh->triangles.shrink_to_fit();
     if (stats) {
       stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -706,6 +748,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
       stats->extra["doubtful_cells"] = static_cast<double>(doubtful.count);
       stats->extra["doubtful_cell_size"] = doubtful.largest_side;
       stats->extra["doubtful_topology_cells"] = static_cast<double>(doubtful.topology);
+      stats->extra["doubtful_grazing_faces"] = static_cast<double>(doubtful.grazing_faces);
       for (int r = 0; r < kComplexReasonCount; ++r)
         if (const std::size_t n = doubtful.by_reason[static_cast<std::size_t>(r)]; n > 0)
           stats->extra[std::string("doubtful_") + to_string(static_cast<ComplexReason>(r))] =

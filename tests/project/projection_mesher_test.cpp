@@ -188,6 +188,42 @@ TEST(ProjectionMesher, EdgeLengthBelowTheFinestCellsRaisesTheDepthLimit) {
   EXPECT_EQ(test::count_self_intersections(mesh), 0u);
 }
 
+// The decocube (genus 13) touches a face plane of the depth-8 lattice at eight points where its tangent
+// plane is that face: those faces are ambiguous at every depth, yet each holds one sheet within 2e-4
+// of the plane, not two sheets closer than the cell. They are counted as grazing, not as topology in
+// doubt (which the command line warns about), while two sheets 0.01 apart stay in doubt.
+TEST(ProjectionMesher, FacesTheSurfaceGrazesAreNotTopologyInDoubt) {
+  const Box box{Vec3::Constant(-1.4), Vec3::Constant(1.4)};
+  const auto decocube = make_surface(
+      [](auto x, auto y, auto z) {
+        const auto ring = [](auto a, auto b, auto c) {
+          return (a * a + b * b - 0.64) * (a * a + b * b - 0.64) + (c * c - 1.0) * (c * c - 1.0);
+        };
+        return ring(x, y, z) * ring(y, z, x) * ring(z, x, y) - 0.02;
+      },
+      box);
+  Settings settings;
+  settings.edge_length = 0.15;
+  MeshStats stats;
+  const Mesh mesh = mesh_projection(*decocube, settings, &stats);
+  EXPECT_GT(stats.extra.at("doubtful_grazing_faces"), 0.0);
+  EXPECT_EQ(stats.extra.at("doubtful_grazing_faces"), stats.extra.at("doubtful_ambiguous-face"));
+  EXPECT_EQ(stats.extra.at("doubtful_topology_cells"), 0.0);
+  EXPECT_EQ(analyze_topology(mesh).genus, 13);
+
+  const auto shell = make_surface(
+      [](auto x, auto y, auto z) {
+        const auto r2 = x * x + y * y + z * z - 1.0;
+        return r2 * r2 - 1e-4;
+      },
+      Box{Vec3::Constant(-1.5), Vec3::Constant(1.5)});
+  settings.max_depth = 4;
+  settings.edge_length = 0.3;
+  mesh_projection(*shell, settings, &stats);
+  EXPECT_GT(stats.extra.at("doubtful_topology_cells"), 0.0);
+  EXPECT_EQ(stats.extra.at("doubtful_grazing_faces"), 0.0);
+}
+
 TEST(ProjectionMesher, ReportsNoSurfaceAndNaN) {
   const Box box{Vec3::Constant(-1), Vec3::Constant(1)};
   Settings settings;
