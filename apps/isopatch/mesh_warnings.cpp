@@ -1,6 +1,7 @@
 // Warnings of `isopatch mesh` (see mesh_warnings.hpp).
 #include "mesh_warnings.hpp"
 
+#include <isopatch/metrics.hpp>
 #include <isopatch/self_intersection.hpp>
 
 #include <string>
@@ -25,6 +26,17 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
   if (const double beyond = extra(stats, "error_bound_violations"); beyond > 0)
     std::fprintf(out, "warning: %g triangles have their centroid farther than --max-error from f = 0\n",
                  beyond);
+  // The clean-up removes every angle under 20 degrees it can; one under 10 is left only where the
+  // surface turns within an edge (a rim narrower than the edges).
+  if (extra(stats, "remesh_iterations") > 0 && mesh.triangle_count() > 0) {
+    const ShapeReport shape = analyze_shape(mesh);
+    if (shape.share_below_10 > 0.0)
+      std::fprintf(
+          out,
+          "warning: %.0f triangles have an angle under 10 degrees (smallest %.2g): the surface turns "
+          "within an edge there (a smaller --edge-length or --max-error resolves it)\n",
+          shape.share_below_10 * static_cast<double>(mesh.triangle_count()), shape.min_angle.min);
+  }
   if (const SelfIntersectionReport r = find_self_intersections(mesh); r.pairs > 0)
     std::fprintf(
         out, "warning: the mesh intersects itself: %s%zu pairs of triangles (e.g. at %.6g, %.6g, %.6g)\n",

@@ -238,5 +238,21 @@ TEST(Cli, WarnsWhereCellsAtTheDepthLimitStayInDoubt) {
   EXPECT_TRUE(torus.err.empty()) << torus.err;
 }
 
+TEST(Cli, WarnsAboutAnglesUnderTenDegreesLeftByTheCleanUp) {
+  // A disc-like ellipsoid 1 : 1 : 0.05 has a rim of radius 0.0025, twenty times narrower than the
+  // edges: the clean-up cannot remove every sliver there, and says so. Marching cubes alone makes
+  // slivers by design and is not warned about.
+  const auto dir = test::scratch_dir("cli_slivers");
+  const std::string out = " -o " + (dir / "m.ply").string();
+  const std::string disc = kCli + " mesh \"x^2+y^2+400*z^2-1\" --box -1.15,-1.15,-0.07,1.15,1.15,0.07 -q";
+  const auto projected = test::run_command(disc + " --edge-length 0.04937" + out, dir);
+  ASSERT_EQ(projected.exit_code, 0) << projected.err;
+  EXPECT_EQ(count_lines(projected.err), 1) << projected.err;
+  EXPECT_NE(projected.err.find("have an angle under 10 degrees"), std::string::npos) << projected.err;
+  const auto mc = test::run_command(disc + " --method mc --grid 40" + out, dir);
+  ASSERT_EQ(mc.exit_code, 0) << mc.err;
+  EXPECT_TRUE(mc.err.empty()) << mc.err;
+}
+
 }  // namespace
 }  // namespace isopatch
