@@ -17,7 +17,8 @@ double extra(const MeshStats& stats, const std::string& name) {
 }  // namespace
 
 void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out) {
-  if (const double doubtful = extra(stats, "doubtful_topology_cells"); doubtful > 0)
+  const double doubtful = extra(stats, "doubtful_topology_cells");
+  if (doubtful > 0)
     std::fprintf(out,
                  "warning: %g cells at the depth limit %g (side %.3g) still hold two sheets of f = 0, an "
                  "ambiguous face or edges crossed twice: sheets closer than that may be joined or dropped "
@@ -27,8 +28,9 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
     std::fprintf(out, "warning: %g triangles have their centroid farther than --max-error from f = 0\n",
                  beyond);
   // The clean-up removes every angle under 20 degrees it can; one under 10 is left only where the
-  // surface turns within an edge (a rim narrower than the edges).
-  if (extra(stats, "remesh_iterations") > 0 && mesh.triangle_count() > 0) {
+  // surface turns within an edge (a rim narrower than the edges), or where cells left in doubt joined
+  // sheets, which the warning above already names.
+  if (doubtful == 0 && extra(stats, "remesh_iterations") > 0 && mesh.triangle_count() > 0) {
     const ShapeReport shape = analyze_shape(mesh);
     if (shape.share_below_10 > 0.0)
       std::fprintf(

@@ -157,36 +157,38 @@ constexpr double kDoubtfulEdgeShare = 0.01;
 constexpr double kGrazingDistance = 0.05;
 constexpr double kGrazingNormal = 0.9;
 
-/// Whether the surface grazes a face of `box` with mixed signs at its corners: it lies nearly in the
-/// face's plane (a point where its tangent plane is the face). Such a face stays ambiguous at every
-/// depth, since finer faces lie in the same plane, yet it holds one sheet whose cut is decided within
-/// kGrazingDistance of the cell: not two sheets closer than the cell. Sheets that close have a sign
-/// change of f between them, where grad f turns, and fail the normal condition.
-bool grazes_a_face(const Sampler& f, const Box& box) {
+/// Whether f = 0 is ambiguous on a face of `box` (corner signs alternate around it) and only grazes
+/// every such face: it lies nearly in the face's plane (a point where its tangent plane is the face).
+/// Such a face stays ambiguous at every depth, since finer faces lie in the same plane, yet it holds
+/// one sheet whose cut is decided within kGrazingDistance of the cell: not two sheets closer than the
+/// cell. Sheets that close have a sign change of f between them, where grad f turns, and fail the
+/// normal condition.
+bool only_grazing_ambiguous_faces(const Sampler& f, const Box& box) {
   const double side = box.size().maxCoeff();
+  bool ambiguous = false;
   for (int axis = 0; axis < 3; ++axis)
     for (const double plane : {box.lo[axis], box.hi[axis]}) {
       const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      std::array<Vec3, 5> points;
+      // Samples 0-3: the corners (bit 0: u high, bit 1: v high), 4: the centre.
+      std::array<ValueGradient, 5> samples;
       for (int k = 0; k < 5; ++k) {
         Vec3 p;
         p[axis] = plane;
         p[u] = k == 4 ? box.centre()[u] : (k & 1 ? box.hi[u] : box.lo[u]);
         p[v] = k == 4 ? box.centre()[v] : (k & 2 ? box.hi[v] : box.lo[v]);
-        points[static_cast<std::size_t>(k)] = p;
+        samples[static_cast<std::size_t>(k)] = f.value_gradient(p);
       }
-      bool negative = false, positive = false, grazing = true;
-      for (const Vec3& p : points) {
-        const ValueGradient vg = f.value_gradient(p);
+      const auto negative = [&](std::size_t k) { return is_negative(samples[k].value); };
+      if (!(negative(0) == negative(3) && negative(1) == negative(2) && negative(0) != negative(1))) continue;
+      ambiguous = true;
+      for (const ValueGradient& vg : samples) {
         const double g = vg.gradient.norm();
-        (is_negative(vg.value) ? negative : positive) = true;
-        grazing = grazing && g > 0.0 && std::abs(vg.value) <= kGrazingDistance * side * g &&
-                  std::abs(vg.gradient[axis]) >= kGrazingNormal * g;
-        if (!grazing) break;
+        if (!(g > 0.0 && std::abs(vg.value) <= kGrazingDistance * side * g &&
+              std::abs(vg.gradient[axis]) >= kGrazingNormal * g))
+          return false;
       }
-      if (grazing && negative && positive) return true;
     }
-  return false;
+  return ambiguous;
 }
 
 struct DoubtfulLeaves {
@@ -197,7 +199,8 @@ struct DoubtfulLeaves {
   /// crossed twice when they are more than kDoubtfulEdgeShare of the leaves; not the ambiguous faces
   /// that the surface grazes (grazing_faces).
   std::size_t topology = 0;
-  std::size_t grazing_faces = 0;  ///< leaves whose ambiguous face the surface grazes (grazes_a_face)
+  std::size_t grazing_faces =
+      0;  ///< leaves whose ambiguous faces the surface only grazes (only_grazing_ambiguous_faces)
 };
 
 /// The leaves still in doubt (needs_refinement) after the partition has split them to its depth limit.
@@ -208,7 +211,8 @@ DoubtfulLeaves leaves_needing_refinement(const Partition& partition, const Sampl
       ++doubtful.count;
       ++doubtful.by_reason[static_cast<std::size_t>(leaf.reason)];
       doubtful.largest_side = std::max(doubtful.largest_side, leaf.box.size().maxCoeff());
-      if (leaf.reason == ComplexReason::AmbiguousFace && grazes_a_face(f, leaf.box)) ++doubtful.grazing_faces;
+      if (leaf.reason == ComplexReason::AmbiguousFace && only_grazing_ambiguous_faces(f, leaf.box))
+        ++doubtful.grazing_faces;
     }
   const auto reason = [&](ComplexReason r) { return doubtful.by_reason[static_cast<std::size_t>(r)]; };
   doubtful.topology =
