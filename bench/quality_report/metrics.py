@@ -13,6 +13,7 @@ def dig(data: dict | None, *path, default=None):
 def metrics(analysis: dict | None) -> dict:
     """The report's metrics of one mesh; a value is None when the analysis lacks it."""
     a = analysis
+    crossings = dig(a, "self_intersections", "pairs")
     return {
         "valence6": dig(a, "valence", "share_6"),
         "min_angle": dig(a, "shape", "min_angle_degrees", "min"),
@@ -31,6 +32,5 @@ def metrics(analysis: dict | None) -> dict:
         "genus": dig(a, "topology", "genus"),
         "components": dig(a, "topology", "components"),
         "boundary_edges": dig(a, "topology", "boundary_edges"),
-        "intersection_free": None if dig(a, "self_intersections", "pairs") is None
-        else dig(a, "self_intersections", "pairs") == 0,
+        "intersection_free": None if crossings is None else crossings == 0,
     }

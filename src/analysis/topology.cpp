@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
@@ -121,8 +122,10 @@ void mark_outward_components(const Mesh& mesh, const std::vector<std::uint32_t>&
   for (std::uint32_t index = 0; index < components.size(); ++index) {
     ComponentTopology& c = components[index];
     if (!c.closed()) continue;
-    c.outward = c.volume > 0.0;
-    if (closed > kMaxNestingTests || closed == 1) continue;
+    if (closed > kMaxNestingTests || closed == 1) {
+      c.outward = c.volume > 0.0;
+      continue;
+    }
     // A vertex of this component; every other closed component's triangles wind around it.
     Vec3 p = Vec3::Zero();
     for (std::uint32_t t : kept)
@@ -138,12 +141,10 @@ void mark_outward_components(const Mesh& mesh, const std::vector<std::uint32_t>&
       winding +=
           winding_share(mesh.positions[tri[0]] - p, mesh.positions[tri[1]] - p, mesh.positions[tri[2]] - p);
     }
-    if (std::abs(winding) < 0.5)
-      c.outward = c.volume > 0.0;
-    else if (std::abs(winding - 1.0) < 0.5)
-      c.outward = c.volume < 0.0;
-    else
-      c.outward = false;
+    // Winding 0: an outer wall, outward with a positive volume; 1: a cavity wall, with a negative one;
+    // anything else (overlapping or inverted walls): not outward.
+    const long nesting = std::lround(winding);
+    c.outward = nesting == 0 ? c.volume > 0.0 : nesting == 1 && c.volume < 0.0;
   }
 }
 

@@ -19,6 +19,8 @@
 #include <string>
 #include <tuple>
 
+#include "partition/cube.hpp"
+#include "partition/cube_cycles.hpp"
 #include "partition/partition.hpp"
 #include "patch/base_surface.hpp"
 #include "patch/coons_patch.hpp"
@@ -28,7 +30,6 @@
 #include "project/ray_march.hpp"
 #include "project/side_points.hpp"
 #include "surface/sampler.hpp"
-#include "surface/sign_rule.hpp"
 #include "surface/target_size.hpp"
 
 namespace isopatch {
@@ -157,37 +158,35 @@ constexpr double kDoubtfulEdgeShare = 0.01;
 constexpr double kGrazingDistance = 0.05;
 constexpr double kGrazingNormal = 0.9;
 
-/// Whether f = 0 is ambiguous on a face of `box` (corner signs alternate around it) and only grazes
-/// every such face: it lies nearly in the face's plane (a point where its tangent plane is the face).
-/// Such a face stays ambiguous at every depth, since finer faces lie in the same plane, yet it holds
-/// one sheet whose cut is decided within kGrazingDistance of the cell: not two sheets closer than the
-/// cell. Sheets that close have a sign change of f between them, where grad f turns, and fail the
-/// normal condition.
-bool only_grazing_ambiguous_faces(const Sampler& f, const Box& box) {
-  const double side = box.size().maxCoeff();
+/// Whether the leaf has an ambiguous face (cube_cycles.hpp face_ambiguous, from its corner signs) and
+/// f = 0 only grazes every such face: it lies nearly in the face's plane (a point where its tangent
+/// plane is the face). Such a face stays ambiguous at every depth, since finer faces lie in the same
+/// plane, yet it holds one sheet whose cut is decided within kGrazingDistance of the cell: not two
+/// sheets closer than the cell. Sheets that close have a sign change of f between them, where grad f
+/// turns, and fail the normal condition. Evaluates f and grad f at the corners and centre of the
+/// ambiguous faces only.
+bool only_grazing_ambiguous_faces(const Sampler& f, const Leaf& leaf) {
+  const double side = leaf.box.size().maxCoeff();
   bool ambiguous = false;
-  for (int axis = 0; axis < 3; ++axis)
-    for (const double plane : {box.lo[axis], box.hi[axis]}) {
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      // Samples 0-3: the corners (bit 0: u high, bit 1: v high), 4: the centre.
-      std::array<ValueGradient, 5> samples;
-      for (int k = 0; k < 5; ++k) {
-        Vec3 p;
-        p[axis] = plane;
-        p[u] = k == 4 ? box.centre()[u] : (k & 1 ? box.hi[u] : box.lo[u]);
-        p[v] = k == 4 ? box.centre()[v] : (k & 2 ? box.hi[v] : box.lo[v]);
-        samples[static_cast<std::size_t>(k)] = f.value_gradient(p);
-      }
-      const auto negative = [&](std::size_t k) { return is_negative(samples[k].value); };
-      if (!(negative(0) == negative(3) && negative(1) == negative(2) && negative(0) != negative(1))) continue;
-      ambiguous = true;
-      for (const ValueGradient& vg : samples) {
-        const double g = vg.gradient.norm();
-        if (!(g > 0.0 && std::abs(vg.value) <= kGrazingDistance * side * g &&
-              std::abs(vg.gradient[axis]) >= kGrazingNormal * g))
-          return false;
-      }
+  for (int face = 0; face < 6; ++face) {
+    if (!face_ambiguous(leaf.config, face)) continue;
+    ambiguous = true;
+    const auto axis = static_cast<std::size_t>(cube::kFaceAxis[static_cast<std::size_t>(face)]);
+    const auto grazes = [&](const Vec3& p) {
+      const ValueGradient vg = f.value_gradient(p);
+      const double g = vg.gradient.norm();
+      return g > 0.0 && std::abs(vg.value) <= kGrazingDistance * side * g &&
+             std::abs(vg.gradient[static_cast<Eigen::Index>(axis)]) >= kGrazingNormal * g;
+    };
+    Vec3 centre = Vec3::Zero();
+    for (const int corner : cube::kFace[static_cast<std::size_t>(face)]) {
+      const auto& offset = cube::kCorner[static_cast<std::size_t>(corner)];
+      const Vec3 p = leaf.box.lo + Vec3(offset[0], offset[1], offset[2]).cwiseProduct(leaf.box.size());
+      if (!grazes(p)) return false;
+      centre += 0.25 * p;
     }
+    if (!grazes(centre)) return false;
+  }
   return ambiguous;
 }
 
@@ -199,8 +198,8 @@ struct DoubtfulLeaves {
   /// crossed twice when they are more than kDoubtfulEdgeShare of the leaves; not the ambiguous faces
   /// that the surface grazes (grazing_faces).
   std::size_t topology = 0;
-  std::size_t grazing_faces =
-      0;  ///< leaves whose ambiguous faces the surface only grazes (only_grazing_ambiguous_faces)
+  /// Leaves whose ambiguous faces the surface only grazes (only_grazing_ambiguous_faces).
+  std::size_t grazing_faces = 0;
 };
 
 /// The leaves still in doubt (needs_refinement) after the partition has split them to its depth limit.
@@ -211,7 +210,7 @@ DoubtfulLeaves leaves_needing_refinement(const Partition& partition, const Sampl
       ++doubtful.count;
       ++doubtful.by_reason[static_cast<std::size_t>(leaf.reason)];
       doubtful.largest_side = std::max(doubtful.largest_side, leaf.box.size().maxCoeff());
-      if (leaf.reason == ComplexReason::AmbiguousFace && only_grazing_ambiguous_faces(f, leaf.box))
+      if (leaf.reason == ComplexReason::AmbiguousFace && only_grazing_ambiguous_faces(f, leaf))
         ++doubtful.grazing_faces;
     }
   const auto reason = [&](ComplexReason r) { return doubtful.by_reason[static_cast<std::size_t>(r)]; };

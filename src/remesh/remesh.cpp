@@ -91,9 +91,7 @@ class Remesher {
           .before_sweep = [this] { check_cancel(); }};
       stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
     }
-    // A repair can make a new small angle next to one it already passed: repeat while it changes things.
-    for (int pass = 0; pass < 3; ++pass)
-      if (repair_small_angles() == 0) break;
+    repair_until_settled();
     if (settings_.max_error) stats_.error_bound_violations = enforce_error_bound();
     stats_.gradient_evaluations = f_.gradient_count();
     stats_.hessian_evaluations = sizes_.hessian_evaluations();
@@ -358,6 +356,13 @@ class Remesher {
     mesh_.normals[v] = n;
   }
 
+  /// repair_small_angles, up to three passes: a repair can make a new small angle next to one it already
+  /// passed, so it repeats while it changes things.
+  void repair_until_settled() {
+    for (int pass = 0; pass < 3; ++pass)
+      if (repair_small_angles() == 0) break;
+  }
+
   /// Removes triangles whose smallest angle is below kRepairAngle: flip the longest edge when that
   /// raises the smallest angle of the pair, else collapse the shortest edge. Returns the changes made.
   std::size_t repair_small_angles() {
@@ -450,8 +455,7 @@ class Remesher {
       }
       if (splits == 0) return beyond;
       sizes_.update(mesh_);
-      for (int pass = 0; pass < 3; ++pass)
-        if (repair_small_angles() == 0) break;
+      repair_until_settled();
     }
   }
 
