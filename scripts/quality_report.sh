@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The quality report (issue 7): meshes every public surface of /work/shared/design/quality.md at three
+# The quality report (issue 7): meshes every public surface of docs/algorithms.md 7.4 at three
 # sizes (about 2k, 10k and 40k vertices) with projection, marching cubes and, when CGAL is installed,
 # CGAL's Surface_mesher at matched vertex counts; analyses every mesh with `isopatch analyze`; writes
 # docs/quality.md with the metrics side by side, the time ratios of this run and the targets checked.

@@ -1,6 +1,7 @@
 // The isopatch command-line tool: arguments -> Settings -> one library call -> output.
 // Errors print one line on stderr and exit with a code per kind (isopatch::exit_code).
 #include <isopatch/error.hpp>
+#include <isopatch/version.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -8,13 +9,14 @@
 #include <exception>
 #include <map>
 #include <new>
+#include <string>
 
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
   using namespace isopatch;
   CLI::App app{"isopatch: good-quality triangle meshes of smooth implicit surfaces f(x,y,z) = 0"};
-  app.set_version_flag("--version", "isopatch 0.1.0");
+  app.set_version_flag("--version", "isopatch " + std::string(kVersion));
   app.require_subcommand(1);
   std::map<std::string, cli::Runner> runners;
   runners["mesh"] = cli::add_mesh_command(app);

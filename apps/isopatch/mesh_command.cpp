@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "mesh_warnings.hpp"
 #include "progress_line.hpp"
+#include "stats_output.hpp"
 
 namespace isopatch::cli {
 namespace {
@@ -33,6 +34,7 @@ struct MeshOptions {
   bool quiet = false;
   bool progress = false;
   bool fields = false;
+  std::string stats_json;
   Settings defaults;
   std::optional<double> edge_length;
   int resolution = defaults.resolution;
@@ -50,19 +52,6 @@ struct MeshOptions {
   double time_limit = 0.0;
   std::optional<double> max_error;
 };
-
-void print_summary(const std::string& surface_name, const Settings& settings, const MeshStats& stats,
-                   const std::string& output) {
-  std::printf("surface    %s (%s)\n", surface_name.c_str(), method_name(settings.method).c_str());
-  std::printf("vertices   %s\n", group_digits(stats.vertices).c_str());
-  std::printf("triangles  %s\n", group_digits(stats.triangles).c_str());
-  std::printf("f evals    %s\n", group_digits(stats.value_evaluations).c_str());
-  if (stats.gradient_evaluations > 0)
-    std::printf("grad evals %s\n", group_digits(stats.gradient_evaluations).c_str());
-  for (const auto& [name, value] : stats.extra) std::printf("%-10s %g\n", name.c_str(), value);
-  std::printf("time       %.6f s\n", stats.seconds);
-  std::printf("wrote      %s\n", output.c_str());
-}
 
 int run_mesh(const MeshOptions& o) {
   Settings settings;
@@ -105,6 +94,7 @@ int run_mesh(const MeshOptions& o) {
     throw InputError("unknown --base '" + o.base + "' (want barycentric or coons)");
 
   check_output_path(o.output);
+  if (!o.stats_json.empty()) check_writable_location(o.stats_json);
   const SurfacePtr surface = resolve_surface(o.surface, settings.box, parse_params(o.params));
   MeshStats stats;
   std::optional<ProgressLine> line;  // ended (newline) before anything else is printed, also on errors
@@ -117,6 +107,7 @@ int run_mesh(const MeshOptions& o) {
   line.reset();
   if (o.fields) attach_fields(mesh, *surface);
   write_mesh(mesh, o.output);
+  if (!o.stats_json.empty()) write_stats_json(o.stats_json, surface->name(), settings, stats, o.output);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
   print_mesh_warnings(stats, mesh, stderr);
   return 0;
@@ -188,6 +179,8 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_flag(
       "--fields", o->fields,
       "Store discrete and exact mean and Gaussian curvature and the distance to f = 0 per vertex (PLY)");
+  cmd->add_option("--stats-json", o->stats_json,
+                  "Also write every statistic of the run to this file as JSON (by stage, by name)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success (and no progress line)");
   cmd->add_flag(
       "--progress", o->progress,

@@ -4,33 +4,24 @@
 #include <isopatch/metrics.hpp>
 #include <isopatch/self_intersection.hpp>
 
-#include <string>
-
 namespace isopatch::cli {
-namespace {
-
-double extra(const MeshStats& stats, const std::string& name) {
-  const auto it = stats.extra.find(name);
-  return it == stats.extra.end() ? 0.0 : it->second;
-}
-
-}  // namespace
 
 void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out) {
-  const double doubtful = extra(stats, "doubtful_topology_cells");
+  const MeshWarnings& w = stats.warnings;
+  const std::size_t doubtful = w.doubtful_topology_cells;
   if (doubtful > 0)
     std::fprintf(out,
-                 "warning: %g cells at the depth limit %g (side %.3g) still hold two sheets of f = 0, an "
+                 "warning: %zu cells at the depth limit %d (side %.3g) still hold two sheets of f = 0, an "
                  "ambiguous face or edges crossed twice: sheets closer than that may be joined or dropped "
                  "there (a larger --max-depth looks finer)\n",
-                 doubtful, extra(stats, "max_depth"), extra(stats, "doubtful_cell_size"));
-  if (const double beyond = extra(stats, "error_bound_violations"); beyond > 0)
-    std::fprintf(out, "warning: %g triangles have their centroid farther than --max-error from f = 0\n",
-                 beyond);
+                 doubtful, w.depth_limit, w.doubtful_cell_size);
+  if (w.error_bound_violations.value_or(0) > 0)
+    std::fprintf(out, "warning: %zu triangles have their centroid farther than --max-error from f = 0\n",
+                 *w.error_bound_violations);
   // The clean-up removes every angle under 20 degrees it can; one under 10 is left only where the
   // surface turns within an edge (a rim narrower than the edges), or where cells left in doubt joined
   // sheets, which the warning above already names.
-  if (doubtful == 0 && extra(stats, "remesh_iterations") > 0 && mesh.triangle_count() > 0) {
+  if (doubtful == 0 && stats.cleanup && stats.cleanup->iterations > 0 && mesh.triangle_count() > 0) {
     const ShapeReport shape = analyze_shape(mesh);
     if (shape.share_below_10 > 0.0)
       std::fprintf(

@@ -10,9 +10,9 @@
 namespace isopatch::cli {
 
 /// Prints one "warning: ..." line on `out` for each doubt: cells left in doubt at the depth limit
-/// (stats doubtful_topology_cells: sheets closer than a cell may be joined or dropped there), triangles
-/// beyond the --max-error bound (stats error_bound_violations), triangles with an angle under 10
-/// degrees after a clean-up (stats remesh_iterations > 0: marching cubes alone makes such slivers by
+/// (MeshWarnings::doubtful_topology_cells: sheets closer than a cell may be joined or dropped there),
+/// triangles beyond the --max-error bound (MeshWarnings::error_bound_violations), triangles with an
+/// angle under 10 degrees after a clean-up (MeshStats::cleanup: marching cubes alone makes such slivers by
 /// design; not with cells in doubt, whose warning covers them), and pairs of triangles of `mesh` that
 /// intersect (find_self_intersections, up to 1000 pairs). Prints nothing for a clean run.
 void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out);

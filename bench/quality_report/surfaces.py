@@ -1,4 +1,4 @@
-"""The public benchmark surfaces of /work/shared/design/quality.md (docs: docs/quality-method.md).
+"""The public benchmark surfaces of docs/algorithms.md 7.4 (docs: docs/quality-method.md).
 
 Each entry says how to name the surface on the command line (a catalogue name, or a formula with its
 box when the catalogue lacks it), what kind it is and the genus the specification gives. These are
@@ -26,7 +26,7 @@ class SurfaceSpec:
 
     @property
     def targeted(self) -> bool:
-        """The targets of quality.md apply to every closed public surface except heart."""
+        """The targets of docs/algorithms.md 7.4 apply to every closed public surface except heart."""
         return self.kind == "closed"
 
 

@@ -1,10 +1,10 @@
-"""The targets of quality.md checked on the projection meshes of one surface, over every size."""
+"""The targets of docs/algorithms.md 7.4 checked on the projection meshes of one surface, over every size."""
 
 from metrics import metrics
 
 MET, NOT_MET, NA = "met", "**not met**", "n/a"
 
-# quality.md's thresholds, shared with the --max-error checks (max_error.py).
+# The thresholds of docs/algorithms.md 7.4, shared with the --max-error checks (max_error.py).
 MIN_VALENCE6 = 0.90
 MIN_ANGLE = 20.0
 MAX_VERTEX_DISTANCE = 1e-9  # relative to the box diagonal

@@ -1,6 +1,6 @@
 #pragma once
 /// \file catalogue.hpp
-/// The built-in catalogue of benchmark surfaces (docs: ../shared/design/quality.md), each defined by a
+/// The built-in catalogue of benchmark surfaces (docs/algorithms.md 7.4), each defined by a
 /// formula in the expression language, with its default box and expected topology.
 
 #include <isopatch/geometry.hpp>

@@ -19,10 +19,10 @@
 ///
 /// An Expression is cheap to copy (it shares the tape) and safe to evaluate from many threads.
 
+#include <isopatch/derivatives.hpp>
 #include <isopatch/error.hpp>
 #include <isopatch/geometry.hpp>
 #include <isopatch/interval.hpp>
-#include <isopatch/surface.hpp>
 
 #include <cstddef>
 #include <map>

@@ -1,7 +1,7 @@
 #pragma once
 /// \file metrics.hpp
-/// Quality and accuracy of a triangle mesh of an implicit surface, as defined in the project's quality
-/// notes (docs: ../shared/design/quality.md, "Metrics"): element shape, valence of interior vertices,
+/// Quality and accuracy of a triangle mesh of an implicit surface, as defined in docs/algorithms.md
+/// section 7 ("Measuring the result"): element shape, valence of interior vertices,
 /// and, given the surface, distance to f = 0, normal errors and curvature errors against the exact
 /// values (curvature.hpp).
 

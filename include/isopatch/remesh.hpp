@@ -10,7 +10,7 @@
 /// shortest).
 ///
 /// On a mesh from the projection mesher, which is regular inside its patches, the operations act
-/// almost only along patch seams and in tiny corner patches (method.md 15, option 4): see
+/// almost only along patch seams and in tiny corner patches (docs/algorithms.md 5): see
 /// docs/whole-surface-quality.md for the measurements against the alternatives.
 ///
 /// Sizes: a uniform target edge length, or a curvature-adapted size field for a chordal error bound

@@ -1,9 +1,10 @@
 #pragma once
 /// \file settings.hpp
 /// One Settings struct for every mesher, each field with its documented default, and the statistics
-/// a mesher reports back.
+/// a mesher reports back (mesh_stats.hpp).
 
 #include <isopatch/geometry.hpp>
+#include <isopatch/mesh_stats.hpp>
 
 #include <atomic>
 #include <cstdint>
@@ -77,7 +78,7 @@ struct Settings {
   int refinement_levels = 3;
   /// Generalized barycentric coordinates for the base patch and the projection directions.
   enum class Coordinates { Wachspress, MeanValue } coordinates = Coordinates::Wachspress;
-  /// The base surface of each patch, from which interior vertices are projected (method.md 7).
+  /// The base surface of each patch, from which interior vertices are projected (docs/algorithms.md 3.5).
   ///   Barycentric (default): the paper's eq. (1), sum_k lambda_k Q_k; boundary vertices are chord
   ///     points projected in the face plane; directions blend the cell-edge directions at the corners.
   ///   Coons: the multi-sided C0 Coons patch (Salvi 2020, arXiv:2002.11347) over the face curves, traced
@@ -137,15 +138,5 @@ struct Settings {
 inline double default_edge_length(const Settings& s, const Box& box) {
   return s.edge_length.value_or(box.size().maxCoeff() / (s.max_error || s.size_field ? 16.0 : 64.0));
 }
-
-/// What a mesher did, for summaries and benchmarks.
-struct MeshStats {
-  double seconds = 0.0;
-  std::uint64_t value_evaluations = 0;     ///< evaluations of f alone
-  std::uint64_t gradient_evaluations = 0;  ///< evaluations of f with its gradient
-  std::size_t vertices = 0;
-  std::size_t triangles = 0;
-  std::map<std::string, double> extra;  ///< method-specific counters, printed by name
-};
 
 }  // namespace isopatch

@@ -4,12 +4,13 @@
 /// with exact first and second derivatives and, when available, interval bounds over a box.
 ///
 /// Surfaces are immutable and shared: pass `const Surface&` to algorithms, hold `SurfacePtr`.
-/// Every method is safe to call concurrently from several threads.
+/// Every method is safe to call concurrently from several threads. The result types of the
+/// derivatives (ValueGradient, SecondOrder, IntervalGradient) are in derivatives.hpp.
 
+#include <isopatch/derivatives.hpp>
 #include <isopatch/geometry.hpp>
 #include <isopatch/interval.hpp>
 
-#include <array>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -17,25 +18,6 @@
 #include <string>
 
 namespace isopatch {
-
-/// f and its gradient at one point.
-struct ValueGradient {
-  double value = 0.0;
-  Vec3 gradient = Vec3::Zero();
-};
-
-/// f, its gradient and its (symmetric) Hessian at one point.
-struct SecondOrder {
-  double value = 0.0;
-  Vec3 gradient = Vec3::Zero();
-  Mat3 hessian = Mat3::Zero();
-};
-
-/// Interval bounds of f and of its gradient over a box.
-struct IntervalGradient {
-  Interval value;
-  std::array<Interval, 3> gradient;
-};
 
 class Surface {
  public:

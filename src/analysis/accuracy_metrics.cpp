@@ -1,4 +1,4 @@
-// Accuracy of a mesh against its implicit surface (quality.md, "Accuracy against f"): first-order
+// Accuracy of a mesh against its implicit surface (docs/algorithms.md 7.2): first-order
 // distance, normal errors and curvature errors, with f's exact derivatives as the ground truth.
 // Samples where the truth is undefined (grad f = 0, non-finite f) or the mesh has no normal are
 // counted, never silently mixed in.

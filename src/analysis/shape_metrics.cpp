@@ -1,4 +1,4 @@
-// Element shape and valence metrics (quality.md, "Element shape" and "Connectivity").
+// Element shape and valence metrics (docs/algorithms.md 7.1).
 #include <isopatch/metrics.hpp>
 
 #include <algorithm>

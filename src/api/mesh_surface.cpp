@@ -65,16 +65,9 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
   stats->gradient_evaluations += r.gradient_evaluations;
   stats->vertices = mesh.vertex_count();
   stats->triangles = mesh.triangle_count();
-  stats->extra["remesh_iterations"] = iterations;
-  stats->extra["remesh_splits"] = static_cast<double>(r.splits);
-  stats->extra["remesh_collapses"] = static_cast<double>(r.collapses);
-  stats->extra["remesh_flips"] = static_cast<double>(r.flips);
-  stats->extra["remesh_repairs"] = static_cast<double>(r.repairs);
-  stats->extra["remesh_rejected_moves"] = static_cast<double>(r.rejected_moves);
-  stats->extra["remesh_exactness_moves"] = static_cast<double>(r.exactness_moves);
-  if (settings.max_error)
-    stats->extra["error_bound_violations"] = static_cast<double>(r.error_bound_violations);
-  stats->extra["hessian_evaluations"] = static_cast<double>(r.hessian_evaluations);
+  stats->cleanup = CleanupStats{iterations, r.splits,         r.collapses,       r.flips,
+                                r.repairs,  r.rejected_moves, r.exactness_moves, r.hessian_evaluations};
+  if (settings.max_error) stats->warnings.error_bound_violations = r.error_bound_violations;
 }
 
 /// Meshes with the method of `settings`, then cleans up (remesh.hpp) when asked.
@@ -95,8 +88,7 @@ Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats
         if (stats) {
           stats->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           stats->gradient_evaluations += fairing.gradient_evaluations;
-          stats->extra["fair_iterations"] = settings.fair_iterations;
-          stats->extra["fair_unconverged"] = static_cast<double>(fairing.unconverged);
+          stats->fairing = FairingSummary{settings.fair_iterations, fairing.unconverged};
         }
       }
       clean_up(mesh, surface, settings, stats);

@@ -5,9 +5,9 @@
 
 #include "expr/tape.hpp"
 
+#include <isopatch/derivatives.hpp>
 #include <isopatch/geometry.hpp>
 #include <isopatch/interval.hpp>
-#include <isopatch/surface.hpp>
 
 #include <cstddef>
 #include <span>

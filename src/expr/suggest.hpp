@@ -1,7 +1,7 @@
 #pragma once
 // "did you mean ...?" for a misspelt name, shared by the parser and the surface resolver.
 
-#include "surface/edit_distance.hpp"
+#include "core/edit_distance.hpp"
 
 #include <cctype>
 #include <string>

@@ -167,8 +167,10 @@ Mesh marching_cubes(const Surface& surface, const Settings& settings, MeshStats*
     stats->value_evaluations = mesher.evaluations();
     stats->vertices = mesh.vertex_count();
     stats->triangles = mesh.triangle_count();
-    stats->extra["cells"] = static_cast<double>(grid.cells[0]) * grid.cells[1] * grid.cells[2];
-    stats->extra["cell_size"] = grid.cell;
+    stats->marching_cubes = MarchingCubesStats{static_cast<std::uint64_t>(grid.cells[0]) *
+                                                   static_cast<std::uint64_t>(grid.cells[1]) *
+                                                   static_cast<std::uint64_t>(grid.cells[2]),
+                                               grid.cell};
   }
   return mesh;
 }

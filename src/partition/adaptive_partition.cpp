@@ -10,6 +10,7 @@
 #include "partition/face_links.hpp"
 #include "partition/index_map.hpp"
 #include "partition/leaf_tree.hpp"
+#include "partition/octree_descent.hpp"
 #include "partition/sample_cache.hpp"
 #include "surface/bracketed_root.hpp"
 #include "surface/sampler.hpp"
@@ -77,7 +78,7 @@ class AdaptiveBuilder {
         cos_cone_(std::cos(settings.cone_angle_deg * std::numbers::pi / 180.0)),
         tree_(settings.surface_depth, settings.max_depth) {}
 
-  Partition run(const Partition& seed);
+  Partition run();
 
  private:
   Analysis analyse(const CellKey& key);
@@ -92,7 +93,7 @@ class AdaptiveBuilder {
   bool close(const Analysis& a);
   std::uint32_t crossing(const SegmentKey& key);
   void check_cancel() const;
-  Partition finish(const Partition& seed, std::vector<Analysis>& analyses);
+  Partition finish(std::vector<Analysis>& analyses);
 
   const Surface& surface_;
   const PartitionSettings& settings_;
@@ -108,11 +109,13 @@ class AdaptiveBuilder {
 };
 
 void AdaptiveBuilder::check_cancel() const {
-  if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
+  check_partition_cancel(settings_);
 }
 
-Partition AdaptiveBuilder::run(const Partition& seed) {
-  for (const Leaf& leaf : seed.leaves) tree_.add_root(leaf.coords);
+Partition AdaptiveBuilder::run() {
+  // The roots: the cells of the plain descent to surface_depth, sampled through the builder's cache.
+  for (const SurfaceCell& root : descend_to_surface_cells(surface_, lattice_, settings_, cache_, stats_))
+    tree_.add_root(root.cell.coords);
   const int s = settings_.surface_depth;
   for (const CellKey& key : settings_.force_split) {
     if (key.depth < s || key.depth >= settings_.max_depth) continue;
@@ -167,7 +170,7 @@ Partition AdaptiveBuilder::run(const Partition& seed) {
     }
     if (!changed && to_split.empty()) break;
   }
-  return finish(seed, analyses);
+  return finish(analyses);
 }
 
 // Closure: every cell around a crossed segment must be covered by the tree (the 4 leaves around an
@@ -243,7 +246,7 @@ std::array<bool, 3> AdaptiveBuilder::monotone_axes(const Cell& cell) {
   return monotone;
 }
 
-// Edge test (method.md 4.3.2) on one segment of the boundary graph.
+// Edge test (docs/algorithms.md 2.9.1) on one segment of the boundary graph.
 bool AdaptiveBuilder::segment_passes(const SegmentKey& key, const std::array<bool, 3>& monotone) {
   if (settings_.edge_samples == 0) return true;
   if (monotone[key.axis]) {
@@ -388,8 +391,8 @@ ComplexReason AdaptiveBuilder::classify(const Cell& cell, const Analysis& a, boo
   return ComplexReason::None;
 }
 
-// Face test (method.md 4.3.3) on every face whose boundary graph holds crossings; face_crossed is
-// indexed by axis * 2 + side.
+// Face test (docs/algorithms.md 2.9.2) on every face whose boundary graph holds crossings;
+// face_crossed is indexed by axis * 2 + side.
 bool AdaptiveBuilder::face_test(const Cell& cell, const std::array<bool, 6>& face_crossed) {
   for (int f = 0; f < 6; ++f)
     if (face_crossed[static_cast<std::size_t>(cube::kFaceAxis[f] * 2 + cube::kFaceSide[f])] &&
@@ -416,7 +419,7 @@ std::uint32_t AdaptiveBuilder::crossing(const SegmentKey& key) {
 }
 
 // Keeps the crossings the loops use, renumbered by segment key; leaves sorted by (depth, coords).
-Partition AdaptiveBuilder::finish(const Partition& seed, std::vector<Analysis>& analyses) {
+Partition AdaptiveBuilder::finish(std::vector<Analysis>& analyses) {
   std::vector<std::uint32_t> used;
   for (const Analysis& a : analyses)
     for (const Loop& loop : a.leaf.loops) used.insert(used.end(), loop.corners.begin(), loop.corners.end());
@@ -430,12 +433,6 @@ Partition AdaptiveBuilder::finish(const Partition& seed, std::vector<Analysis>& 
     p.crossings.push_back(crossings_[used[k]]);
   }
   PartitionStats& s = stats_;
-  const PartitionStats& d = seed.stats;
-  s.cells_visited = d.cells_visited;
-  s.pruned_by_interval = d.pruned_by_interval;
-  s.pruned_by_heuristic = d.pruned_by_heuristic;
-  s.empty_surface_cells = d.empty_surface_cells;
-  s.cells_recovered = d.cells_recovered;
   for (Analysis& a : analyses) {
     Leaf& leaf = a.leaf;
     for (Loop& loop : leaf.loops) {
@@ -462,12 +459,9 @@ Partition AdaptiveBuilder::finish(const Partition& seed, std::vector<Analysis>& 
   p.surface_depth = settings_.surface_depth;
   p.cell_size = lattice_.unit() * lattice_.step(settings_.surface_depth);
   p.adaptive = true;
-  s.value_evaluations = d.value_evaluations + sampler_.value_count();
-  s.gradient_evaluations = d.gradient_evaluations + sampler_.gradient_count();
-  s.segment_sample_evaluations = d.segment_sample_evaluations + cache_.segment_sample_evaluations();
-  s.root_evaluations += d.root_evaluations;
-  s.interval_evaluations += d.interval_evaluations;
-  s.edges_certified_by_interval += d.edges_certified_by_interval;
+  s.value_evaluations = sampler_.value_count();
+  s.gradient_evaluations = sampler_.gradient_count();
+  s.segment_sample_evaluations = cache_.segment_sample_evaluations();
   p.stats = s;
   return p;
 }
@@ -476,11 +470,7 @@ Partition AdaptiveBuilder::finish(const Partition& seed, std::vector<Analysis>& 
 
 Partition build_adaptive_partition(const Surface& surface, const Box& box,
                                    const PartitionSettings& settings) {
-  PartitionSettings uniform = settings;
-  uniform.adaptive = false;
-  uniform.force_split.clear();
-  const Partition seed = build_partition(surface, box, uniform);
-  return AdaptiveBuilder(surface, settings, seed.lattice).run(seed);
+  return AdaptiveBuilder(surface, settings, make_lattice(box, settings.max_depth)).run();
 }
 
 }  // namespace isopatch

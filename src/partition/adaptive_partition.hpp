@@ -1,14 +1,15 @@
 #pragma once
 /// \file adaptive_partition.hpp
-/// The adaptive partition (PartitionSettings::adaptive; method.md 4.4, 4.5, 5.3), called by
+/// The adaptive partition (PartitionSettings::adaptive; docs/algorithms.md 2.12), called by
 /// build_partition. Algorithm:
-///  1. the uniform partition at surface_depth gives the root cells (its leaves);
+///  1. the descent shared with the uniform builder (octree_descent.hpp) gives the root cells, sampled
+///     through the builder's one sample cache;
 ///  2. rounds until stable: 2:1 balance (faces and edges); analyse every leaf on its boundary graph;
 ///     add the surface_depth cell of any uncovered cell around a crossed segment (closure); split the
 ///     leaves below max_depth whose topology is in doubt or that contain a force_split cell;
 ///  3. output the leaves whose boundary graph is crossed (or fails the edge test).
 ///
-/// Boundary graph of a leaf (5.3): an edge is split at its midpoint when a cell around it is split
+/// Boundary graph of a leaf (2.12.2): an edge is split at its midpoint when a cell around it is split
 /// (2:1 balance: by one level, so every segment is the edge of the finest leaf touching it); a face
 /// whose neighbour is split becomes 4 quarter faces, each the face of one finer neighbour. Crossings
 /// are computed per segment (shared by segment key with all leaves touching it), linked per (sub-)face

@@ -1,5 +1,5 @@
 // Sample-based cell tests. They are heuristics (they look at samples, not at the whole cell); the
-// reasons they imply a single disk when they hold everywhere are in method.md 4.3.
+// reasons they imply a single disk when they hold everywhere are in docs/algorithms.md 2.9.5.
 #include "partition/cell_tests.hpp"
 
 #include "partition/sample_cache.hpp"

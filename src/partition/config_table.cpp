@@ -1,4 +1,4 @@
-// Generation of the configuration table (method.md 4.2): classify each of the 256 sign patterns by
+// Generation of the configuration table (docs/algorithms.md 2.5): classify each of the 256 sign patterns by
 // its ambiguous faces and by the number of cycles the face-by-face linking gives.
 #include "partition/config_table.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 /// \file config_table.hpp
-/// The corner-sign configuration table of method.md section 4.2, generated at start-up by linking
+/// The corner-sign configuration table of docs/algorithms.md 2.5, generated at start-up by linking
 /// crossed edges face by face (cube_cycles.hpp), never pasted from elsewhere.
 
 #include <array>
@@ -23,7 +23,7 @@ struct ConfigEntry {
 };
 
 /// The 256-entry table, indexed by the configuration code: bit i set when corner i (cube.hpp) is
-/// negative. Built once on first use (thread-safe); method.md 4.2 lists the expected counts:
+/// negative. Built once on first use (thread-safe); docs/algorithms.md 2.5 lists the expected counts:
 /// 2 empty, 126 single loops (16 triangles, 30 quads, 48 pentagons, 32 hexagons), 8 double
 /// triangles, 120 ambiguous.
 const std::array<ConfigEntry, 256>& config_table();

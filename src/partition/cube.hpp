@@ -1,6 +1,6 @@
 #pragma once
 /// \file cube.hpp
-/// Numbering of the corners, edges and faces of a cube cell, as in method.md section 3 (the numbering
+/// Numbering of the corners, edges and faces of a cube cell, as in docs/algorithms.md 2.3 (the numbering
 /// of salvipeter/marching-surface). Faces keep that order (z=0, z=1, x=1, x=0, y=0, y=1) but list their
 /// corners counter-clockwise as seen from outside the cell, which is what loop orientation needs.
 

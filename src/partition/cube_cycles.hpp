@@ -1,6 +1,6 @@
 #pragma once
 /// \file cube_cycles.hpp
-/// The purely combinatorial part of loop construction (method.md section 5.2): from the signs at the
+/// The purely combinatorial part of loop construction (docs/algorithms.md 2.8): from the signs at the
 /// 8 corners of a cube, link the crossed edges face by face and walk the resulting cycles.
 
 #include <cstdint>
@@ -33,7 +33,7 @@ std::uint16_t crossed_edges(std::uint8_t negative);
 /// surface, hence every crossed edge has exactly one incoming and one outgoing side, and two cells
 /// sharing a face traverse each shared side in opposite directions (their outward normals are
 /// opposite). For a loop around a negative region this is counter-clockwise about the outward
-/// gradient, i.e. the orientation of method.md 5.2 step 5, obtained from the signs alone.
+/// gradient, i.e. the orientation that docs/algorithms.md 2.9.4 checks, obtained from the signs alone.
 ///
 /// Cycles are listed by their smallest edge, each starting at that edge: the result is a function of
 /// the two masks only.

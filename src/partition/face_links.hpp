@@ -1,6 +1,6 @@
 #pragma once
 /// \file face_links.hpp
-/// Linking the crossings on the boundary polygon of one (sub-)face (method.md 5.2 step 2, 5.3 step 2).
+/// Linking the crossings on the boundary polygon of one (sub-)face (docs/algorithms.md 2.8, 2.12.2).
 /// The polygon is the face's boundary as a leaf sees it: its corners and, on a transition face, the
 /// lattice points of finer neighbours on its edges, counter-clockwise seen from outside the leaf.
 

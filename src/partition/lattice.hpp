@@ -1,6 +1,6 @@
 #pragma once
 /// \file lattice.hpp
-/// The integer lattice under the octree (method.md 4.1) and the keys that name its points, segments
+/// The integer lattice under the octree (docs/algorithms.md 2.1) and the keys that name its points, segments
 /// and faces. Every position the partition uses is computed from integer coordinates by one function,
 /// so cells sharing a point see bit-identical coordinates and values.
 
@@ -46,7 +46,7 @@ struct Lattice {
   bool inside(int depth, const LatticePoint& cell) const;
 };
 
-/// The root cube of method.md 4.1: `box` made cubic (its longest side), grown by 2% and shifted by
+/// The root cube of docs/algorithms.md 2.1: `box` made cubic (its longest side), grown by 2% and shifted by
 /// the non-dyadic offset 1e-3 * size * (0.1234, 0.5678, 0.9012), so symmetric surfaces do not pass
 /// through lattice points. The result still contains `box`, and clips its positions to `box`.
 /// \throw InputError if !box.valid() or max_depth is outside 0..Lattice::kMaxDepth.

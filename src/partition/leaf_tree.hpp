@@ -1,6 +1,6 @@
 #pragma once
 /// \file leaf_tree.hpp
-/// The leaves of an adaptive octree below a set of root cells at one depth (method.md 4.4, 4.5): a map
+/// The leaves of an adaptive octree below a set of root cells at one depth (docs/algorithms.md 2.12.1): a map
 /// from cells to "leaf" or "split", point location, splitting and 2:1 balance across faces and edges.
 /// Cells outside every root are "outside" (empty space for the partition).
 

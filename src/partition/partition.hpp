@@ -1,12 +1,13 @@
 #pragma once
 /// \file partition.hpp
-/// The octree partition of the projection mesher (method.md sections 4 and 5.1-5.3). Uniform mode:
+/// The octree partition of the projection mesher (docs/algorithms.md section 2). Uniform mode:
 /// every surface leaf at one depth, no transitions between leaf sizes. Adaptive mode: leaves of
 /// depths surface_depth..max_depth, 2:1 balanced, coarse leaves seeing their finer neighbours'
 /// lattice points (transition faces, flat corners). Each surface leaf carries its
 /// oriented loop(s) of edge crossings (the patch corners); crossings are shared by all the leaves
 /// around their edge, so patches built on the loops assemble into a closed, oriented mesh.
 
+#include "partition/cell_partition.hpp"
 #include "partition/lattice.hpp"
 
 #include <isopatch/geometry.hpp>
@@ -18,6 +19,8 @@
 #include <vector>
 
 namespace isopatch {
+
+static_assert(Lattice::kMaxDepth == kMaxPartitionLevel);
 
 /// An octree cell: its depth and its coordinates at that depth (in cell sizes from the root's lower corner).
 struct CellKey {
@@ -34,18 +37,19 @@ struct PartitionSettings {
   /// Depth D of the finest lattice, surface_depth..20. Keys (segments, faces) are in its coordinates,
   /// so a later adaptive partition can refine to D while sharing them.
   int max_depth = 7;
-  /// Points sampled strictly inside each cell edge by the edge test (method.md 4.3.2); 0 disables it.
+  /// Points sampled strictly inside each cell edge by the edge test (docs/algorithms.md 2.9.1);
+  /// 0 disables it.
   int edge_samples = 8;
-  /// Half-angle of the normal-cone test in degrees (method.md 4.3.4), in (0, 90].
+  /// Half-angle of the normal-cone test in degrees (docs/algorithms.md 2.9.3), in (0, 90].
   double cone_angle_deg = 75.0;
-  /// The in-plane gradient test on crossed faces (method.md 4.3.3).
+  /// The in-plane gradient test on crossed faces (docs/algorithms.md 2.9.2).
   bool face_test = true;
   /// Use Surface::bound / gradient_bound when the surface offers them: sound pruning of empty cells
   /// and monotone edges certified without sampling.
   bool use_intervals = true;
   /// When set and true, build_partition stops with LimitError at the next cell.
   const std::atomic<bool>* cancel = nullptr;
-  /// Adaptive mode (method.md 4.4, 4.5, 5.3): surface leaves start at surface_depth and are split down
+  /// Adaptive mode (docs/algorithms.md 2.12): surface leaves start at surface_depth and are split down
   /// to max_depth while their topology is in doubt (several loops, an ambiguous (sub-)face, a segment
   /// crossed twice, an edge sample with the wrong sign, a loop against the gradients, a loop of fewer
   /// than 3 or more than 12 corners) or while they contain a cell of force_split; then 2:1 balanced
@@ -79,21 +83,6 @@ enum class LeafKind : std::uint8_t {
   Complex,  ///< failed a test: holds any number of loops (possibly none); needs refinement or fallback
 };
 
-/// The first test a Complex leaf failed, in the order the tests run.
-enum class ComplexReason : std::uint8_t {
-  None,           ///< the leaf is Simple
-  SeveralLoops,   ///< the corner signs give two loops (two triangles at opposite corners)
-  AmbiguousFace,  ///< a face has 4 crossings (resolved by its centre sample to make the loops)
-  EdgeTest,       ///< an edge is crossed more than once (or, with equal corner signs, at all)
-  FaceTest,       ///< the in-plane gradients on a crossed face disagree
-  NormalCone,     ///< the gradients do not fit in the normal cone
-  Orientation,    ///< the loop's Newell normal opposes the gradients at its corners
-};
-inline constexpr int kComplexReasonCount = 7;
-
-/// Short name of a reason ("edge-test", ...), for statistics.
-const char* to_string(ComplexReason reason);
-
 /// Adaptive mode: a leaf next to finer leaves (a "transition" leaf) has corners on the finer
 /// segments of its edges and faces; a corner on a segment inside one of its faces is "flat". Side k of
 /// a loop then lies on a quarter of the leaf's face: side_faces[k] is that quarter, i.e. the face of
@@ -110,35 +99,6 @@ struct Leaf {
   std::vector<Loop> loops;
 };
 
-struct PartitionStats {
-  std::uint64_t cells_visited = 0;
-  std::uint64_t pruned_by_interval = 0;   ///< cells skipped because bound() excludes 0 (sound)
-  std::uint64_t pruned_by_heuristic = 0;  ///< cells skipped by the first-order empty test (heuristic)
-  std::uint64_t empty_surface_cells = 0;  ///< cells at surface depth with equal signs everywhere sampled
-  std::uint64_t cells_recovered = 0;      ///< leaves found next to crossings after a wrong heuristic prune
-  std::uint64_t simple_leaves = 0;
-  std::uint64_t complex_leaves = 0;
-  std::array<std::uint64_t, kComplexReasonCount> complex_by_reason{};  ///< indexed by ComplexReason
-  std::uint64_t leaves_without_loops = 0;  ///< Complex: equal corner signs, an edge sample of the other sign
-  std::uint64_t loops = 0;
-  std::uint64_t orientation_disagreements = 0;    ///< loops of any leaf whose Newell normal opposes grad f
-  std::uint64_t edges_certified_by_interval = 0;  ///< edge tests settled by gradient_bound
-  std::uint64_t value_evaluations = 0;            ///< all evaluations of f alone, including the two below
-  std::uint64_t segment_sample_evaluations = 0;   ///< of which for the edge test
-  std::uint64_t root_evaluations = 0;             ///< of which inside the root finder
-  std::uint64_t gradient_evaluations = 0;         ///< evaluations of f with its gradient
-  std::uint64_t interval_evaluations = 0;         ///< calls of bound() and gradient_bound()
-  // Filled in adaptive mode only (the descent counters above then come from the initial uniform
-  // descent; the evaluation counters add up both passes).
-  std::array<std::uint64_t, Lattice::kMaxDepth + 1> leaves_per_depth{};  ///< output leaves by depth
-  std::uint64_t leaves_with_flat_corners = 0;  ///< leaves with a corner inside one of their faces
-  std::uint64_t max_loop_size = 0;             ///< most corners of any loop
-  std::uint64_t adaptive_rounds = 0;           ///< analyse / split rounds until stable
-  std::uint64_t forced_splits = 0;             ///< leaves split because of force_split
-  std::uint64_t topology_splits = 0;           ///< leaves split because their topology was in doubt
-  std::uint64_t balance_splits = 0;            ///< leaves split to restore 2:1 balance
-};
-
 struct Partition {
   Lattice lattice;         ///< root cube and finest lattice (depth max_depth)
   int surface_depth = 0;   ///< depth of every leaf (adaptive mode: the coarsest leaf depth)
@@ -149,7 +109,7 @@ struct Partition {
   PartitionStats stats;
 };
 
-/// Builds the partition of `box` for `surface` (method.md 4.1-4.4, 5.1, 5.2).
+/// Builds the partition of `box` for `surface` (docs/algorithms.md 2.1-2.11).
 ///
 /// A cell down to surface_depth is skipped as empty when bound() excludes 0 (sound) or, when the
 /// surface gives no bound, when it passes the heuristic empty test: all 8 corners and the centre have

@@ -1,8 +1,9 @@
 #pragma once
 /// \file sample_cache.hpp
-/// Values and gradients of f on the half lattice, cached by packed integer coordinates (method.md 4.1),
-/// plus the interior samples of lattice segments used by the edge test. Every value is checked (NaN or
-/// infinity throws EvaluationError naming the point) and counted. Not thread-safe: one per build.
+/// Values and gradients of f on the half lattice, cached by packed integer coordinates
+/// (docs/algorithms.md 2.2), plus the interior samples of lattice segments used by the edge test. Every
+/// value is checked (NaN or infinity throws EvaluationError naming the point) and counted. Not
+/// thread-safe: one per build.
 
 #include "partition/index_map.hpp"
 #include "partition/lattice.hpp"

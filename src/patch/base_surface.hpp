@@ -2,8 +2,8 @@
 /// \file base_surface.hpp
 /// Base surfaces of an n-sided patch: the map from generalized barycentric coordinates lambda_0 ..
 /// lambda_{n-1} of a domain point (barycentric.hpp) to a point in space, from which the projection
-/// mesher marches onto f = 0 (Sipos & Salvi 2021, sec. 2.2; method.md 7). An open set (barycentric,
-/// multi-sided C0 Coons, later others), hence the one level of virtual dispatch.
+/// mesher marches onto f = 0 (Sipos & Salvi 2021, sec. 2.2; docs/algorithms.md 3.5). An open set
+/// (barycentric, multi-sided C0 Coons, later others), hence the one level of virtual dispatch.
 /// Indexing follows domain.hpp: corner k sits at V_k, side k runs from V_k to V_{k+1}.
 
 #include <isopatch/geometry.hpp>

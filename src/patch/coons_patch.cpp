@@ -13,7 +13,7 @@ namespace isopatch {
 namespace {
 
 /// Below this, h_i = lambda_{i-1} + lambda_i is treated as 0: ribbon i is then far from its side and
-/// its weight h_i / 2 vanishes, so any s_i will do (the paper's code takes 1/2, method.md 14.5).
+/// its weight h_i / 2 vanishes, so any s_i will do (the paper's code takes 1/2, docs/algorithms.md 3.5.3).
 constexpr double kSideParameterEps = 1e-12;
 
 Vec3 cubic_bezier(const std::array<Vec3, 4>& c, double u) {

@@ -1,7 +1,7 @@
 #pragma once
 /// \file coons_patch.hpp
 /// The multi-sided C0 Coons patch of P. Salvi, "A multi-sided generalization of the C0 Coons patch",
-/// WAIT 2020, arXiv:2002.11347 (formulas in method.md 7.2), over n boundary curves given as dense
+/// WAIT 2020, arXiv:2002.11347 (formulas in docs/algorithms.md 3.5.3), over n boundary curves given as dense
 /// polylines (polyline_curve.hpp). It interpolates every boundary curve, so the base of an n-sided
 /// patch starts on the traced face curves instead of on their chords (Sipos & Salvi 2021, sec. 2.2).
 ///

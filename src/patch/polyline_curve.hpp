@@ -2,8 +2,8 @@
 /// \file polyline_curve.hpp
 /// A space curve given as a dense polyline, parameterized by normalized cumulative chord length, as
 /// the boundary curves of the multi-sided C0 Coons patch are in Sipos & Salvi 2021 (footnote on
-/// "curves as dense polylines") and in method.md 7.2. Unlike the authors' polyline class (method.md
-/// 14.2), both end derivatives are taken from the knots, so neither is a zero vector.
+/// "curves as dense polylines") and in docs/algorithms.md 3.5.3. Unlike the authors' polyline class
+/// (docs/algorithms.md 3.5.2), both end derivatives are taken from the knots, so neither is a zero vector.
 
 #include <isopatch/geometry.hpp>
 

@@ -1,4 +1,4 @@
-// Face curves by projected chord points (method.md 7.3, option A); see face_curve.hpp.
+// Face curves by projected chord points (docs/algorithms.md 4.4); see face_curve.hpp.
 #include "project/face_curve.hpp"
 
 #include <algorithm>
@@ -12,21 +12,20 @@
 namespace isopatch {
 namespace {
 
-/// One point moved onto f = 0 within the face, with the in-face angle test of method.md 8.3.1.
+/// One point moved onto f = 0 within the face, with the in-face angle test of docs/algorithms.md 4.3.
 struct InFaceHit {
   SurfacePoint point;
   bool accepted = false;
 };
 
-InFaceHit project_in_face(const Sampler& f, const Vec3& start, const Vec3& direction, const Box& face_region,
-                          std::uint32_t axis, const ProjectionParams& params) {
+InFaceHit project_in_face(const Sampler& f, const Vec3& start, const Vec3& direction, const CellFace& face,
+                          const ProjectionParams& params) {
   RayMarchSettings march;
   march.steps = params.march_steps;
-  const auto hit = march_to_surface(f, start, f.value(start), direction, face_region, march);
+  const auto hit = march_to_surface(f, start, f.value(start), direction, face.region, march);
   if (!hit) return {{start, f.value_gradient(start).gradient}, false};
   const ValueGradient vg = f.value_gradient(hit->point);
-  Vec3 in_face = vg.gradient;
-  in_face[axis] = 0.0;
+  const Vec3 in_face = in_plane(face, vg.gradient);
   const double norm = in_face.norm();
   const bool steep =
       norm > 0.0 && std::abs(hit->ray_direction.dot(in_face)) >= params.cos_max_boundary_angle * norm;
@@ -39,26 +38,21 @@ int face_curve_samples(int resolution) {
   return std::max(16, 4 * resolution);
 }
 
-FaceCurve trace_face_curve(const Sampler& f, const Lattice& lattice, const Crossing& from, const Crossing& to,
-                           const FaceId& face, const ProjectionParams& params) {
-  const Box region = face_box(lattice, face);
-  const std::uint32_t axis = face.axis;
-  // The face plane's coordinate, taken from a corner (corners lie on the face's edges exactly), is
-  // written into every start point so that the rounding of (1 - t) a + t b cannot leave the plane.
-  const double plane = from.position[axis];
+FaceCurve trace_face_curve(const Sampler& f, const CellCorner& from, const CellCorner& to,
+                           const CellFace& face, const ProjectionParams& params) {
+  // Every start point is put into the face plane through a corner (corners lie on the face's edges
+  // exactly), so that the rounding of (1 - t) a + t b cannot leave the plane.
   const int m = face_curve_samples(params.resolution);
   FaceCurve curve;
   curve.dense.reserve(static_cast<std::size_t>(m) + 1);
   curve.dense.push_back(from.position);
   for (int j = 1; j < m; ++j) {
     const double t = static_cast<double>(j) / m;
-    Vec3 start = (1.0 - t) * from.position + t * to.position;
-    start[axis] = plane;
+    const Vec3 start = onto_plane(face, (1.0 - t) * from.position + t * to.position, from.position);
     // Both corner directions are edge directions of this face: their blend lies in its plane and never
-    // vanishes (method.md 8.1).
-    Vec3 direction = (1.0 - t) * from.direction + t * to.direction;
-    direction[axis] = 0.0;
-    const InFaceHit hit = project_in_face(f, start, direction, region, axis, params);
+    // vanishes (docs/algorithms.md 4.5).
+    const Vec3 direction = in_plane(face, (1.0 - t) * from.direction + t * to.direction);
+    const InFaceHit hit = project_in_face(f, start, direction, face, params);
     curve.accepted = curve.accepted && hit.accepted;
     curve.dense.push_back(hit.point.position);
   }
@@ -73,11 +67,10 @@ FaceCurve trace_face_curve(const Sampler& f, const Lattice& lattice, const Cross
   for (int i = 1; i < params.resolution; ++i) {
     // The arc-length sample lies on a chord of the polyline, within O(h^2 curvature) of f = 0: a short
     // march along the in-face gradient puts it on the curve.
-    Vec3 start = polyline.point(static_cast<double>(i) / params.resolution);
-    start[axis] = plane;
-    Vec3 direction = f.value_gradient(start).gradient;
-    direction[axis] = 0.0;
-    const InFaceHit hit = project_in_face(f, start, direction, region, axis, params);
+    const Vec3 start =
+        onto_plane(face, polyline.point(static_cast<double>(i) / params.resolution), from.position);
+    const Vec3 direction = in_plane(face, f.value_gradient(start).gradient);
+    const InFaceHit hit = project_in_face(f, start, direction, face, params);
     curve.accepted = curve.accepted && hit.accepted;
     curve.points.push_back(hit.point);
   }

@@ -1,13 +1,13 @@
 #pragma once
 // The face curve between two consecutive corners of a loop: the intersection of the cell face's plane
-// with f = 0, traced as a dense polyline (method.md 7.3, option A) and resampled at equal arc length to
+// with f = 0, traced as a dense polyline (docs/algorithms.md 4.4) and resampled at equal arc length to
 // the boundary vertices of both patches sharing the side. It gives the Coons base (Salvi 2020) its
 // boundary curves and places boundary vertices evenly along the true curve rather than at the hits
 // of rays from evenly spaced chord points (Sipos & Salvi 2021, sec. 2.2, "boundary points stay in place").
 
 #include <vector>
 
-#include "partition/partition.hpp"
+#include "partition/cell_partition.hpp"
 #include "project/surface_point.hpp"
 #include "surface/sampler.hpp"
 
@@ -28,10 +28,10 @@ struct FaceCurve {
 /// Dense samples per side for resolution r: max(16, 4 r).
 int face_curve_samples(int resolution);
 
-/// Traces the side from crossing `from` to crossing `to` on face `face` of `lattice`.
+/// Traces the side from corner `from` to corner `to` on `face`.
 /// \pre both crossings lie on edges of the face.
 /// \throw EvaluationError when f is not finite along a ray.
-FaceCurve trace_face_curve(const Sampler& f, const Lattice& lattice, const Crossing& from, const Crossing& to,
-                           const FaceId& face, const ProjectionParams& params);
+FaceCurve trace_face_curve(const Sampler& f, const CellCorner& from, const CellCorner& to,
+                           const CellFace& face, const ProjectionParams& params);
 
 }  // namespace isopatch

@@ -1,6 +1,6 @@
 #pragma once
-// One n-sided patch of the projection mesher (Sipos & Salvi 2021, eq. 1 and sec. 2.2; method.md 7,
-// 8.1-8.3): a base surface (barycentric, eq. 1, or the multi-sided C0 Coons patch of Salvi 2020)
+// One n-sided patch of the projection mesher (Sipos & Salvi 2021, eq. 1 and sec. 2.2; docs/algorithms.md
+// 3.5, 4.5-4.7): a base surface (barycentric, eq. 1, or the multi-sided C0 Coons patch of Salvi 2020)
 // sampled at every interior template vertex, moved onto f = 0 along d(x) = sum_k lambda_k(x) d_k
 // within the cell, then the acceptance tests.
 

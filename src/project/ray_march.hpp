@@ -1,7 +1,7 @@
 #pragma once
 // Projection of a point onto f = 0 along a given direction, bounded by a convex region (a box), as in
-// Sipos & Salvi 2021, section 2.2, made robust as in method.md 8.2: march in fixed steps from the start
-// towards the side where f changes sign, stop at the region's exit, then refine the bracket.
+// Sipos & Salvi 2021, section 2.2, made robust as in docs/algorithms.md 4.6: march in fixed steps from
+// the start towards the side where f changes sign, stop at the region's exit, then refine the bracket.
 
 #include <isopatch/geometry.hpp>
 

@@ -6,17 +6,10 @@
 
 namespace isopatch {
 
-Box face_box(const Lattice& lattice, const FaceId& face) {
-  LatticePoint upper = face.lower;
-  for (std::uint32_t a = 0; a < 3; ++a)
-    if (a != face.axis) upper[a] += face.size;
-  return Box{lattice.point(face.lower), lattice.point(upper)};
-}
-
-SidePoints sample_side(const Sampler& f, const Lattice& lattice, const Crossing& from, const Crossing& to,
-                       const FaceId& face, const ProjectionParams& params) {
+SidePoints sample_side(const Sampler& f, const CellCorner& from, const CellCorner& to, const CellFace& face,
+                       const ProjectionParams& params) {
   const int r = params.resolution;
-  const Box region = face_box(lattice, face);
+  const Box& region = face.region;
   RayMarchSettings march;
   march.steps = params.march_steps;
   SidePoints side;
@@ -35,8 +28,7 @@ SidePoints sample_side(const Sampler& f, const Lattice& lattice, const Crossing&
       continue;
     }
     const ValueGradient vg = f.value_gradient(hit->point);
-    Vec3 in_face = vg.gradient;
-    in_face[face.axis] = 0.0;
+    const Vec3 in_face = in_plane(face, vg.gradient);
     const double norm = in_face.norm();
     if (!(norm > 0.0) || std::abs(hit->ray_direction.dot(in_face)) < params.cos_max_boundary_angle * norm)
       side.accepted = false;

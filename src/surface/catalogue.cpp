@@ -1,7 +1,7 @@
-// The benchmark surfaces of quality.md as formulas. Boxes and genera are those of the design note.
+// The benchmark surfaces of docs/algorithms.md 7.4 as formulas, with their boxes and genera.
 #include <isopatch/catalogue.hpp>
 
-#include "surface/edit_distance.hpp"
+#include "core/edit_distance.hpp"
 
 #include <algorithm>
 #include <array>

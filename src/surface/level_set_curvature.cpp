@@ -1,6 +1,6 @@
 // Exact curvature of level sets (Goldman 2005, "Curvature formulas for implicit curves and surfaces")
-// and the edge length that keeps a chordal error bound; see include/isopatch/curvature.hpp.
-#include <isopatch/curvature.hpp>
+// and the edge length that keeps a chordal error bound; see include/isopatch/level_set_curvature.hpp.
+#include <isopatch/level_set_curvature.hpp>
 
 #include <Eigen/Geometry>
 

@@ -1,6 +1,6 @@
 #pragma once
-// The sign rule of method.md 3, shared by every sampler of f: a sample with f >= 0 counts as positive,
-// so f = 0 exactly at a sample never makes a crossing of its own.
+// The sign rule of docs/algorithms.md 1.3, shared by every sampler of f: a sample with f >= 0 counts
+// as positive, so f = 0 exactly at a sample never makes a crossing of its own.
 
 namespace isopatch {
 

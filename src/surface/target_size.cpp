@@ -1,7 +1,7 @@
 // Target sizes from Settings (see target_size.hpp).
 #include "surface/target_size.hpp"
 
-#include <isopatch/curvature.hpp>
+#include <isopatch/level_set_curvature.hpp>
 #include <isopatch/error.hpp>
 
 #include <algorithm>

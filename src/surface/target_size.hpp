@@ -14,7 +14,7 @@ namespace isopatch {
 struct SizeSpec {
   double largest = 0.0;                     ///< the size where nothing asks for less (the edge length)
   double smallest = 0.0;                    ///< the floor of a varying size
-  std::optional<double> max_error;          ///< curvature sizes (curvature.hpp size_for_error)
+  std::optional<double> max_error;          ///< curvature sizes (size_for_error)
   std::function<double(const Vec3&)> user;  ///< a caller's size field
   bool varies() const { return max_error.has_value() || static_cast<bool>(user); }
 };

@@ -1,4 +1,4 @@
-// The generated configuration table (method.md 4.2) and the face-by-face linking it rests on.
+// The generated configuration table (docs/algorithms.md 2.5) and the face-by-face linking it rests on.
 #include "partition/config_table.hpp"
 #include "partition/cube.hpp"
 #include "partition/cube_cycles.hpp"
@@ -65,7 +65,7 @@ TEST(ConfigTable, CountsMatchTheEnumeration) {
   EXPECT_EQ(single_sizes[4], 30);
   EXPECT_EQ(single_sizes[5], 48);
   EXPECT_EQ(single_sizes[6], 32);
-  // The two cases the marching-surface table gets wrong (method.md 4.2).
+  // The two cases the marching-surface table gets wrong (docs/algorithms.md 2.5).
   EXPECT_EQ(table[0b10100101].kind, ConfigClass::Ambiguous);
   EXPECT_EQ(table[0b00011011].kind, ConfigClass::SingleLoop);
   EXPECT_EQ(table[0b00011011].loop_size, 6);

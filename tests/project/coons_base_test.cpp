@@ -79,10 +79,10 @@ TEST(CoonsBase, EighthSphereHasEvenBoundaryAndLessSpreadThanBarycentric) {
   MeshStats coons_stats, bary_stats;
   const Mesh coons = mesh_cell(*s, 12, Settings::Base::Coons, coons_stats);
   const Mesh bary = mesh_cell(*s, 12, Settings::Base::Barycentric, bary_stats);
-  EXPECT_EQ(coons_stats.extra.at("base_coons"), 1.0);
-  EXPECT_EQ(bary_stats.extra.at("base_coons"), 0.0);
-  EXPECT_EQ(coons_stats.extra.at("patches_3"), 1.0);
-  EXPECT_EQ(coons_stats.extra.at("fallback_cells"), 0.0);
+  EXPECT_TRUE(coons_stats.projection.value().coons_base);
+  EXPECT_FALSE(bary_stats.projection.value().coons_base);
+  EXPECT_EQ(coons_stats.projection->patches_by_sides, (std::map<int, std::size_t>{{3, 1}}));
+  EXPECT_EQ(coons_stats.projection->fallback_cells, 0u);
   expect_valid_disk(*s, coons);
   EXPECT_EQ(coons.vertex_count(), bary.vertex_count());  // same template, only positions differ
 
@@ -130,9 +130,9 @@ TEST(CoonsBase, SphereCapHasEvenBoundaryEdges) {
   MeshStats coons_stats, bary_stats;
   const Mesh coons = mesh_cell(*s, 10, Settings::Base::Coons, coons_stats);
   const Mesh bary = mesh_cell(*s, 10, Settings::Base::Barycentric, bary_stats);
-  EXPECT_EQ(coons_stats.extra.at("fallback_cells"), 0.0);
+  EXPECT_EQ(coons_stats.projection.value().fallback_cells, 0u);
   expect_valid_disk(*s, coons);
-  EXPECT_EQ(coons_stats.extra.at("patches_4"), 1.0);
+  EXPECT_EQ(coons_stats.projection->patches_by_sides, (std::map<int, std::size_t>{{4, 1}}));
   // The four face curves are congruent circular arcs (up to the lattice offset): equal arc-length
   // sampling makes all boundary edges nearly equal, unlike rays from evenly spaced chord points.
   const double cv_coons = variation(edge_lengths(coons, true)), cv_bary = variation(edge_lengths(bary, true));
@@ -152,7 +152,7 @@ TEST(CoonsBase, SixSidedPatchIsAccepted) {
       kUnitCell, "tripod");
   MeshStats stats;
   const Mesh mesh = mesh_cell(*s, 10, Settings::Base::Coons, stats);
-  EXPECT_EQ(stats.extra.at("patches_6"), 1.0);
+  EXPECT_EQ(stats.projection.value().patches_by_sides, (std::map<int, std::size_t>{{6, 1}}));
   expect_valid_disk(*s, mesh);
   EXPECT_GT(test::min_angle_degrees(mesh), 15.0);
 }

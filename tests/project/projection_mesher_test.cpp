@@ -42,7 +42,7 @@ void expect_valid_projection_mesh(const MesherCase& c, Settings::Base base = Set
   EXPECT_EQ(t.degenerate_triangles, 0u) << what;
   EXPECT_EQ(t.duplicate_vertices, 0u) << what;
   EXPECT_EQ(test::count_self_intersections(mesh), 0u) << what;
-  EXPECT_EQ(stats.extra["unprojected"], 0.0) << what;
+  EXPECT_EQ(stats.projection.value().unprojected_vertices, 0u) << what;
   const double diagonal = c.surface->box().diagonal();
   EXPECT_LT(test::max_vertex_distance(*c.surface, mesh), 1e-9 * diagonal) << what;
   // Every interior vertex of a patch has valence 6; only patch centres (role 3) may differ.
@@ -161,7 +161,7 @@ TEST(ProjectionMesher, StartsDeeperOnlyWhereCellsAreCurved) {
     const Mesh mesh = mesh_projection(*c.surface, settings, &stats);
     const std::string what =
         c.surface->name() + " h=" + std::to_string(c.edge_length) + " r=" + std::to_string(c.resolution);
-    EXPECT_EQ(stats.extra.at("curvature_depth_steps"), c.steps) << what;
+    EXPECT_EQ(stats.projection.value().curvature_depth_steps, static_cast<std::size_t>(c.steps)) << what;
     EXPECT_TRUE(analyze_topology(mesh).watertight()) << what;
   }
 }
@@ -177,8 +177,8 @@ TEST(ProjectionMesher, EdgeLengthBelowTheFinestCellsRaisesTheDepthLimit) {
   settings.edge_length = 7e-4;
   MeshStats stats;
   const Mesh patches = mesh_projection(*s, settings, &stats);
-  EXPECT_GE(stats.extra.at("depth"), 9.0);
-  EXPECT_EQ(stats.extra.at("fallback_cells"), 0.0);
+  EXPECT_GE(stats.projection.value().start_depth, 9);
+  EXPECT_EQ(stats.projection->fallback_cells, 0u);
   EXPECT_EQ(test::count_self_intersections(patches), 0u);
   const Mesh mesh = mesh_surface(*s, settings);
   const QualityReport q = analyze_quality(mesh, s.get());
@@ -206,9 +206,10 @@ TEST(ProjectionMesher, FacesTheSurfaceGrazesAreNotTopologyInDoubt) {
   settings.edge_length = 0.15;
   MeshStats stats;
   const Mesh mesh = mesh_projection(*decocube, settings, &stats);
-  EXPECT_GT(stats.extra.at("doubtful_grazing_faces"), 0.0);
-  EXPECT_EQ(stats.extra.at("doubtful_grazing_faces"), stats.extra.at("doubtful_ambiguous-face"));
-  EXPECT_EQ(stats.extra.at("doubtful_topology_cells"), 0.0);
+  EXPECT_GT(stats.warnings.doubtful_grazing_faces, 0u);
+  EXPECT_EQ(stats.warnings.doubtful_grazing_faces,
+            stats.warnings.doubtful_cells_by_reason.at("ambiguous-face"));
+  EXPECT_EQ(stats.warnings.doubtful_topology_cells, 0u);
   EXPECT_EQ(analyze_topology(mesh).genus, 13);
 
   const auto shell = make_surface(
@@ -220,8 +221,8 @@ TEST(ProjectionMesher, FacesTheSurfaceGrazesAreNotTopologyInDoubt) {
   settings.max_depth = 4;
   settings.edge_length = 0.3;
   mesh_projection(*shell, settings, &stats);
-  EXPECT_GT(stats.extra.at("doubtful_topology_cells"), 0.0);
-  EXPECT_EQ(stats.extra.at("doubtful_grazing_faces"), 0.0);
+  EXPECT_GT(stats.warnings.doubtful_topology_cells, 0u);
+  EXPECT_EQ(stats.warnings.doubtful_grazing_faces, 0u);
 }
 
 TEST(ProjectionMesher, ReportsNoSurfaceAndNaN) {
@@ -261,9 +262,9 @@ TEST(ProjectionMesher, AutomaticResolutionFollowsTheEdgeLength) {
   const double ratio = static_cast<double>(m2.vertex_count()) / static_cast<double>(m1.vertex_count());
   EXPECT_GT(ratio, 2.5);
   EXPECT_LT(ratio, 6.0);
-  EXPECT_EQ(a.extra.at("resolution"), 0.0);  // automatic: per side
-  EXPECT_GE(a.extra.at("side_segments_max"), 2.0);
-  EXPECT_GE(a.extra.at("side_segments_min"), 1.0);
+  EXPECT_EQ(a.projection.value().resolution, 0);  // automatic: per side
+  EXPECT_GE(a.projection->side_segments_max, 2);
+  EXPECT_GE(a.projection->side_segments_min, 1);
 }
 
 }  // namespace

@@ -20,9 +20,7 @@ namespace isopatch {
 namespace {
 
 int leaf_depths(const MeshStats& stats) {
-  int depths = 0;
-  for (const auto& [name, value] : stats.extra) depths += name.rfind("leaves_depth_", 0) == 0 && value > 0;
-  return depths;
+  return stats.projection ? static_cast<int>(stats.projection->cells_by_depth.size()) : 0;
 }
 
 std::vector<std::string> closed_smooth_surfaces() {
@@ -53,7 +51,7 @@ TEST_P(SizeFieldAcrossTheBox, GivesLeavesOfThreeDepthsWithoutCracks) {
     MeshStats stats;
     const Mesh mesh = mesh_surface(*surface, settings, &stats);
     EXPECT_GE(leaf_depths(stats), 3);
-    EXPECT_GT(stats.extra.at("flat_corner_leaves"), 0.0);
+    EXPECT_GT(stats.projection.value().flat_corner_cells, 0u);
     const TopologyReport t = analyze_topology(mesh);
     EXPECT_TRUE(t.watertight()) << t.boundary_edges << " boundary edges";
     EXPECT_TRUE(t.manifold());
@@ -82,12 +80,12 @@ TEST(SizeField, TransitionPatchesOfSevenToTwelveSidesMeshCorrectly) {
   };
   MeshStats stats;
   const Mesh mesh = mesh_projection(*surface, settings, &stats);
-  double many_sided = 0.0;
-  for (int n = 7; n <= 12; ++n)
-    if (const auto it = stats.extra.find("patches_" + std::to_string(n)); it != stats.extra.end())
-      many_sided += it->second;
-  EXPECT_GT(many_sided, 0.0);
-  EXPECT_EQ(stats.extra.at("fallback_cells"), 0.0);
+  ASSERT_TRUE(stats.projection);
+  std::size_t many_sided = 0;
+  for (const auto& [n, patches] : stats.projection->patches_by_sides)
+    if (n >= 7) many_sided += patches;
+  EXPECT_GT(many_sided, 0u);
+  EXPECT_EQ(stats.projection->fallback_cells, 0u);
   const TopologyReport t = analyze_topology(mesh);
   EXPECT_TRUE(t.watertight() && t.manifold() && t.outward_oriented());
   EXPECT_EQ(t.genus, 5);

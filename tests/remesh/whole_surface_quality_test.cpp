@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
+#include <string>
+
 #include "mesh_checks.hpp"
 #include "self_intersection.hpp"
 #include "test_surfaces.hpp"
@@ -26,6 +29,12 @@ struct QualityCase {
   /// to a regression bound a quarter above what it reaches.
   double max_h_nrms;
 };
+
+/// The value gtest prints for a case (and gtest_discover_tests appends to the ctest name): readable
+/// and stable, instead of a byte dump of the struct with its pointers and padding.
+void PrintTo(const QualityCase& c, std::ostream* out) {
+  *out << c.name << " at edge length " << c.edge_length;
+}
 
 SurfacePtr torus() {
   return test::torus();
@@ -85,8 +94,8 @@ CoarseTorus coarse_torus(double edge_length, double max_cell_curvature) {
   EXPECT_EQ(q.topology.genus, 1);
   EXPECT_GE(q.shape.min_angle.min, 20.0);
   EXPECT_GE(q.valence.share_6, 0.90);
-  return {q.accuracy->mean_curvature.nrms, stats.extra.at("depth"), stats.extra.at("curvature_depth_steps"),
-          mesh.vertex_count()};
+  return {q.accuracy->mean_curvature.nrms, static_cast<double>(stats.projection.value().start_depth),
+          static_cast<double>(stats.projection.value().curvature_depth_steps), mesh.vertex_count()};
 }
 
 // Torus of tube radius 0.4 in a box of side 3.2: at edge length 0.12 the starting cells (0.8) are two

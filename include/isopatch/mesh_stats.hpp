@@ -1,0 +1,101 @@
+#pragma once
+/// \file mesh_stats.hpp
+/// What a mesher did, typed: one struct per stage (the projection mesher, marching cubes, fairing, the
+/// clean-up) and one for what the mesh written may get wrong (warnings). A stage that did not run
+/// leaves its part empty. visit_stats() lists every number by a stable name, for printing and JSON.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace isopatch {
+
+/// The projection mesher (projection.hpp).
+struct ProjectionStats {
+  int start_depth = 0;                          ///< octree depth the surface cells started at
+  int depth_limit = 0;                          ///< the deepest level cells could be refined to
+  int resolution = 0;                           ///< Settings::resolution (0: per side, see side_segments_*)
+  int side_segments_min = 0;                    ///< fewest segments of any patch side
+  int side_segments_max = 0;                    ///< most segments of any patch side
+  std::map<int, std::size_t> patches_by_sides;  ///< accepted patches by their number of sides
+  std::size_t rejected_patches = 0;             ///< patches rejected over all refinement rounds
+  std::size_t rejected_sides = 0;               ///< sides rejected over all refinement rounds
+  std::size_t refined_patches = 0;              ///< patches of cells deeper than the starting depth
+  std::size_t fallback_cells = 0;               ///< cells closed by fans instead of a patch
+  std::size_t unprojected_vertices = 0;         ///< fan centres that no ray brought onto f = 0
+  std::size_t gradient_rays = 0;                ///< interior vertices marched along grad f instead of d(x)
+  std::size_t clamped_base_points = 0;          ///< base points outside their cell, moved into it
+  std::size_t refinements = 0;                  ///< rounds of local refinement
+  std::size_t curvature_depth_steps = 0;        ///< levels the start went deeper for the curvature
+  std::size_t flat_corner_cells = 0;            ///< cells with a corner inside one of their faces
+  std::map<int, std::size_t> cells_by_depth;    ///< surface cells of the final partition by depth
+  bool coons_base = false;                      ///< the multi-sided Coons base was used
+};
+
+/// Marching cubes (marching_cubes.hpp).
+struct MarchingCubesStats {
+  std::uint64_t cells = 0;  ///< grid cells
+  double cell_size = 0.0;   ///< side of a grid cell
+};
+
+/// Laplace fairing after marching cubes (fairing.hpp).
+struct FairingSummary {
+  int iterations = 0;
+  std::size_t unconverged = 0;  ///< vertex projections that did not converge
+};
+
+/// The surface-bound clean-up (remesh.hpp).
+struct CleanupStats {
+  int iterations = 0;
+  std::size_t splits = 0;
+  std::size_t collapses = 0;
+  std::size_t flips = 0;
+  std::size_t repairs = 0;          ///< small-angle triangles removed by the final pass
+  std::size_t rejected_moves = 0;   ///< relaxation moves skipped (fold, projection failure, box)
+  std::size_t exactness_moves = 0;  ///< vertex moves kept by the curvature sweeps
+  std::uint64_t hessian_evaluations = 0;
+};
+
+/// What the mesh written may get wrong, for warnings.
+struct MeshWarnings {
+  /// Cells still in doubt at the depth limit (two loops, an ambiguous face, an edge crossed twice, a
+  /// loop against the gradients, no loop), by reason ("several-loops", "ambiguous-face", ...).
+  std::map<std::string, std::size_t> doubtful_cells_by_reason;
+  std::size_t doubtful_cells = 0;
+  /// Of those, the cells that put the topology in question: sheets closer than such a cell may be
+  /// joined or dropped there.
+  std::size_t doubtful_topology_cells = 0;
+  /// Cells whose ambiguous faces the surface only grazes (not counted as topology in doubt).
+  std::size_t doubtful_grazing_faces = 0;
+  double doubtful_cell_size = 0.0;  ///< side of the largest doubtful cell
+  int depth_limit = 0;              ///< the depth those cells are at
+  /// With Settings::max_error: triangles whose centroid is still beyond the bound.
+  std::optional<std::size_t> error_bound_violations;
+};
+
+struct MeshStats {
+  double seconds = 0.0;
+  std::uint64_t value_evaluations = 0;     ///< evaluations of f alone
+  std::uint64_t gradient_evaluations = 0;  ///< evaluations of f with its gradient
+  std::size_t vertices = 0;
+  std::size_t triangles = 0;
+  std::optional<ProjectionStats> projection;
+  std::optional<MarchingCubesStats> marching_cubes;
+  std::optional<FairingSummary> fairing;
+  std::optional<CleanupStats> cleanup;
+  MeshWarnings warnings;
+};
+
+/// Calls `visit(stage, name, value)` for every number of `stats` whose stage ran, in a fixed order:
+/// stage "mesh" (seconds, evaluations, vertices, triangles), then "projection", "marching_cubes",
+/// "fairing", "cleanup", "warnings". Names are stable (scripts read them): per-count families are
+/// spelled "patches_N", "leaves_depth_N", "doubtful_REASON".
+void visit_stats(
+    const MeshStats& stats,
+    const std::function<void(std::string_view stage, std::string_view name, double value)>& visit);
+
+}  // namespace isopatch

@@ -1,0 +1,70 @@
+// Every statistic by a stable name (mesh_stats.hpp).
+#include <isopatch/mesh_stats.hpp>
+
+#include <string>
+
+namespace isopatch {
+
+void visit_stats(
+    const MeshStats& stats,
+    const std::function<void(std::string_view stage, std::string_view name, double value)>& visit) {
+  const auto count = [](auto n) { return static_cast<double>(n); };
+  visit("mesh", "seconds", stats.seconds);
+  visit("mesh", "value_evaluations", count(stats.value_evaluations));
+  visit("mesh", "gradient_evaluations", count(stats.gradient_evaluations));
+  visit("mesh", "vertices", count(stats.vertices));
+  visit("mesh", "triangles", count(stats.triangles));
+  if (const auto& p = stats.projection) {
+    const auto v = [&](std::string_view name, double value) { visit("projection", name, value); };
+    v("depth", p->start_depth);
+    v("max_depth", p->depth_limit);
+    v("resolution", p->resolution);
+    v("side_segments_min", p->side_segments_min);
+    v("side_segments_max", p->side_segments_max);
+    for (const auto& [n, patches] : p->patches_by_sides) v("patches_" + std::to_string(n), count(patches));
+    v("rejected_patches", count(p->rejected_patches));
+    v("rejected_sides", count(p->rejected_sides));
+    v("refined_patches", count(p->refined_patches));
+    v("fallback_cells", count(p->fallback_cells));
+    v("unprojected", count(p->unprojected_vertices));
+    v("gradient_rays", count(p->gradient_rays));
+    v("clamped_base_points", count(p->clamped_base_points));
+    v("refinements", count(p->refinements));
+    v("curvature_depth_steps", count(p->curvature_depth_steps));
+    v("flat_corner_leaves", count(p->flat_corner_cells));
+    for (const auto& [depth, cells] : p->cells_by_depth)
+      v("leaves_depth_" + std::to_string(depth), count(cells));
+    v("base_coons", p->coons_base ? 1.0 : 0.0);
+  }
+  if (const auto& m = stats.marching_cubes) {
+    visit("marching_cubes", "cells", count(m->cells));
+    visit("marching_cubes", "cell_size", m->cell_size);
+  }
+  if (const auto& f = stats.fairing) {
+    visit("fairing", "fair_iterations", f->iterations);
+    visit("fairing", "fair_unconverged", count(f->unconverged));
+  }
+  if (const auto& c = stats.cleanup) {
+    const auto v = [&](std::string_view name, double value) { visit("cleanup", name, value); };
+    v("remesh_iterations", c->iterations);
+    v("remesh_splits", count(c->splits));
+    v("remesh_collapses", count(c->collapses));
+    v("remesh_flips", count(c->flips));
+    v("remesh_repairs", count(c->repairs));
+    v("remesh_rejected_moves", count(c->rejected_moves));
+    v("remesh_exactness_moves", count(c->exactness_moves));
+    v("hessian_evaluations", count(c->hessian_evaluations));
+  }
+  const MeshWarnings& w = stats.warnings;
+  const auto v = [&](std::string_view name, double value) { visit("warnings", name, value); };
+  if (stats.projection) {
+    v("doubtful_cells", count(w.doubtful_cells));
+    v("doubtful_topology_cells", count(w.doubtful_topology_cells));
+    v("doubtful_grazing_faces", count(w.doubtful_grazing_faces));
+    v("doubtful_cell_size", w.doubtful_cell_size);
+    for (const auto& [reason, cells] : w.doubtful_cells_by_reason) v("doubtful_" + reason, count(cells));
+  }
+  if (w.error_bound_violations) v("error_bound_violations", count(*w.error_bound_violations));
+}
+
+}  // namespace isopatch

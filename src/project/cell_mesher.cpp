@@ -1,0 +1,376 @@
+// One pass of the projection mesher over one partition (cell_mesher.hpp).
+#include "project/cell_mesher.hpp"
+
+#include <isopatch/error.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <tuple>
+
+#include "patch/base_surface.hpp"
+#include "patch/coons_patch.hpp"
+#include "patch/patch_template.hpp"
+#include "project/budget_checks.hpp"
+#include "project/doubtful_cells.hpp"
+#include "project/face_curve.hpp"
+#include "project/ray_march.hpp"
+#include "project/side_points.hpp"
+#include "project/vertex_role.hpp"
+
+namespace isopatch {
+namespace {
+
+ProjectionParams projection_params(const Settings& s, int resolution) {
+  const double to_radians = std::numbers::pi / 180.0;
+  ProjectionParams p;
+  p.resolution = resolution;
+  p.march_steps = s.march_steps;
+  p.cos_max_ray_angle = std::cos(s.max_ray_angle * to_radians);
+  p.cos_max_boundary_angle = std::cos(s.max_boundary_ray_angle * to_radians);
+  return p;
+}
+
+CoordinateKind coordinate_kind(const Settings& s) {
+  return s.coordinates == Settings::Coordinates::MeanValue ? CoordinateKind::MeanValue
+                                                           : CoordinateKind::Wachspress;
+}
+
+}  // namespace
+
+void CellMesherCounters::start_pass() {
+  patches_by_sides.clear();
+  fallback_cells = unprojected_vertices = refined_patches = 0;
+  patch = PatchStats{};
+}
+
+CellMesher::CellMesher(const Sampler& f, const CellPartition& partition, const Settings& settings,
+                       int resolution, int refinable_level, std::function<double(const Vec3&)> size_at,
+                       bool uniform_sizes)
+    : f_(f),
+      part_(partition),
+      settings_(settings),
+      params_(projection_params(settings, std::max(resolution, 1))),
+      fixed_resolution_(resolution),
+      refinable_level_(refinable_level),
+      size_at_(std::move(size_at)),
+      uniform_sizes_(uniform_sizes) {}
+
+Mesh CellMesher::run(CellMesherCounters& counters) {
+  collect_sides();
+  compute_sides(counters);
+  for (std::size_t c = 0; c < part_.cells.size(); ++c) {
+    check_cancel(settings_);
+    if (settings_.progress && c % 64 == 0) settings_.progress(Progress{c, part_.cells.size()});
+    mesh_cell(c, counters);
+    check_vertex_budget(settings_, mesh_.positions.size());
+  }
+  if (settings_.vertex_roles) mesh_.set_attribute("role", std::move(roles_));
+  return std::move(mesh_);
+}
+
+std::pair<int, int> CellMesher::segment_range() const {
+  if (side_segments_.empty()) return {0, 0};
+  const auto [lo, hi] = std::minmax_element(side_segments_.begin(), side_segments_.end());
+  return {*lo, *hi};
+}
+
+/// Segments per side for a cell: the fixed resolution, or its size times side_factor(level) over the
+/// smallest target size at its corners (at least 1), so cells of one level share one template
+/// resolution and deeper cells get proportionally fewer segments.
+int CellMesher::cell_resolution(std::size_t c) {
+  if (fixed_resolution_ > 0) return fixed_resolution_;
+  const PartitionCell& cell = part_.cells[c];
+  double h = std::numeric_limits<double>::infinity();
+  for (const CellLoop& loop : cell.loops)
+    for (std::uint32_t k : loop.corners) h = std::min(h, corner_size(k));
+  // The side factor never takes a cell down to one segment per side (a patch of corners only, whose
+  // fans leave most vertices irregular) where the cell size alone gives two or more.
+  const double r =
+      std::max(std::round(cell.size * side_factor(cell.level) / h), std::min(2.0, std::round(cell.size / h)));
+  return static_cast<int>(std::clamp(r, 1.0, static_cast<double>(PatchTemplate::kMaxResolution)));
+}
+
+/// The segment count of side i: the smallest resolution of the cells that share it, so the finer
+/// neighbour keeps its regular template and the coarser one merges boundary vertices.
+int CellMesher::side_segments(std::size_t i) {
+  if (cell_resolutions_.empty()) cell_resolutions_.assign(part_.cells.size(), 0);
+  int k = PatchTemplate::kMaxResolution;
+  for (std::size_t c : side_cells_[i]) {
+    if (cell_resolutions_[c] == 0) cell_resolutions_[c] = cell_resolution(c);
+    k = std::min(k, cell_resolutions_[c]);
+  }
+  return k;
+}
+
+/// With uniform sizes: the mean length of the loop sides (corner to corner) of the cells at `level`
+/// over their cell size, so that r = cell * factor / h gives edges of about h. A plane cuts a cube in
+/// sides shorter than the cell (mean factor 0.7-0.8 on the public surfaces), and counts from the
+/// cell alone gave mean edges of 0.66-0.97 h. 1 with a size field: there the margin of the error
+/// bound (centroid distances 0.3-0.6 of it) comes from the shorter edges and is kept.
+double CellMesher::side_factor(int level) {
+  if (!uniform_sizes_) return 1.0;
+  if (side_factors_.empty()) side_factors_.assign(static_cast<std::size_t>(kMaxPartitionLevel) + 1, 0.0);
+  double& factor = side_factors_[static_cast<std::size_t>(level)];
+  if (factor > 0.0) return factor;
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (const PartitionCell& cell : part_.cells) {
+    if (cell.level != level) continue;
+    for (const CellLoop& loop : cell.loops)
+      for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+        const Vec3& a = part_.corners[loop.corners[k]].position;
+        const Vec3& b = part_.corners[loop.corners[next(k, loop.corners.size())]].position;
+        sum += (a - b).norm() / cell.size;
+        ++count;
+      }
+  }
+  factor = count > 0 && sum > 0.0 ? sum / static_cast<double>(count) : 1.0;
+  return factor;
+}
+
+double CellMesher::corner_size(std::uint32_t c) {
+  if (corner_sizes_.empty()) corner_sizes_.assign(part_.corners.size(), -1.0);
+  if (corner_sizes_[c] < 0.0) corner_sizes_[c] = size_at_(part_.corners[c].position);
+  return corner_sizes_[c];
+}
+
+void CellMesher::collect_sides() {
+  struct Use {
+    Side side;
+    std::size_t cell;
+  };
+  std::vector<Use> uses;
+  for (std::size_t c = 0; c < part_.cells.size(); ++c)
+    for (const CellLoop& loop : part_.cells[c].loops)
+      for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+        const std::uint32_t a = loop.corners[k];
+        const std::uint32_t b = loop.corners[next(k, loop.corners.size())];
+        uses.push_back({Side{std::min(a, b), std::max(a, b), loop.side_faces[k]}, c});
+      }
+  std::sort(uses.begin(), uses.end(), [](const Use& x, const Use& y) {
+    return std::tie(x.side.from, x.side.to, x.cell) < std::tie(y.side.from, y.side.to, y.cell);
+  });
+  for (const Use& use : uses) {
+    if (sides_.empty() || sides_.back().from != use.side.from || sides_.back().to != use.side.to) {
+      sides_.push_back(use.side);
+      side_cells_.emplace_back();
+    }
+    side_cells_.back().push_back(use.cell);
+  }
+}
+
+std::size_t CellMesher::side_index(std::uint32_t a, std::uint32_t b) const {
+  const Side key{std::min(a, b), std::max(a, b), 0};
+  const auto it = std::lower_bound(sides_.begin(), sides_.end(), key, [](const Side& x, const Side& y) {
+    return std::tie(x.from, x.to) < std::tie(y.from, y.to);
+  });
+  if (it == sides_.end() || it->from != key.from || it->to != key.to)
+    throw Error(ErrorKind::Internal, "projection: a loop side has no record");
+  return static_cast<std::size_t>(it - sides_.begin());
+}
+
+void CellMesher::add_vertex(const Vec3& position, const Vec3& gradient, float role) {
+  mesh_.positions.push_back(position);
+  gradients_.push_back(gradient);
+  roles_.push_back(role);
+}
+
+/// Phase 1: boundary vertices of every side; vertex ids: corners first, then sides in key order.
+void CellMesher::compute_sides(CellMesherCounters& counters) {
+  mesh_.positions.reserve(part_.corners.size());
+  gradients_.reserve(part_.corners.size());
+  roles_.reserve(part_.corners.size());
+  for (const CellCorner& c : part_.corners)
+    add_vertex(c.position, c.gradient, role_value(VertexRole::Corner));
+  side_accepted_.reserve(sides_.size());
+  side_offsets_.reserve(sides_.size());
+  for (std::size_t i = 0; i < sides_.size(); ++i) {
+    check_cancel(settings_);
+    side_segments_.push_back(side_segments(i));
+    side_offsets_.push_back(mesh_.positions.size());
+    const SidePoints s = sample(sides_[i], side_segments_.back());
+    if (!s.accepted) {
+      ++counters.rejected_sides;
+      for (std::size_t cell : side_cells_[i])
+        if (refinable(cell)) split_cells_.insert(cell);
+    }
+    side_accepted_.push_back(s.accepted);
+    for (const SurfacePoint& p : s.points) add_vertex(p.position, p.gradient, role_value(VertexRole::Side));
+    check_vertex_budget(settings_, mesh_.positions.size());
+  }
+}
+
+/// The side's inner boundary vertices; with the Coons base also its face curve, kept for the patches.
+SidePoints CellMesher::sample(const Side& side, int segments) {
+  const CellCorner& from = part_.corners[side.from];
+  const CellCorner& to = part_.corners[side.to];
+  const CellFace& face = part_.faces[side.face];
+  ProjectionParams params = params_;
+  params.resolution = segments;
+  if (settings_.base == Settings::Base::Barycentric) return sample_side(f_, from, to, face, params);
+  FaceCurve curve = trace_face_curve(f_, from, to, face, params);
+  side_curves_.push_back(std::move(curve.dense));
+  return SidePoints{std::move(curve.points), curve.accepted};
+}
+
+/// The base surface of a loop, and the corner directions to blend (docs/algorithms.md 3.5, 4.5).
+std::unique_ptr<BaseSurface> CellMesher::base_surface(const CellLoop& loop,
+                                                      std::vector<Vec3>& directions) const {
+  directions.clear();
+  if (settings_.base == Settings::Base::Barycentric) {
+    std::vector<Vec3> q;
+    for (std::uint32_t c : loop.corners) {
+      q.push_back(part_.corners[c].position);
+      directions.push_back(part_.corners[c].direction);
+    }
+    return std::make_unique<BarycentricBase>(std::move(q));
+  }
+  std::vector<PolylineCurve> curves;
+  for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+    const std::uint32_t a = loop.corners[k];
+    const std::uint32_t b = loop.corners[next(k, loop.corners.size())];
+    std::vector<Vec3> dense = side_curves_[side_index(a, b)];  // stored from the smaller corner id
+    if (a > b) std::reverse(dense.begin(), dense.end());
+    curves.emplace_back(std::move(dense));
+    directions.push_back(part_.corners[a].gradient.normalized());
+  }
+  return std::make_unique<CoonsPatch>(std::move(curves));
+}
+
+/// Global id of point i (0..k, counted from corner a; 0 and k are the corners) of the side from
+/// corner a to b with k segments.
+std::uint32_t CellMesher::side_vertex(std::uint32_t a, std::uint32_t b, int i) const {
+  const std::size_t s = side_index(a, b);
+  const int k = segments(s);
+  if (i <= 0) return a;
+  if (i >= k) return b;
+  const std::size_t j = a < b ? static_cast<std::size_t>(i) : static_cast<std::size_t>(k - i);
+  return static_cast<std::uint32_t>(side_offsets_[s] + (j - 1));
+}
+
+bool CellMesher::loop_sides_accepted(const CellLoop& loop) const {
+  for (std::size_t k = 0; k < loop.corners.size(); ++k)
+    if (!side_accepted_[side_index(loop.corners[k], loop.corners[next(k, loop.corners.size())])])
+      return false;
+  return true;
+}
+
+/// Phase 2 for one cell: a projected patch; when it fails, a request to split the cell or, where it
+/// cannot be split, fans.
+void CellMesher::mesh_cell(std::size_t c, CellMesherCounters& counters) {
+  if (split_cells_.contains(c)) return;  // a side failed: the cell is refined anyway
+  const PartitionCell& cell = part_.cells[c];
+  const bool simple = !needs_refinement(cell) && cell.loops.front().corners.size() >= 3 &&
+                      cell.loops.front().corners.size() <= 12;
+  if (simple && loop_sides_accepted(cell.loops.front())) {
+    const PatchVerdict verdict = mesh_patch(cell, cell.loops.front(), counters.patch);
+    if (verdict == PatchVerdict::Accepted) {
+      ++counters.patches_by_sides[static_cast<int>(cell.loops.front().corners.size())];
+      if (cell.level > part_.start_level) ++counters.refined_patches;
+      return;
+    }
+    ++counters.rejected_patches;
+    ++counters.rejected_by_verdict[verdict];
+  }
+  if (refinable(c)) {
+    split_cells_.insert(c);
+    return;
+  }
+  ++counters.fallback_cells;
+  for (const CellLoop& loop : cell.loops) mesh_fan(cell, loop, counters);
+}
+
+PatchVerdict CellMesher::mesh_patch(const PartitionCell& cell, const CellLoop& loop,
+                                    PatchStats& patch_stats) {
+  const int n = static_cast<int>(loop.corners.size());
+  // The template has as many segments per side as the loop's longest side count; a side with fewer
+  // takes, for template vertex i, its point round(i k / r): coinciding template vertices merge and the
+  // triangles between them vanish.
+  int r = 1;
+  for (std::size_t k = 0; k < loop.corners.size(); ++k)
+    r = std::max(r, segments(side_index(loop.corners[k], loop.corners[next(k, loop.corners.size())])));
+  const auto patch = patch_template(n, r, coordinate_kind(settings_));
+  std::vector<Vec3> d;
+  const std::unique_ptr<BaseSurface> base = base_surface(loop, d);
+  std::vector<std::uint32_t> ids(patch->vertex_count(), 0);
+  std::vector<SurfacePoint> points(patch->vertex_count());
+  for (std::size_t v = 0; v < patch->vertex_count(); ++v) {
+    const VertexTag& tag = patch->tag(static_cast<int>(v));
+    if (tag.kind == VertexTag::Kind::Interior) continue;
+    const auto k = static_cast<std::size_t>(tag.side);
+    const std::uint32_t a = loop.corners[k];
+    const std::uint32_t b = loop.corners[next(k, loop.corners.size())];
+    if (tag.kind == VertexTag::Kind::Corner) {
+      ids[v] = a;
+    } else {
+      const int count = segments(side_index(a, b));
+      ids[v] = side_vertex(a, b, (2 * tag.index * count + r) / (2 * r));
+    }
+    points[v] = {mesh_.positions[ids[v]], gradients_[ids[v]]};
+  }
+  const PatchVerdict verdict = project_patch(f_, *patch, *base, d, cell.bounds, params_, points, patch_stats);
+  if (verdict != PatchVerdict::Accepted) return verdict;
+  for (std::size_t v = 0; v < patch->vertex_count(); ++v) {
+    if (patch->tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;
+    ids[v] = static_cast<std::uint32_t>(mesh_.positions.size());
+    const VertexRole role =
+        static_cast<int>(v) == patch->centre() ? VertexRole::Centre : VertexRole::Interior;
+    add_vertex(points[v].position, points[v].gradient, role_value(role));
+  }
+  for (const TemplateTriangle& t : patch->triangles()) {
+    const Triangle tri{ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])],
+                       ids[static_cast<std::size_t>(t[2])]};
+    if (tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0]) mesh_.triangles.push_back(tri);
+  }
+  return PatchVerdict::Accepted;
+}
+
+/// Fallback: the loop's boundary polygon (corners and shared side vertices) fanned around a centre
+/// vertex moved onto f = 0 along the polygon's normal when a ray finds the surface near the cell.
+void CellMesher::mesh_fan(const PartitionCell& cell, const CellLoop& loop, CellMesherCounters& counters) {
+  std::vector<std::uint32_t> polygon;
+  for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+    const std::uint32_t a = loop.corners[k];
+    const std::uint32_t b = loop.corners[next(k, loop.corners.size())];
+    polygon.push_back(a);
+    for (int i = 1; i < segments(side_index(a, b)); ++i) polygon.push_back(side_vertex(a, b, i));
+  }
+  Vec3 centre = Vec3::Zero();
+  Vec3 normal = Vec3::Zero();
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const Vec3& p = mesh_.positions[polygon[k]];
+    const Vec3& q = mesh_.positions[polygon[next(k, polygon.size())]];
+    centre += p;
+    normal += p.cross(q);
+  }
+  centre /= static_cast<double>(polygon.size());
+  // The centre moves onto f = 0 along the polygon's normal, else along grad f, within the cell grown
+  // by half its size (a fallback cell is a poor fit by definition; its fan must still close it).
+  RayMarchSettings march;
+  march.steps = params_.march_steps;
+  const Box& clip = part_.region;
+  const Box region{(cell.bounds.lo - 0.5 * cell.bounds.size()).cwiseMax(clip.lo),
+                   (cell.bounds.hi + 0.5 * cell.bounds.size()).cwiseMin(clip.hi)};
+  const double f_centre = f_.value(centre);
+  std::optional<RayHit> hit;
+  if (normal.norm() > 0.0) hit = march_to_surface(f_, centre, f_centre, normal, region, march);
+  if (!hit) hit = march_to_surface(f_, centre, f_centre, f_.value_gradient(centre).gradient, region, march);
+  Vec3 position = centre;
+  Vec3 gradient = normal;
+  if (hit) {
+    position = hit->point;
+    gradient = f_.value_gradient(position).gradient;
+  } else {
+    ++counters.unprojected_vertices;
+  }
+  const auto c = static_cast<std::uint32_t>(mesh_.positions.size());
+  add_vertex(position, gradient, role_value(VertexRole::FanCentre));
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+    mesh_.triangles.push_back({c, polygon[k], polygon[next(k, polygon.size())]});
+}
+
+}  // namespace isopatch

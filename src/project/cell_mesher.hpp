@@ -1,0 +1,113 @@
+#pragma once
+/// \file cell_mesher.hpp
+/// One pass of the projection mesher over one partition (Sipos & Salvi 2021, sec. 2): the boundary
+/// vertices of every shared side (once per side, referenced by both patches), then a projected patch
+/// per cell, assembled by vertex ids without welding. Each phase is a loop over independent items, so
+/// it can run in parallel with the same output. Sees the partition only through cell_partition.hpp.
+
+#include <isopatch/mesh.hpp>
+#include <isopatch/settings.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "partition/cell_partition.hpp"
+#include "patch/base_surface.hpp"
+#include "project/patch_projection.hpp"
+#include "project/side_points.hpp"
+#include "surface/sampler.hpp"
+
+namespace isopatch {
+
+/// What one pass did; rejections add up over the passes of a mesh, the rest is per pass.
+struct CellMesherCounters {
+  std::map<int, std::size_t> patches_by_sides;
+  std::size_t rejected_patches = 0;
+  std::map<PatchVerdict, std::size_t> rejected_by_verdict;
+  std::size_t rejected_sides = 0;
+  std::size_t fallback_cells = 0;
+  std::size_t unprojected_vertices = 0;
+  std::size_t refined_patches = 0;  ///< patches of cells deeper than the starting level
+  PatchStats patch;
+
+  /// Clears the per-pass counters, keeping the rejections.
+  void start_pass();
+};
+
+/// Meshes one partition. A cell whose patch or one of whose sides is rejected is listed in to_split()
+/// when it is shallower than `refinable_level` (the caller then refines it and meshes again); deeper
+/// rejected cells, and cells whose topology is still in doubt, are closed by fans over their shared
+/// boundaries.
+class CellMesher {
+ public:
+  /// `resolution` > 0: every side gets that many segments; 0: each side gets its own count from the
+  /// cells that share it and the target size at their corners (`size_at`; `uniform_sizes` when it is
+  /// constant, see side_factor).
+  CellMesher(const Sampler& f, const CellPartition& partition, const Settings& settings, int resolution,
+             int refinable_level, std::function<double(const Vec3&)> size_at, bool uniform_sizes);
+
+  /// The mesh; meaningful only when to_split() is empty afterwards.
+  /// \throw LimitError when cancelled or beyond Settings::max_vertices; EvaluationError as f does.
+  Mesh run(CellMesherCounters& counters);
+
+  /// Smallest and largest segment count over the sides (0, 0 without sides).
+  std::pair<int, int> segment_range() const;
+
+  /// Cells to split before meshing again, ascending.
+  std::vector<std::size_t> to_split() const { return {split_cells_.begin(), split_cells_.end()}; }
+
+ private:
+  /// A side shared by two loops: corner ids from < to, and the face it lies on.
+  struct Side {
+    std::uint32_t from = 0;
+    std::uint32_t to = 0;
+    std::uint32_t face = 0;
+  };
+
+  int segments(std::size_t s) const { return side_segments_[s]; }
+  int cell_resolution(std::size_t c);
+  int side_segments(std::size_t i);
+  double side_factor(int level);
+  double corner_size(std::uint32_t c);
+  void collect_sides();
+  bool refinable(std::size_t cell) const { return part_.cells[cell].level < refinable_level_; }
+  std::size_t side_index(std::uint32_t a, std::uint32_t b) const;
+  void compute_sides(CellMesherCounters& counters);
+  SidePoints sample(const Side& side, int segments);
+  std::unique_ptr<BaseSurface> base_surface(const CellLoop& loop, std::vector<Vec3>& directions) const;
+  std::uint32_t side_vertex(std::uint32_t a, std::uint32_t b, int i) const;
+  bool loop_sides_accepted(const CellLoop& loop) const;
+  void mesh_cell(std::size_t c, CellMesherCounters& counters);
+  PatchVerdict mesh_patch(const PartitionCell& cell, const CellLoop& loop, PatchStats& patch_stats);
+  void mesh_fan(const PartitionCell& cell, const CellLoop& loop, CellMesherCounters& counters);
+  void add_vertex(const Vec3& position, const Vec3& gradient, float role);
+
+  const Sampler& f_;
+  const CellPartition& part_;
+  const Settings& settings_;
+  ProjectionParams params_;
+  int fixed_resolution_;
+  int refinable_level_;
+  std::function<double(const Vec3&)> size_at_;
+  bool uniform_sizes_;                     // size_at_ is constant (see side_factor)
+  std::vector<double> corner_sizes_;       // target size at each corner, -1 until asked
+  std::vector<int> cell_resolutions_;      // per cell, 0 until asked
+  std::vector<double> side_factors_;       // per level, 0 until asked (see side_factor)
+  std::vector<int> side_segments_;         // per side, in key order
+  std::vector<std::size_t> side_offsets_;  // per side, the mesh id of its first inner point
+  std::vector<Side> sides_;
+  std::vector<std::vector<std::size_t>> side_cells_;  // per side, the cells whose loops use it
+  std::set<std::size_t> split_cells_;
+  std::vector<std::vector<Vec3>> side_curves_;  // Coons base: dense face curve per side, in key order
+  std::vector<bool> side_accepted_;
+  std::vector<Vec3> gradients_;  // per mesh vertex
+  std::vector<float> roles_;     // per mesh vertex, see Settings::vertex_roles
+  Mesh mesh_;
+};
+
+}  // namespace isopatch

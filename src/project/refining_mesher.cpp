@@ -1,0 +1,138 @@
+// The projection mesher's refinement loop (refining_mesher.hpp).
+#include "project/refining_mesher.hpp"
+
+#include <isopatch/error.hpp>
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "project/budget_checks.hpp"
+#include "project/cell_mesher.hpp"
+#include "project/cell_sizing.hpp"
+#include "project/doubtful_cells.hpp"
+
+namespace isopatch {
+namespace {
+
+/// Rounds of local refinement before failing cells are closed by fans.
+constexpr int kMaxRounds = 8;
+
+ProjectionStats projection_stats(const CellPartition& partition, const CellMesher& mesher,
+                                 const CellMesherCounters& counters, const Settings& settings, int max_level,
+                                 std::size_t refinements, std::size_t curvature_steps) {
+  ProjectionStats p;
+  p.start_depth = partition.start_level;
+  p.depth_limit = max_level;
+  p.resolution = settings.resolution;
+  std::tie(p.side_segments_min, p.side_segments_max) = mesher.segment_range();
+  p.patches_by_sides = counters.patches_by_sides;
+  p.rejected_patches = counters.rejected_patches;
+  p.rejected_sides = counters.rejected_sides;
+  p.refined_patches = counters.refined_patches;
+  p.fallback_cells = counters.fallback_cells;
+  p.unprojected_vertices = counters.unprojected_vertices;
+  p.gradient_rays = counters.patch.gradient_rays;
+  p.clamped_base_points = counters.patch.clamped_base_points;
+  p.refinements = refinements;
+  p.curvature_depth_steps = curvature_steps;
+  p.flat_corner_cells = partition.stats.leaves_with_flat_corners;
+  for (int d = 0; d <= kMaxPartitionLevel; ++d)
+    if (const std::uint64_t n = partition.stats.leaves_per_depth[static_cast<std::size_t>(d)]; n > 0)
+      p.cells_by_depth[d] = n;
+  p.coons_base = settings.base == Settings::Base::Coons;
+  return p;
+}
+
+void record_doubts(const DoubtfulCells& doubtful, int max_level, MeshWarnings& w) {
+  w.doubtful_cells = doubtful.count;
+  w.doubtful_topology_cells = doubtful.topology;
+  w.doubtful_grazing_faces = doubtful.grazing_faces;
+  w.doubtful_cell_size = doubtful.largest_side;
+  w.depth_limit = max_level;
+  for (int r = 0; r < kComplexReasonCount; ++r)
+    if (const std::size_t n = doubtful.by_reason[static_cast<std::size_t>(r)]; n > 0)
+      w.doubtful_cells_by_reason[to_string(static_cast<ComplexReason>(r))] = n;
+}
+
+}  // namespace
+
+Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Settings& settings,
+                   const SizeSpec& sizes, MeshStats* stats) {
+  const Sampler f(surface);
+  CellMesherCounters counters;
+  std::uint64_t partition_values = 0, partition_gradients = 0;
+  std::size_t curvature_steps = 0;
+  bool start_settled = false;
+  const int max_level = partitioner.max_level();
+  const std::function<double(const Vec3&)> size_at = size_function(surface, sizes);
+  // Restarts at a finer level do not count as rounds: only refinements do.
+  for (int round = 0;;) {
+    check_cancel(settings);
+    const CellPartition partition = partitioner.build();
+    partition_values += partition.stats.value_evaluations;
+    partition_gradients += partition.stats.gradient_evaluations;
+    if (settings.progress)
+      settings.progress(Progress{static_cast<std::size_t>(round), static_cast<std::size_t>(kMaxRounds)});
+    const int start = partition.start_level;
+    if (partition.cells.empty()) {
+      // Nothing found yet: look finer (cheap where intervals or the heuristic prune).
+      if (!partitioner.start_finer())
+        throw NoSurfaceError("no surface in the box: f = 0 crosses no cell down to depth " +
+                             std::to_string(start));
+      continue;
+    }
+    // With automatic resolution, patches should not wrap around the surface's tubes: while most of the
+    // starting cells are too curved, start one level deeper (once per level, before any local split).
+    if (!start_settled) {
+      start_settled =
+          settings.resolution != 0 || settings.max_cell_curvature == 0.0 || start >= max_level ||
+          !starting_cells_too_curved(partition, surface, start, settings.max_cell_curvature, size_at);
+      if (!start_settled && partitioner.start_finer()) {
+        ++curvature_steps;
+        continue;
+      }
+      start_settled = true;
+    }
+    // Cells whose topology is in doubt (two sheets, an ambiguous face) are split by the partition down
+    // to its finest level: a coarser fan there would give a closed mesh of the wrong topology. Rejected
+    // patches are refined at most refinement_levels below the start (a size field: to the finest level).
+    const int patch_level =
+        std::max(start, sizes.varies() ? max_level : std::min(max_level, start + settings.refinement_levels));
+    if (sizes.varies() && round < kMaxRounds) {
+      // The size field asks for cells of at most kAutoSegments local edge lengths.
+      if (const std::vector<std::size_t> split = cells_too_large_for(partition, size_at, patch_level);
+          !split.empty()) {
+        partitioner.split(split);
+        ++round;
+        continue;
+      }
+    }
+    // After kMaxRounds rounds of refinement, whatever still fails is closed by fans.
+    const int refinable_level = round < kMaxRounds ? patch_level : 0;
+    CellMesher mesher(f, partition, settings, settings.resolution, refinable_level, size_at, !sizes.varies());
+    counters.start_pass();
+    Mesh mesh = mesher.run(counters);
+    if (const std::vector<std::size_t> split = mesher.to_split(); !split.empty()) {
+      partitioner.split(split);
+      ++round;
+      continue;
+    }
+    const DoubtfulCells doubtful = doubtful_cells(partition, partitioner, f);
+    mesh.triangles.shrink_to_fit();
+    if (stats) {
+      stats->value_evaluations = partition_values + f.value_count();
+      stats->gradient_evaluations = partition_gradients + f.gradient_count();
+      stats->vertices = mesh.vertex_count();
+      stats->triangles = mesh.triangle_count();
+      stats->projection = projection_stats(partition, mesher, counters, settings, max_level,
+                                           static_cast<std::size_t>(round), curvature_steps);
+      record_doubts(doubtful, max_level, stats->warnings);
+    }
+    return mesh;
+  }
+}
+
+}  // namespace isopatch
