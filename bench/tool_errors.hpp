@@ -8,11 +8,13 @@
 #include <cstdio>
 #include <exception>
 
+#include "error_report.hpp"
+
 namespace isopatch::bench {
 
 /// Parses argv into `app` and returns run()'s exit code. A usage error exits 2 (help and version 0);
-/// an isopatch::Error prints "TOOL: message" and exits with exit_code(kind); any other exception is an
-/// internal error, exit 1.
+/// an isopatch::Error prints "TOOL: message" and exits with the tool's exit code for its kind
+/// (error_report.hpp); any other exception is an internal error, exit 1.
 template <class Run>
 int run_tool(const char* tool, CLI::App& app, int argc, char** argv, Run&& run) {
   try {
@@ -23,8 +25,8 @@ int run_tool(const char* tool, CLI::App& app, int argc, char** argv, Run&& run) 
   try {
     return run();
   } catch (const isopatch::Error& e) {
-    std::fprintf(stderr, "%s: %s\n", tool, e.what());
-    return isopatch::exit_code(e.kind());
+    std::fprintf(stderr, "%s: %s\n", tool, cli::describe(e).c_str());
+    return cli::exit_code(e.kind());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: internal error: %s\n", tool, e.what());
     return 1;

@@ -1,5 +1,6 @@
 // The isopatch command-line tool: arguments -> Settings -> one library call -> output.
-// Errors print one line on stderr and exit with a code per kind (isopatch::exit_code).
+// Errors print one line on stderr, naming the flag at fault, and exit with a code per kind
+// (error_report.hpp).
 #include <isopatch/error.hpp>
 #include <isopatch/version.hpp>
 
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "error_report.hpp"
 
 int main(int argc, char** argv) {
   using namespace isopatch;
@@ -35,11 +37,11 @@ int main(int argc, char** argv) {
       if (app.got_subcommand(name)) return run();
     return 2;
   } catch (const Error& e) {
-    std::fprintf(stderr, "isopatch: %s\n", e.what());
-    return exit_code(e.kind());
+    std::fprintf(stderr, "isopatch: %s\n", cli::describe(e).c_str());
+    return cli::exit_code(e.kind());
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "isopatch: out of memory\n");
-    return exit_code(ErrorKind::Limit);
+    return cli::exit_code(ErrorKind::Limit);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "isopatch: internal error: %s\n", e.what());
     return 1;

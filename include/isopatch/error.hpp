@@ -1,11 +1,14 @@
 #pragma once
 /// \file error.hpp
 /// The one error policy of isopatch: every failure caused by input throws a typed error derived from
-/// isopatch::Error (itself a std::runtime_error) carrying a one-line message. The command-line tool maps
-/// ErrorKind to a distinct exit code (see exit_code()).
+/// isopatch::Error (itself a std::runtime_error) carrying a one-line message in the library's own terms
+/// (what went wrong) and, where one setting is to blame, that setting's name (where: the Settings field,
+/// e.g. "max_vertices"). Front ends map both to their own words: the command-line tool maps ErrorKind
+/// to a distinct exit code and setting names to its flags.
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace isopatch {
 
@@ -22,23 +25,33 @@ enum class ErrorKind {
   SingularSurface,  ///< grad f vanishes on f = 0 (a repeated factor, f = g^3): no gradient to mesh with
 };
 
-/// Exit code of the command-line tool for an error kind (0 is success, 1 internal, 2 usage).
-int exit_code(ErrorKind kind);
-
 /// Base of all isopatch errors.
 class Error : public std::runtime_error {
  public:
-  Error(ErrorKind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
+  /// \param setting  the Settings field (or argument) the error is about, empty when none is
+  Error(ErrorKind kind, const std::string& message, std::string setting = {})
+      : std::runtime_error(message), kind_(kind), setting_(std::move(setting)) {}
   ErrorKind kind() const noexcept { return kind_; }
+  /// The name of the Settings field (or argument: "box", "params", ...) the error is about; empty
+  /// when it concerns no single setting.
+  const std::string& setting() const noexcept { return setting_; }
 
  private:
   ErrorKind kind_;
+  std::string setting_;
 };
 
 /// A setting or argument out of its documented range.
 class InputError : public Error {
  public:
-  explicit InputError(const std::string& message) : Error(ErrorKind::InvalidArgument, message) {}
+  explicit InputError(const std::string& message, std::string setting = {})
+      : Error(ErrorKind::InvalidArgument, message, std::move(setting)) {}
+};
+
+/// A Settings field out of its documented range: setting() names it.
+class SettingError : public InputError {
+ public:
+  SettingError(std::string setting, const std::string& message) : InputError(message, std::move(setting)) {}
 };
 
 /// A surface name that names nothing.
@@ -71,10 +84,12 @@ class SingularSurfaceError : public Error {
   explicit SingularSurfaceError(const std::string& message) : Error(ErrorKind::SingularSurface, message) {}
 };
 
-/// A budget ran out or the run was cancelled.
+/// A budget ran out or the run was cancelled; setting() names the budget ("max_evaluations",
+/// "time_limit", "max_vertices", "cancel").
 class LimitError : public Error {
  public:
-  explicit LimitError(const std::string& message) : Error(ErrorKind::Limit, message) {}
+  explicit LimitError(const std::string& message, std::string setting = {})
+      : Error(ErrorKind::Limit, message, std::move(setting)) {}
 };
 
 }  // namespace isopatch

@@ -22,8 +22,8 @@ namespace isopatch {
 /// settings.edge_root; with EdgeRoot::Bracketed they lie on f = 0 to ~1e-13 of a cell.
 /// settings.progress is called and settings.cancel checked once per slab. `stats` (optional)
 /// receives the time, the number of f evaluations (grid and root finding) and the output size.
-/// \throw InputError for a bad grid, offset or box; EvaluationError if f is NaN/inf where evaluated;
-/// NoSurfaceError if no grid edge is crossed; LimitError on cancel or max_vertices.
+/// \throw SettingError for a bad grid, offset or box (naming the field); EvaluationError if f is NaN/inf
+/// where evaluated; NoSurfaceError if no grid edge is crossed; LimitError on cancel or max_vertices.
 Mesh marching_cubes(const Surface& surface, const Settings& settings, MeshStats* stats = nullptr);
 
 /// The lattice marching_cubes() samples: point (i, j, k) is (planes[0][i], planes[1][j], planes[2][k])
@@ -49,8 +49,8 @@ struct McGrid {
 /// between cell / 2 and 3 cell / 2 thick. The longest axis has exactly settings.grid cells. With offset
 /// 0 the inner planes are box.lo + m * cell (the outer layers are full cells when the side is a multiple
 /// of cell).
-/// \throw InputError unless 1 <= settings.grid <= 4096, 0 <= settings.grid_offset < 1, box.valid().
-McGrid marching_cubes_grid(const Box& box, const Settings& settings);
+/// \throw SettingError unless 1 <= settings.grid <= 4096, 0 <= settings.grid_offset < 1, box.valid().
+McGrid marching_cubes_grid(const Box& box, const MarchingCubesSettings& settings);
 
 /// One case of the generated table: triangles as triples of cube-edge indices.
 /// Cube corners: 0:(0,0,0) 1:(1,0,0) 2:(1,1,0) 3:(0,1,0) 4:(0,0,1) 5:(1,0,1) 6:(1,1,1) 7:(0,1,1).

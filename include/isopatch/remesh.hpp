@@ -21,6 +21,7 @@
 
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh.hpp>
+#include <isopatch/stage_settings.hpp>
 #include <isopatch/surface.hpp>
 
 #include <atomic>
@@ -31,10 +32,8 @@
 
 namespace isopatch {
 
-/// Largest accepted RemeshSettings::valence_search and RemeshSettings::curvature_sweeps (and their
-/// Settings counterparts): bounds on the work a request may ask for.
-inline constexpr int kMaxValenceSearch = 10000;
-inline constexpr int kMaxCurvatureSweeps = 1000;
+// kMaxValenceSearch and kMaxCurvatureSweeps (stage_settings.hpp) bound RemeshSettings::valence_search
+// and RemeshSettings::curvature_sweeps as they bound CleanupSettings'.
 
 struct RemeshSettings {
   /// Target edge length h (uniform sizes), or the largest size when max_error is set. Must be > 0.

@@ -1,17 +1,13 @@
 #pragma once
 /// \file settings.hpp
-/// One Settings struct for every mesher, each field with its documented default, and the statistics
-/// a mesher reports back (mesh_stats.hpp).
+/// One Settings struct for every mesher, composed of the settings of each stage (stage_settings.hpp),
+/// each field with its documented default, and the statistics a mesher reports back (mesh_stats.hpp).
 
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh_stats.hpp>
+#include <isopatch/stage_settings.hpp>
 
-#include <atomic>
-#include <cstdint>
-#include <functional>
-#include <map>
 #include <optional>
-#include <string>
 
 namespace isopatch {
 
@@ -20,123 +16,21 @@ enum class Method {
   MarchingCubes,  ///< Lorensen & Cline 1987 baseline
 };
 
-/// How marching cubes places a vertex on a crossed grid edge.
-enum class EdgeRoot {
-  Bracketed,  ///< a bracketed root finder (Illinois / bisection safeguard) to ~1e-13 of the edge: on f = 0
-  Linear,     ///< linear interpolation of the two end values, as in the original algorithm
-};
-
-/// Progress of a long run, reported through Settings::progress.
-struct Progress {
-  std::size_t done = 0;   ///< work units done (e.g. grid slabs, cells)
-  std::size_t total = 0;  ///< work units in all
-};
-
-/// Rounds of remeshing applied to projection meshes when Settings::remesh_iterations is empty.
-inline constexpr int kDefaultRemeshIterations = 6;
-
-struct Settings {
+/// Every setting of every mesher: the stage settings (stage_settings.hpp), each read only by its
+/// stage, with the method and the region. Fields are reached directly (settings.edge_length).
+struct Settings : SizeSettings,
+                  OctreeSettings,
+                  PatchSettings,
+                  ProjectionSettings,
+                  MarchingCubesSettings,
+                  CleanupSettings,
+                  BudgetSettings {
   Method method = Method::Projection;
   /// The region to mesh; the surface's default box when empty. Must be valid().
   std::optional<Box> box;
 
-  // --- Marching cubes ---------------------------------------------------------------------------
-  /// Cells along the longest box axis; cells are cubes and the grid covers the whole box. 1..4096.
-  int grid = 64;
-  EdgeRoot edge_root = EdgeRoot::Bracketed;
-  /// The grid origin is shifted by this fraction of a cell along the non-dyadic direction
-  /// (0.1234, 0.5678, 0.9012) so symmetric surfaces do not pass through grid points. 0 disables.
-  double grid_offset = 1e-3;
-  /// Rounds of Laplace fairing with re-projection applied to the Marching Cubes mesh (fairing.hpp), 0..10000.
-  int fair_iterations = 0;
-
-  // --- Projection (Sipos & Salvi 2021) ---------------------------------------------------------
-  /// Target edge length of the output (with max_error: the largest). Empty: see default_edge_length.
-  /// Must be > 0.
-  std::optional<double> edge_length;
-  /// Segments per patch side (the template resolution r), 1..64; 0 (default): chosen per depth as the
-  /// mean length of the loop sides at that depth over the edge length (with a size field: the cell size
-  /// over the local size), at least 1, so the mean edge is about the edge length.
-  int resolution = 0;
-  /// Octree depth limits (the root cell is the box made cubic). Surface cells start at the depth whose
-  /// cell size fits the resolution and edge_length, clamped to [min_depth, max_depth]; cells that
-  /// fail the single-sheet or acceptance tests are refined up to max_depth. 0 <= min <= max <= 12.
-  /// With automatic resolution, when the edge length asks for starting cells at max_depth or deeper, the
-  /// limit becomes that depth plus refinement_levels (at most 12), so small features can still be refined.
-  int min_depth = 2;
-  int max_depth = 8;
-  /// With automatic resolution (resolution 0): the starting depth goes one level deeper while more than
-  /// half of the patch corners lie in cells longer than this many radii of the largest principal
-  /// curvature there (cell size * kappa_max, about the normal turn across the cell in radians), as long
-  /// as such cells stay above 3 target edge lengths. One patch then does not wrap around a tube, where
-  /// its lattice would be strained (docs/whole-surface-quality.md). 0 disables; otherwise > 0.
-  double max_cell_curvature = 1.5;
-  /// A cell whose patch is rejected (or whose topology is in doubt) is split, locally, at most this many
-  /// levels below the starting depth (and never below max_depth), 0..12; the octree stays 2:1 balanced
-  /// and coarse patches take their finer neighbours' crossings as extra (flat) corners. Cells still
-  /// failing at that depth are closed by fans over their shared boundaries (reported in the statistics).
-  int refinement_levels = 3;
-  /// Generalized barycentric coordinates for the base patch and the projection directions.
-  enum class Coordinates { Wachspress, MeanValue } coordinates = Coordinates::Wachspress;
-  /// The base surface of each patch, from which interior vertices are projected (docs/algorithms.md 3.5).
-  ///   Barycentric (default): the paper's eq. (1), sum_k lambda_k Q_k; boundary vertices are chord
-  ///     points projected in the face plane; directions blend the cell-edge directions at the corners.
-  ///   Coons: the multi-sided C0 Coons patch (Salvi 2020, arXiv:2002.11347) over the face curves, traced
-  ///     as dense polylines; boundary vertices sit at equal arc length on them; directions blend the
-  ///     unit gradients at the corners.
-  enum class Base { Barycentric, Coons } base = Base::Barycentric;
-  /// Acceptance: largest angle between a projection ray and grad f at the hit (interior vertices), and
-  /// between a boundary ray and the in-face gradient (boundary vertices), in degrees, in (0, 90).
-  double max_ray_angle = 75.0;
-  double max_boundary_ray_angle = 80.0;
-  /// Ray-march steps per traversal of a cell (before the bracketed refinement), 4..4096.
-  int march_steps = 32;
-
-  /// Attach the per-vertex attribute "role": 0 patch corner, 1 patch side, 2 patch interior, 3 patch
-  /// centre (ring templates), 4 centre of a fallback fan.
-  bool vertex_roles = false;
-
-  // --- Whole-surface clean-up (remesh.hpp) ------------------------------------------------------
-  /// Rounds of surface-bound remeshing (split, collapse, flip, relax, project) applied to the output,
-  /// 0..100. Empty (default): 6 for projection, 0 for marching cubes. 0 gives the paper's method alone.
-  std::optional<int> remesh_iterations;
-  /// Clean-up: flips tried per chain in the final sweep that pulls apart stuck 5-7 vertex pairs,
-  /// 0..10000 (RemeshSettings::valence_search); 0 skips it: faster, 1-3 points less valence 6.
-  int valence_search = 30;
-  /// Clean-up: sweeps of tangential vertex moves that make the cotangent Laplacian exact for quadratic
-  /// functions at every vertex, 0..1000 (RemeshSettings::curvature_sweeps): discrete mean-curvature
-  /// error 2-3 times lower on 10k-vertex meshes; 0 skips them (faster).
-  int curvature_sweeps = 8;
-  /// When set: a curvature-adapted size field keeps the distance of triangle centroids from f = 0 below
-  /// this bound (edge lengths sqrt(3 eps / kappa_max), at most edge_length, graded); the projection
-  /// octree refines where the field asks for smaller cells. Must be > 0.
-  std::optional<double> max_error;
-  /// A size field of your own (library only): the target edge length at a point, > 0 and finite. When
-  /// set it replaces edge_length as the target (edge_length, or the longest box side / 16, then caps
-  /// it, and 1/2048 of the longest side is the floor); the projection octree refines where it asks for
-  /// smaller cells, and the clean-up grades and follows it. Combined with max_error, the smaller wins.
-  std::function<double(const Vec3&)> size_field;
-
-  // --- Budgets and control ----------------------------------------------------------------------
-  /// Abort with LimitError when the output would exceed this many vertices. 0: no limit.
-  std::size_t max_vertices = 0;
-  /// Abort with LimitError after this many evaluations of f (values, gradients, Hessians and interval
-  /// bounds all count). 0: no limit.
-  std::uint64_t max_evaluations = 0;
-  /// Abort with LimitError once the run has taken this many seconds (checked every 256 evaluations).
-  /// 0: no limit. Must be >= 0.
-  double time_limit = 0.0;
-  /// Called now and then from the meshing thread; may be empty.
-  std::function<void(const Progress&)> progress;
-  /// When set and true, the mesher stops with LimitError("cancelled") at the next check.
-  const std::atomic<bool>* cancel = nullptr;
+  /// Checks every stage's settings and the box. \throw SettingError naming the first field out of range.
+  void validate() const;
 };
-
-/// The target edge length of the projection mesher, or with max_error the largest size the size field
-/// may ask for: Settings::edge_length when given, else the longest side of `box` / 64 (/ 16 with
-/// max_error or a size_field).
-inline double default_edge_length(const Settings& s, const Box& box) {
-  return s.edge_length.value_or(box.size().maxCoeff() / (s.max_error || s.size_field ? 16.0 : 64.0));
-}
 
 }  // namespace isopatch

@@ -18,13 +18,14 @@ void BudgetedSurface::charge(std::uint64_t n) const {
   const std::uint64_t before = count_.fetch_add(n, std::memory_order_relaxed);
   const std::uint64_t after = before + n;
   if (max_evaluations_ > 0 && after > max_evaluations_)
-    throw LimitError("evaluation budget of " + std::to_string(max_evaluations_) +
-                     " evaluations of f exhausted (--max-evaluations)");
+    throw LimitError(
+        "the evaluation budget of " + std::to_string(max_evaluations_) + " evaluations of f is exhausted",
+        "max_evaluations");
   // The clock is read every 256 evaluations: cheap, and at most a few microseconds late.
   if (seconds_ > 0.0 && (before >> 8) != (after >> 8)) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (elapsed > seconds_)
-      throw LimitError("time limit of " + std::to_string(seconds_) + " s exceeded (--time-limit)");
+      throw LimitError("the time limit of " + std::to_string(seconds_) + " s is exceeded", "time_limit");
   }
 }
 

@@ -106,19 +106,7 @@ Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats
 }  // namespace
 
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
-  if (settings.remesh_iterations && (*settings.remesh_iterations < 0 || *settings.remesh_iterations > 100))
-    throw InputError("remesh iterations must be between 0 and 100, got " +
-                     std::to_string(*settings.remesh_iterations));
-  if (settings.valence_search < 0 || settings.valence_search > kMaxValenceSearch)
-    throw InputError("the valence search must be between 0 and " + std::to_string(kMaxValenceSearch) +
-                     " flips per chain, got " + std::to_string(settings.valence_search));
-  if (settings.curvature_sweeps < 0 || settings.curvature_sweeps > kMaxCurvatureSweeps)
-    throw InputError("the curvature sweeps must be between 0 and " + std::to_string(kMaxCurvatureSweeps) +
-                     ", got " + std::to_string(settings.curvature_sweeps));
-  if (settings.max_error && !(std::isfinite(*settings.max_error) && *settings.max_error > 0.0))
-    throw InputError("the maximum error must be a positive number");
-  if (!(std::isfinite(settings.time_limit) && settings.time_limit >= 0.0))
-    throw InputError("the time limit must be a number of seconds >= 0");
+  settings.validate();
   if (settings.max_evaluations == 0 && settings.time_limit == 0.0) return dispatch(surface, settings, stats);
   const BudgetedSurface budgeted(surface, settings.max_evaluations, settings.time_limit);
   return dispatch(budgeted, settings, stats);
@@ -127,7 +115,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
 Method parse_method(const std::string& name) {
   if (name == "projection") return Method::Projection;
   if (name == "mc" || name == "marching-cubes") return Method::MarchingCubes;
-  throw InputError("unknown method '" + name + "' (want projection or mc)");
+  throw SettingError("method", "unknown method '" + name + "' (want projection or mc)");
 }
 
 std::string method_name(Method method) {

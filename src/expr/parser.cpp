@@ -223,7 +223,7 @@ class Parser {
   void check_params() const {
     for (const auto& [name, value] : params_) {
       if (used_params_.count(name)) continue;
-      std::string message = "--param " + name + ": the formula has no definition '" + name + " = ...'";
+      std::string message = "parameter " + name + ": the formula has no definition '" + name + " = ...'";
       if (definition_order_.empty()) {
         message += " (it defines nothing)";
       } else {
@@ -237,7 +237,7 @@ class Parser {
           message += ")";
         }
       }
-      throw InputError(message);
+      throw InputError(message, "params");
     }
   }
 

@@ -30,12 +30,10 @@ std::vector<double> axis_planes(double lo, double hi, double cells, double sigma
 
 }  // namespace
 
-McGrid marching_cubes_grid(const Box& box, const Settings& settings) {
-  if (!box.valid()) throw InputError("marching cubes: the box must be finite with lo < hi on every axis");
-  if (settings.grid < 1 || settings.grid > 4096)
-    throw InputError("marching cubes: grid " + std::to_string(settings.grid) + " is outside 1..4096");
-  if (!(settings.grid_offset >= 0.0 && settings.grid_offset < 1.0))
-    throw InputError("marching cubes: grid offset must be in [0, 1)");
+McGrid marching_cubes_grid(const Box& box, const MarchingCubesSettings& settings) {
+  if (!box.valid())
+    throw SettingError("box", "marching cubes: the box must be finite with lo < hi on every axis");
+  settings.validate();
 
   McGrid grid;
   const Vec3 size = box.size();

@@ -24,9 +24,11 @@ constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 
 class SlabMesher {
  public:
-  SlabMesher(const Surface& surface, const Settings& settings, const McGrid& grid)
+  SlabMesher(const Surface& surface, const MarchingCubesSettings& settings, const BudgetSettings& budget,
+             const McGrid& grid)
       : surface_(surface),
         settings_(settings),
+        budget_(budget),
         grid_(grid),
         nx_(grid.cells[0]),
         ny_(grid.cells[1]),
@@ -45,15 +47,15 @@ class SlabMesher {
     sample_layer(0, 0);
     layer_vertices(0, 0);
     for (int k = 0; k < nz_; ++k) {
-      if (settings_.cancel != nullptr && settings_.cancel->load()) throw LimitError("cancelled");
+      budget_.check_cancel();
       const int below = k & 1;
       const int above = below ^ 1;
       sample_layer(k + 1, above);
       layer_vertices(k + 1, above);
       z_vertices(k, below, above);
       emit_cells(below, above);
-      if (settings_.progress)
-        settings_.progress(Progress{static_cast<std::size_t>(k) + 1, static_cast<std::size_t>(nz_)});
+      if (budget_.progress)
+        budget_.progress(Progress{static_cast<std::size_t>(k) + 1, static_cast<std::size_t>(nz_)});
     }
     return std::move(mesh_);
   }
@@ -75,9 +77,9 @@ class SlabMesher {
   // The vertex on the edge from lattice point a (value fa) to b (value fb), or kNoVertex.
   std::uint32_t edge_vertex(const Vec3& a, const Vec3& b, double fa, double fb) {
     if ((fa < 0.0) == (fb < 0.0)) return kNoVertex;
-    if (settings_.max_vertices != 0 && mesh_.positions.size() >= settings_.max_vertices)
-      throw LimitError("marching cubes: more than " + std::to_string(settings_.max_vertices) +
-                       " vertices (max_vertices)");
+    if (budget_.max_vertices != 0 && mesh_.positions.size() >= budget_.max_vertices)
+      throw LimitError("the mesh would exceed the vertex budget of " + std::to_string(budget_.max_vertices),
+                       "max_vertices");
     if (mesh_.positions.size() >= kNoVertex) throw LimitError("marching cubes: more than 2^32 - 1 vertices");
     mesh_.positions.push_back(mc::edge_root(surface_, a, b, fa, fb, settings_.edge_root, evaluations_));
     return static_cast<std::uint32_t>(mesh_.positions.size() - 1);
@@ -137,7 +139,8 @@ class SlabMesher {
   }
 
   const Surface& surface_;
-  const Settings& settings_;
+  const MarchingCubesSettings& settings_;
+  const BudgetSettings& budget_;
   McGrid grid_;
   int nx_, ny_, nz_;
   std::size_t layer_points_;
@@ -154,9 +157,13 @@ class SlabMesher {
 
 Mesh marching_cubes(const Surface& surface, const Settings& settings, MeshStats* stats) {
   const auto start = std::chrono::steady_clock::now();
+  settings.MarchingCubesSettings::validate();
+  settings.BudgetSettings::validate();
+  if (settings.box && !settings.box->valid())
+    throw SettingError("box", "the box must be finite with lo < hi on every axis");
   const Box box = settings.box ? *settings.box : surface.box();
   const McGrid grid = marching_cubes_grid(box, settings);
-  SlabMesher mesher(surface, settings, grid);
+  SlabMesher mesher(surface, settings, settings, grid);
   Mesh mesh = mesher.run();
   if (mesh.triangles.empty())
     throw NoSurfaceError("no surface in the box " + format_box(box) + ": f does not change sign on the " +

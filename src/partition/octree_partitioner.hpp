@@ -4,6 +4,7 @@
 /// 2:1-balanced octree of build_partition (partition.hpp), seen as convex cells with shared corners and
 /// faces. Depths are octree levels; splitting a cell halves it along every axis.
 
+#include <isopatch/stage_settings.hpp>
 #include <isopatch/surface.hpp>
 
 #include <atomic>
@@ -13,9 +14,6 @@
 #include "partition/partition.hpp"
 
 namespace isopatch {
-
-/// The deepest octree level a mesh may use.
-inline constexpr int kOctreeDepthLimit = 12;
 
 /// How deep the octree starts and how deep it may refine.
 struct OctreeDepthRequest {

@@ -14,6 +14,7 @@
 /// subdivision of the fan triangles (centre, V_k, V_{k+1})), so the smallest angle in the domain is
 /// independent of r: 60 deg (n = 3), 45 (n = 4), min(360/n, 90 - 180/n) for n >= 5, i.e. 30 at n = 12.
 
+#include <isopatch/stage_settings.hpp>
 #include "patch/barycentric.hpp"
 #include "patch/domain.hpp"
 
@@ -39,7 +40,7 @@ using TemplateTriangle = std::array<int, 3>;  ///< vertex indices, counter-clock
 class PatchTemplate {
  public:
   static constexpr int kMinResolution = 1;
-  static constexpr int kMaxResolution = 64;
+  static constexpr int kMaxResolution = kMaxPatchResolution;
 
   /// \throw InputError unless 3 <= n <= 12 and 1 <= r <= 64.
   PatchTemplate(int n, int r, CoordinateKind kind);

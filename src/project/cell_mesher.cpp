@@ -14,7 +14,6 @@
 #include "patch/base_surface.hpp"
 #include "patch/coons_patch.hpp"
 #include "patch/patch_template.hpp"
-#include "project/budget_checks.hpp"
 #include "project/doubtful_cells.hpp"
 #include "project/face_curve.hpp"
 #include "project/ray_march.hpp"
@@ -24,7 +23,7 @@
 namespace isopatch {
 namespace {
 
-ProjectionParams projection_params(const Settings& s, int resolution) {
+ProjectionParams projection_params(const ProjectionSettings& s, int resolution) {
   const double to_radians = std::numbers::pi / 180.0;
   ProjectionParams p;
   p.resolution = resolution;
@@ -34,9 +33,9 @@ ProjectionParams projection_params(const Settings& s, int resolution) {
   return p;
 }
 
-CoordinateKind coordinate_kind(const Settings& s) {
-  return s.coordinates == Settings::Coordinates::MeanValue ? CoordinateKind::MeanValue
-                                                           : CoordinateKind::Wachspress;
+CoordinateKind coordinate_kind(const PatchSettings& s) {
+  return s.coordinates == PatchSettings::Coordinates::MeanValue ? CoordinateKind::MeanValue
+                                                                : CoordinateKind::Wachspress;
 }
 
 }  // namespace
@@ -47,13 +46,13 @@ void CellMesherCounters::start_pass() {
   patch = PatchStats{};
 }
 
-CellMesher::CellMesher(const Sampler& f, const CellPartition& partition, const Settings& settings,
+CellMesher::CellMesher(const Sampler& f, const CellPartition& partition, CellMesherSettings settings,
                        int resolution, int refinable_level, std::function<double(const Vec3&)> size_at,
                        bool uniform_sizes)
     : f_(f),
       part_(partition),
       settings_(settings),
-      params_(projection_params(settings, std::max(resolution, 1))),
+      params_(projection_params(settings.projection, std::max(resolution, 1))),
       fixed_resolution_(resolution),
       refinable_level_(refinable_level),
       size_at_(std::move(size_at)),
@@ -63,12 +62,12 @@ Mesh CellMesher::run(CellMesherCounters& counters) {
   collect_sides();
   compute_sides(counters);
   for (std::size_t c = 0; c < part_.cells.size(); ++c) {
-    check_cancel(settings_);
-    if (settings_.progress && c % 64 == 0) settings_.progress(Progress{c, part_.cells.size()});
+    settings_.budget.check_cancel();
+    if (settings_.budget.progress && c % 64 == 0) settings_.budget.progress(Progress{c, part_.cells.size()});
     mesh_cell(c, counters);
-    check_vertex_budget(settings_, mesh_.positions.size());
+    settings_.budget.check_vertices(mesh_.positions.size());
   }
-  if (settings_.vertex_roles) mesh_.set_attribute("role", std::move(roles_));
+  if (settings_.projection.vertex_roles) mesh_.set_attribute("role", std::move(roles_));
   return std::move(mesh_);
 }
 
@@ -189,7 +188,7 @@ void CellMesher::compute_sides(CellMesherCounters& counters) {
   side_accepted_.reserve(sides_.size());
   side_offsets_.reserve(sides_.size());
   for (std::size_t i = 0; i < sides_.size(); ++i) {
-    check_cancel(settings_);
+    settings_.budget.check_cancel();
     side_segments_.push_back(side_segments(i));
     side_offsets_.push_back(mesh_.positions.size());
     const SidePoints s = sample(sides_[i], side_segments_.back());
@@ -200,7 +199,7 @@ void CellMesher::compute_sides(CellMesherCounters& counters) {
     }
     side_accepted_.push_back(s.accepted);
     for (const SurfacePoint& p : s.points) add_vertex(p.position, p.gradient, role_value(VertexRole::Side));
-    check_vertex_budget(settings_, mesh_.positions.size());
+    settings_.budget.check_vertices(mesh_.positions.size());
   }
 }
 
@@ -211,7 +210,8 @@ SidePoints CellMesher::sample(const Side& side, int segments) {
   const CellFace& face = part_.faces[side.face];
   ProjectionParams params = params_;
   params.resolution = segments;
-  if (settings_.base == Settings::Base::Barycentric) return sample_side(f_, from, to, face, params);
+  if (settings_.patch.base == PatchSettings::Base::Barycentric)
+    return sample_side(f_, from, to, face, params);
   FaceCurve curve = trace_face_curve(f_, from, to, face, params);
   side_curves_.push_back(std::move(curve.dense));
   return SidePoints{std::move(curve.points), curve.accepted};
@@ -221,7 +221,7 @@ SidePoints CellMesher::sample(const Side& side, int segments) {
 std::unique_ptr<BaseSurface> CellMesher::base_surface(const CellLoop& loop,
                                                       std::vector<Vec3>& directions) const {
   directions.clear();
-  if (settings_.base == Settings::Base::Barycentric) {
+  if (settings_.patch.base == PatchSettings::Base::Barycentric) {
     std::vector<Vec3> q;
     for (std::uint32_t c : loop.corners) {
       q.push_back(part_.corners[c].position);
@@ -293,7 +293,7 @@ PatchVerdict CellMesher::mesh_patch(const PartitionCell& cell, const CellLoop& l
   int r = 1;
   for (std::size_t k = 0; k < loop.corners.size(); ++k)
     r = std::max(r, segments(side_index(loop.corners[k], loop.corners[next(k, loop.corners.size())])));
-  const auto patch = patch_template(n, r, coordinate_kind(settings_));
+  const auto patch = patch_template(n, r, coordinate_kind(settings_.patch));
   std::vector<Vec3> d;
   const std::unique_ptr<BaseSurface> base = base_surface(loop, d);
   std::vector<std::uint32_t> ids(patch->vertex_count(), 0);

@@ -6,7 +6,7 @@
 /// it can run in parallel with the same output. Sees the partition only through cell_partition.hpp.
 
 #include <isopatch/mesh.hpp>
-#include <isopatch/settings.hpp>
+#include <isopatch/stage_settings.hpp>
 
 #include <cstddef>
 #include <functional>
@@ -39,6 +39,13 @@ struct CellMesherCounters {
   void start_pass();
 };
 
+/// The stage settings a pass reads.
+struct CellMesherSettings {
+  const PatchSettings& patch;
+  const ProjectionSettings& projection;
+  const BudgetSettings& budget;
+};
+
 /// Meshes one partition. A cell whose patch or one of whose sides is rejected is listed in to_split()
 /// when it is shallower than `refinable_level` (the caller then refines it and meshes again); deeper
 /// rejected cells, and cells whose topology is still in doubt, are closed by fans over their shared
@@ -48,11 +55,11 @@ class CellMesher {
   /// `resolution` > 0: every side gets that many segments; 0: each side gets its own count from the
   /// cells that share it and the target size at their corners (`size_at`; `uniform_sizes` when it is
   /// constant, see side_factor).
-  CellMesher(const Sampler& f, const CellPartition& partition, const Settings& settings, int resolution,
+  CellMesher(const Sampler& f, const CellPartition& partition, CellMesherSettings settings, int resolution,
              int refinable_level, std::function<double(const Vec3&)> size_at, bool uniform_sizes);
 
   /// The mesh; meaningful only when to_split() is empty afterwards.
-  /// \throw LimitError when cancelled or beyond Settings::max_vertices; EvaluationError as f does.
+  /// \throw LimitError when cancelled or beyond BudgetSettings::max_vertices; EvaluationError as f does.
   Mesh run(CellMesherCounters& counters);
 
   /// Smallest and largest segment count over the sides (0, 0 without sides).
@@ -89,7 +96,7 @@ class CellMesher {
 
   const Sampler& f_;
   const CellPartition& part_;
-  const Settings& settings_;
+  CellMesherSettings settings_;
   ProjectionParams params_;
   int fixed_resolution_;
   int refinable_level_;
@@ -106,7 +113,7 @@ class CellMesher {
   std::vector<std::vector<Vec3>> side_curves_;  // Coons base: dense face curve per side, in key order
   std::vector<bool> side_accepted_;
   std::vector<Vec3> gradients_;  // per mesh vertex
-  std::vector<float> roles_;     // per mesh vertex, see Settings::vertex_roles
+  std::vector<float> roles_;     // per mesh vertex, see ProjectionSettings::vertex_roles
   Mesh mesh_;
 };
 

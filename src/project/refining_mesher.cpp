@@ -9,7 +9,6 @@
 #include <tuple>
 #include <vector>
 
-#include "project/budget_checks.hpp"
 #include "project/cell_mesher.hpp"
 #include "project/cell_sizing.hpp"
 #include "project/doubtful_cells.hpp"
@@ -21,12 +20,12 @@ namespace {
 constexpr int kMaxRounds = 8;
 
 ProjectionStats projection_stats(const CellPartition& partition, const CellMesher& mesher,
-                                 const CellMesherCounters& counters, const Settings& settings, int max_level,
-                                 std::size_t refinements, std::size_t curvature_steps) {
+                                 const CellMesherCounters& counters, const PatchSettings& patch,
+                                 int max_level, std::size_t refinements, std::size_t curvature_steps) {
   ProjectionStats p;
   p.start_depth = partition.start_level;
   p.depth_limit = max_level;
-  p.resolution = settings.resolution;
+  p.resolution = patch.resolution;
   std::tie(p.side_segments_min, p.side_segments_max) = mesher.segment_range();
   p.patches_by_sides = counters.patches_by_sides;
   p.rejected_patches = counters.rejected_patches;
@@ -42,7 +41,7 @@ ProjectionStats projection_stats(const CellPartition& partition, const CellMeshe
   for (int d = 0; d <= kMaxPartitionLevel; ++d)
     if (const std::uint64_t n = partition.stats.leaves_per_depth[static_cast<std::size_t>(d)]; n > 0)
       p.cells_by_depth[d] = n;
-  p.coons_base = settings.base == Settings::Base::Coons;
+  p.coons_base = patch.base == PatchSettings::Base::Coons;
   return p;
 }
 
@@ -59,8 +58,10 @@ void record_doubts(const DoubtfulCells& doubtful, int max_level, MeshWarnings& w
 
 }  // namespace
 
-Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Settings& settings,
-                   const SizeSpec& sizes, MeshStats* stats) {
+Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const OctreeSettings& octree,
+                   const CellMesherSettings& settings, const SizeSpec& sizes, MeshStats* stats) {
+  const BudgetSettings& budget = settings.budget;
+  const int resolution = settings.patch.resolution;
   const Sampler f(surface);
   CellMesherCounters counters;
   std::uint64_t partition_values = 0, partition_gradients = 0;
@@ -70,12 +71,12 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Setti
   const std::function<double(const Vec3&)> size_at = size_function(surface, sizes);
   // Restarts at a finer level do not count as rounds: only refinements do.
   for (int round = 0;;) {
-    check_cancel(settings);
+    budget.check_cancel();
     const CellPartition partition = partitioner.build();
     partition_values += partition.stats.value_evaluations;
     partition_gradients += partition.stats.gradient_evaluations;
-    if (settings.progress)
-      settings.progress(Progress{static_cast<std::size_t>(round), static_cast<std::size_t>(kMaxRounds)});
+    if (budget.progress)
+      budget.progress(Progress{static_cast<std::size_t>(round), static_cast<std::size_t>(kMaxRounds)});
     const int start = partition.start_level;
     if (partition.cells.empty()) {
       // Nothing found yet: look finer (cheap where intervals or the heuristic prune).
@@ -88,8 +89,8 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Setti
     // starting cells are too curved, start one level deeper (once per level, before any local split).
     if (!start_settled) {
       start_settled =
-          settings.resolution != 0 || settings.max_cell_curvature == 0.0 || start >= max_level ||
-          !starting_cells_too_curved(partition, surface, start, settings.max_cell_curvature, size_at);
+          resolution != 0 || octree.max_cell_curvature == 0.0 || start >= max_level ||
+          !starting_cells_too_curved(partition, surface, start, octree.max_cell_curvature, size_at);
       if (!start_settled && partitioner.start_finer()) {
         ++curvature_steps;
         continue;
@@ -100,7 +101,7 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Setti
     // to its finest level: a coarser fan there would give a closed mesh of the wrong topology. Rejected
     // patches are refined at most refinement_levels below the start (a size field: to the finest level).
     const int patch_level =
-        std::max(start, sizes.varies() ? max_level : std::min(max_level, start + settings.refinement_levels));
+        std::max(start, sizes.varies() ? max_level : std::min(max_level, start + octree.refinement_levels));
     if (sizes.varies() && round < kMaxRounds) {
       // The size field asks for cells of at most kAutoSegments local edge lengths.
       if (const std::vector<std::size_t> split = cells_too_large_for(partition, size_at, patch_level);
@@ -112,7 +113,7 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Setti
     }
     // After kMaxRounds rounds of refinement, whatever still fails is closed by fans.
     const int refinable_level = round < kMaxRounds ? patch_level : 0;
-    CellMesher mesher(f, partition, settings, settings.resolution, refinable_level, size_at, !sizes.varies());
+    CellMesher mesher(f, partition, settings, resolution, refinable_level, size_at, !sizes.varies());
     counters.start_pass();
     Mesh mesh = mesher.run(counters);
     if (const std::vector<std::size_t> split = mesher.to_split(); !split.empty()) {
@@ -127,7 +128,7 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Setti
       stats->gradient_evaluations = partition_gradients + f.gradient_count();
       stats->vertices = mesh.vertex_count();
       stats->triangles = mesh.triangle_count();
-      stats->projection = projection_stats(partition, mesher, counters, settings, max_level,
+      stats->projection = projection_stats(partition, mesher, counters, settings.patch, max_level,
                                            static_cast<std::size_t>(round), curvature_steps);
       record_doubts(doubtful, max_level, stats->warnings);
     }

@@ -53,7 +53,7 @@ std::string read_formula_file(const std::string& path) {
 }
 
 Box need_box(const std::optional<Box>& box) {
-  if (!box) throw InputError("a formula needs --box");
+  if (!box) throw InputError("a formula needs a box", "box");
   return *box;
 }
 

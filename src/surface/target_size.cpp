@@ -1,15 +1,15 @@
 // Target sizes from Settings (see target_size.hpp).
 #include "surface/target_size.hpp"
 
-#include <isopatch/level_set_curvature.hpp>
 #include <isopatch/error.hpp>
+#include <isopatch/level_set_curvature.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 namespace isopatch {
 
-SizeSpec size_spec(const Settings& s, const Box& box) {
+SizeSpec size_spec(const SizeSettings& s, const Box& box) {
   SizeSpec spec;
   spec.largest = default_edge_length(s, box);
   spec.smallest = std::min(spec.largest, box.size().maxCoeff() / 2048.0);
@@ -24,7 +24,8 @@ double target_size(const Surface& surface, const SizeSpec& spec, const Vec3& p) 
     h = std::min(h, size_for_error(max_abs_principal_curvature(surface, p), *spec.max_error));
   if (spec.user) {
     const double u = spec.user(p);
-    if (!(std::isfinite(u) && u > 0.0)) throw InputError("the size field must be positive and finite");
+    if (!(std::isfinite(u) && u > 0.0))
+      throw SettingError("size_field", "the size field must be positive and finite");
     h = std::min(h, u);
   }
   return std::clamp(h, spec.smallest, spec.largest);

@@ -3,7 +3,7 @@
 // and the remesher (split and collapse thresholds): a fixed length, or the smallest of a curvature size
 // for a chordal error bound and a caller's size field, clamped to [smallest, largest].
 
-#include <isopatch/settings.hpp>
+#include <isopatch/stage_settings.hpp>
 #include <isopatch/surface.hpp>
 
 #include <functional>
@@ -19,9 +19,9 @@ struct SizeSpec {
   bool varies() const { return max_error.has_value() || static_cast<bool>(user); }
 };
 
-/// The sizes Settings asks for over `box`: largest = default_edge_length(s, box); smallest = 1/2048 of
+/// The sizes `s` asks for over `box`: largest = default_edge_length(s, box); smallest = 1/2048 of
 /// the longest box side (at most largest); max_error and size_field as given.
-SizeSpec size_spec(const Settings& s, const Box& box);
+SizeSpec size_spec(const SizeSettings& s, const Box& box);
 
 /// The target size at p. \throw InputError when the caller's size field gives a value that is not
 /// positive and finite.

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "analysis_meshes.hpp"
+#include "error_report.hpp"
 #include "run_command.hpp"
 
 namespace isopatch {
@@ -89,7 +90,7 @@ TEST(AnalyzeCli, WriteWithoutSurfaceIsAnInputError) {
   const auto dir = test::scratch_dir("analyze_write_nosurface");
   const std::string mesh = write_icosphere(dir);
   const auto r = test::run_command(kCli + " analyze " + mesh + " --write " + (dir / "f.ply").string(), dir);
-  EXPECT_EQ(r.exit_code, exit_code(ErrorKind::InvalidArgument));
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::InvalidArgument));
   EXPECT_NE(r.err.find("--surface"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir / "f.ply"));
 }
@@ -99,13 +100,13 @@ TEST(AnalyzeCli, WriteToANonPlyFileIsAnInputError) {
   const std::string mesh = write_icosphere(dir);
   const auto r = test::run_command(
       kCli + " analyze " + mesh + " --surface sphere --write " + (dir / "f.obj").string(), dir);
-  EXPECT_EQ(r.exit_code, exit_code(ErrorKind::InvalidArgument));
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::InvalidArgument));
 }
 
 TEST(AnalyzeCli, MissingMeshIsAnIoError) {
   const auto dir = test::scratch_dir("analyze_missing");
   const auto r = test::run_command(kCli + " analyze " + (dir / "nothing.ply").string(), dir);
-  EXPECT_EQ(r.exit_code, exit_code(ErrorKind::Io));
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::Io));
   EXPECT_NE(r.err.find("nothing.ply"), std::string::npos) << r.err;
 }
 
@@ -113,7 +114,7 @@ TEST(AnalyzeCli, UnknownSurfaceIsReported) {
   const auto dir = test::scratch_dir("analyze_unknown");
   const std::string mesh = write_icosphere(dir);
   const auto r = test::run_command(kCli + " analyze " + mesh + " --surface shpere", dir);
-  EXPECT_EQ(r.exit_code, exit_code(ErrorKind::UnknownSurface));
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::UnknownSurface));
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "error_report.hpp"
 #include "run_command.hpp"
 
 namespace isopatch {
@@ -87,9 +88,37 @@ TEST(Cli, BadInputGivesOneLineAndDistinctExitCode) {
   };
   for (const BadCase& c : cases) {
     const auto r = test::run_command(kCli + " " + c.args, dir);
-    EXPECT_EQ(r.exit_code, exit_code(c.kind)) << c.args << "\n" << r.err;
+    EXPECT_EQ(r.exit_code, cli::exit_code(c.kind)) << c.args << "\n" << r.err;
     EXPECT_EQ(count_lines(r.err), 1) << c.args << "\n" << r.err;
     EXPECT_EQ(r.err.rfind("isopatch: ", 0), 0u) << r.err;
+  }
+}
+
+TEST(Cli, ASettingOutOfRangeNamesItsFlag) {
+  // The library names the Settings field (Error::setting()); the tool names the flag that sets it.
+  const auto dir = test::scratch_dir("cli_flags");
+  const std::string out = " -o " + (dir / "m.ply").string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--edge-length -1", "--edge-length"},
+      {"--max-error 0", "--max-error"},
+      {"--resolution 65", "--resolution"},
+      {"--min-depth 9 --max-depth 3", "--min-depth"},
+      {"--max-depth 13", "--max-depth"},
+      {"--refinement-levels 13", "--refinement-levels"},
+      {"--max-ray-angle 95", "--max-ray-angle"},
+      {"--method mc --grid 0", "--grid"},
+      {"--method mc --fair 20000", "--fair"},
+      {"--remesh 101", "--remesh"},
+      {"--valence-search -1", "--valence-search"},
+      {"--time-limit -1", "--time-limit"},
+      {"--method mc --grid-offset 1", "--grid-offset"},
+  };
+  const auto help = test::run_command(kCli + " mesh --help", dir);
+  for (const auto& [args, flag] : cases) {
+    const auto r = test::run_command(kCli + " mesh torus " + args + out, dir);
+    EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::InvalidArgument)) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find("(" + flag + ")"), std::string::npos) << args << "\n" << r.err;
+    EXPECT_NE(help.out.find(flag + " "), std::string::npos) << flag << " is not a flag of isopatch mesh";
   }
 }
 
@@ -97,7 +126,7 @@ TEST(Cli, ParseErrorPointsAtTheColumn) {
   const auto dir = test::scratch_dir("cli_parse");
   const auto r = test::run_command(
       kCli + " mesh \"x^^2\" --box -1,-1,-1,1,1,1 --method mc -o " + (dir / "m.ply").string(), dir);
-  EXPECT_EQ(r.exit_code, exit_code(ErrorKind::Parse));
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::Parse));
   EXPECT_NE(r.err.find("column 3"), std::string::npos) << r.err;
 }
 
@@ -213,10 +242,11 @@ TEST(Cli, ProgressLineEndsBeforeAnErrorMessage) {
   const auto r = test::run_command(
       kCli + " mesh torus --method mc --grid 48 --max-vertices 10 --progress -o " + (dir / "t.ply").string(),
       dir);
-  EXPECT_EQ(r.exit_code, exit_code(ErrorKind::Limit)) << r.err;
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::Limit)) << r.err;
   ASSERT_EQ(count_lines(r.err), 2) << r.err;  // the progress line, then the error on a line of its own
   const std::string second = r.err.substr(r.err.find('\n') + 1);
-  EXPECT_EQ(second.rfind("isopatch: marching cubes: more than 10 vertices", 0), 0u) << r.err;
+  EXPECT_EQ(second.rfind("isopatch: the mesh would exceed the vertex budget of 10 (--max-vertices)", 0), 0u)
+      << r.err;
   EXPECT_GT(last_progress(r.err, "slabs").first, 0) << r.err;
 }
 

@@ -65,7 +65,12 @@ TEST(ResolveSurface, UnknownNamesSuggestTheClosest) {
 
 TEST(ResolveSurface, FormulasNeedABox) {
   EXPECT_EQ(message_of<InputError>([] { resolve_surface("x^2 + y^2 + z^2 - 1", std::nullopt); }),
-            "a formula needs --box");
+            "a formula needs a box");
+  try {
+    resolve_surface("x^2 + y^2 + z^2 - 1", std::nullopt);
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.setting(), "box");
+  }
   const SurfacePtr s = resolve_surface("x^2 + y^2 + z^2 - 1", kUnitBox);
   EXPECT_DOUBLE_EQ(s->value(Vec3(1, 0, 0)), 0.0);
   EXPECT_EQ(s->box().hi, kUnitBox.hi);

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "error_report.hpp"
 #include "png_reader.hpp"
 #include "render_fixtures.hpp"
 #include "run_command.hpp"
@@ -101,7 +102,7 @@ TEST(RenderCli, BadInputGivesOneLineAndTheRightExitCode) {
   };
   for (const Case& c : cases) {
     const auto r = test::run_command(kCli + " render " + c.args, dir);
-    EXPECT_EQ(r.exit_code, exit_code(c.kind)) << c.args << "\n" << r.err;
+    EXPECT_EQ(r.exit_code, cli::exit_code(c.kind)) << c.args << "\n" << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << "\n" << r.err;
   }
   EXPECT_FALSE(std::filesystem::exists(png));

@@ -17,11 +17,12 @@
 namespace isopatch {
 namespace {
 
+/// The budget (LimitError::setting) that stopped the run, and its message.
 std::string limit_message(const Surface& s, const Settings& settings) {
   try {
     mesh_surface(s, settings);
   } catch (const LimitError& e) {
-    return e.what();
+    return e.setting() + ": " + e.what();
   }
   return "no LimitError";
 }
@@ -32,8 +33,10 @@ TEST(Budgets, EvaluationBudgetStopsEveryMethod) {
     Settings settings;
     settings.method = method;
     settings.max_evaluations = 2000;
-    EXPECT_NE(limit_message(*torus, settings).find("--max-evaluations"), std::string::npos)
-        << method_name(method);
+    const std::string message = limit_message(*torus, settings);
+    EXPECT_EQ(message.rfind("max_evaluations: the evaluation budget of 2000", 0), 0u) << method_name(method);
+    // The library speaks of its settings, never of the command line's flags.
+    EXPECT_EQ(message.find("--"), std::string::npos) << message;
     // A budget the run fits in changes nothing.
     settings.max_evaluations = 50'000'000;
     MeshStats stats;
@@ -48,7 +51,7 @@ TEST(Budgets, TimeLimitStopsALongRunEarly) {
   settings.max_depth = 12;
   settings.time_limit = 0.05;
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_NE(limit_message(*tanglecube, settings).find("--time-limit"), std::string::npos);
+  EXPECT_EQ(limit_message(*tanglecube, settings).rfind("time_limit: the time limit of", 0), 0u);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 5.0);
 }
@@ -67,6 +70,7 @@ TEST(Budgets, ToolExitsWithTheLimitCode) {
       dir);
   EXPECT_EQ(r.exit_code, 9) << r.err;
   EXPECT_NE(r.err.find("evaluation budget"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(--max-evaluations)"), std::string::npos) << r.err;  // the flag at fault
   EXPECT_FALSE(std::filesystem::exists(dir / "t.ply"));
 }
 #endif

@@ -75,7 +75,7 @@ Outcome run(const std::string& formula, const Box& box, Method method,
 
 std::string describe(const Outcome& o) {
   if (o.mesh) return std::to_string(o.mesh->vertex_count()) + " vertices";
-  return "error " + std::to_string(exit_code(*o.error)) + ": " + o.message;
+  return "error " + std::to_string(static_cast<int>(*o.error)) + ": " + o.message;
 }
 
 /// True when p lies on one of the faces of `box` (within `tol`).

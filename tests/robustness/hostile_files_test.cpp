@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "error_report.hpp"
 #include "run_command.hpp"
 
 namespace isopatch {
@@ -98,7 +99,7 @@ TEST(HostileFiles, AnalyzeExitsWithIoCodeAndOneLine) {
       out << h.bytes;
     }
     const auto r = test::run_command(kCli + " analyze " + path.string(), dir);
-    EXPECT_EQ(r.exit_code, exit_code(ErrorKind::Io)) << r.err;
+    EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::Io)) << r.err;
     EXPECT_EQ(count_lines(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(h.name), std::string::npos) << "the message names the file: " << r.err;
   }
@@ -109,7 +110,7 @@ TEST(HostileFiles, MissingFileAndDirectory) {
   for (const std::string& path : {(dir / "missing.obj").string(), dir.string() + "/"}) {
     SCOPED_TRACE(path);
     const auto r = test::run_command(kCli + " analyze " + path, dir);
-    EXPECT_EQ(r.exit_code, exit_code(ErrorKind::Io)) << r.err;
+    EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::Io)) << r.err;
     EXPECT_EQ(count_lines(r.err), 1) << r.err;
   }
 }

@@ -1,0 +1,101 @@
+// validate() of every stage's settings (stage_settings.hpp, settings.hpp): one place per field, each
+// error naming the field it is about.
+#include <isopatch/error.hpp>
+#include <isopatch/settings.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace isopatch {
+namespace {
+
+bool positive(const std::optional<double>& x) {
+  return !x || (std::isfinite(*x) && *x > 0.0);
+}
+
+void check_count(const char* setting, const char* what, int value, int lo, int hi) {
+  if (value < lo || value > hi)
+    throw SettingError(setting, std::string(what) + " must be between " + std::to_string(lo) + " and " +
+                                    std::to_string(hi) + ", got " + std::to_string(value));
+}
+
+bool open_angle(double degrees) {
+  return degrees > 0.0 && degrees < 90.0;
+}
+
+}  // namespace
+
+void SizeSettings::validate() const {
+  if (!positive(edge_length)) throw SettingError("edge_length", "the edge length must be a positive number");
+  if (!positive(max_error)) throw SettingError("max_error", "the maximum error must be a positive number");
+}
+
+void OctreeSettings::validate() const {
+  if (min_depth < 0 || max_depth > kOctreeDepthLimit || min_depth > max_depth)
+    throw SettingError(
+        min_depth < 0 || min_depth > max_depth ? "min_depth" : "max_depth",
+        "the depths must satisfy 0 <= min_depth <= max_depth <= " + std::to_string(kOctreeDepthLimit) +
+            ", got " + std::to_string(min_depth) + " and " + std::to_string(max_depth));
+  if (!(std::isfinite(max_cell_curvature) && max_cell_curvature >= 0.0))
+    throw SettingError("max_cell_curvature",
+                       "the largest cell curvature must be a finite number >= 0 (0: off)");
+  check_count("refinement_levels", "the refinement levels", refinement_levels, 0, kOctreeDepthLimit);
+}
+
+void PatchSettings::validate() const {
+  if (resolution != 0 && (resolution < 1 || resolution > kMaxPatchResolution))
+    throw SettingError("resolution", "the resolution must be 0 (automatic) or between 1 and " +
+                                         std::to_string(kMaxPatchResolution) + ", got " +
+                                         std::to_string(resolution));
+}
+
+void ProjectionSettings::validate() const {
+  if (!open_angle(max_ray_angle))
+    throw SettingError("max_ray_angle", "the acceptance angle must lie strictly between 0 and 90 degrees");
+  if (!open_angle(max_boundary_ray_angle))
+    throw SettingError("max_boundary_ray_angle",
+                       "the boundary acceptance angle must lie strictly between 0 and 90 degrees");
+  check_count("march_steps", "the march steps", march_steps, 4, 4096);
+}
+
+void MarchingCubesSettings::validate() const {
+  check_count("grid", "the marching cubes grid", grid, 1, 4096);
+  if (!(grid_offset >= 0.0 && grid_offset < 1.0))
+    throw SettingError("grid_offset", "the grid offset must be in [0, 1)");
+  check_count("fair_iterations", "the fairing iterations", fair_iterations, 0, 10000);
+}
+
+void CleanupSettings::validate() const {
+  if (remesh_iterations)
+    check_count("remesh_iterations", "the remesh iterations", *remesh_iterations, 0, 100);
+  check_count("valence_search", "the valence search (flips per chain)", valence_search, 0, kMaxValenceSearch);
+  check_count("curvature_sweeps", "the curvature sweeps", curvature_sweeps, 0, kMaxCurvatureSweeps);
+}
+
+void BudgetSettings::validate() const {
+  if (!(std::isfinite(time_limit) && time_limit >= 0.0))
+    throw SettingError("time_limit", "the time limit must be a number of seconds >= 0");
+}
+
+void BudgetSettings::check_cancel() const {
+  if (cancel && cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled", "cancel");
+}
+
+void BudgetSettings::check_vertices(std::size_t vertices) const {
+  if (max_vertices > 0 && vertices > max_vertices)
+    throw LimitError("the mesh would exceed the vertex budget of " + std::to_string(max_vertices),
+                     "max_vertices");
+}
+
+void Settings::validate() const {
+  SizeSettings::validate();
+  OctreeSettings::validate();
+  PatchSettings::validate();
+  ProjectionSettings::validate();
+  MarchingCubesSettings::validate();
+  CleanupSettings::validate();
+  BudgetSettings::validate();
+  if (box && !box->valid()) throw SettingError("box", "the box must be finite with lo < hi on every axis");
+}
+
+}  // namespace isopatch
