@@ -107,7 +107,7 @@ def check(spec, groups) -> list[tuple[str, str, str]]:
 
     out.append(("H nRMS <= CGAL's / 5", *_versus_cgal(groups, h_versus_cgal, lambda v: v[0] <= MAX_H_RATIO,
                                                       describe_h_ratio)))
-    out.append(("centroid distance <= CGAL's (chordal error; not a quality.md target)",
+    out.append(("centroid distance <= CGAL's (chordal error; not one of the quality targets)",
                 *_versus_cgal(groups, ratio("centroid_distance"), lambda v: v <= 1.0, lambda v: f"{v:.2f}× CGAL's")))
     speed = (lambda p, mp, c, mc: None if not (p.ms and c.ms) else
              (c.ms / c.vertices) / (p.ms / p.vertices))

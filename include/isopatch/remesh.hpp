@@ -36,18 +36,16 @@ namespace isopatch {
 // and RemeshSettings::curvature_sweeps as they bound CleanupSettings'.
 
 struct RemeshSettings {
-  /// Target edge length h (uniform sizes), or the largest size when max_error is set. Must be > 0.
-  double edge_length = 0.0;
-  /// When set (> 0): sizes from the analytic curvature so that the distance of triangle centroids from
-  /// f = 0 stays below this bound (curvature.hpp size_for_error), clamped to [min_edge_length, edge_length].
-  std::optional<double> max_error;
-  /// When set: a size of the caller's own at a point (> 0); the size is the smallest of this, the
-  /// curvature size (with max_error) and edge_length, and at least min_edge_length; graded like the
-  /// curvature sizes.
-  std::function<double(const Vec3&)> size;
-  /// The smallest size the curvature-adapted field may ask for (near singular points). Must be > 0
-  /// and <= edge_length when max_error is set.
-  double min_edge_length = 0.0;
+  /// The target sizes, the same description the projection mesher follows (stage_settings.hpp):
+  ///   sizes.largest: the target edge length h (uniform sizes), or the largest size when sizes vary;
+  ///     must be > 0;
+  ///   sizes.max_error (> 0): sizes from the analytic curvature so that the distance of triangle
+  ///     centroids from f = 0 stays below this bound (size_for_error), clamped to [smallest, largest];
+  ///   sizes.user: a size of the caller's own at a point (> 0); the size is the smallest of this, the
+  ///     curvature size and largest, and at least smallest; graded like the curvature sizes;
+  ///   sizes.smallest: the floor of varying sizes (near singular points); > 0 and <= largest when
+  ///     sizes vary.
+  TargetSizes sizes;
   /// Largest ratio between the sizes at the two ends of an edge, relative to the edge length:
   /// h(v) <= h(u) + grading * |u - v|. In (0, 1].
   double grading = 0.3;

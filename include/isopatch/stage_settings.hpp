@@ -41,6 +41,21 @@ inline double default_edge_length(const SizeSettings& s, const Box& box) {
   return s.edge_length.value_or(box.size().maxCoeff() / (s.max_error || s.size_field ? 16.0 : 64.0));
 }
 
+/// Target sizes resolved over a region: the one description of sizes that the projection mesher (cell
+/// sizes, segments per side) and the clean-up (split and collapse thresholds) both follow.
+struct TargetSizes {
+  double largest = 0.0;                     ///< the size where nothing asks for less (the edge length)
+  double smallest = 0.0;                    ///< the floor of a varying size (near singular points)
+  std::optional<double> max_error;          ///< curvature sizes for a chordal error bound
+  std::function<double(const Vec3&)> user;  ///< a caller's size field
+  /// Whether sizes vary over the surface (max_error or a size field).
+  bool varies() const { return max_error.has_value() || static_cast<bool>(user); }
+};
+
+/// The sizes `s` asks for over `box`: largest = default_edge_length(s, box); smallest = 1/2048 of the
+/// longest box side (at most largest); max_error and size_field as given.
+TargetSizes target_sizes(const SizeSettings& s, const Box& box);
+
 /// The deepest octree level a mesh may use.
 inline constexpr int kOctreeDepthLimit = 12;
 

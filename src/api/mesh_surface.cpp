@@ -42,13 +42,10 @@ RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings&
   r.curvature_sweeps = s.curvature_sweeps;
   r.box = box;
   r.cancel = s.cancel;
-  const SizeSpec sizes = size_spec(s, box);
-  r.edge_length = sizes.varies() ? sizes.largest : s.edge_length.value_or(median_edge_length(mesh));
-  if (sizes.varies()) {
-    r.max_error = sizes.max_error;
-    r.size = sizes.user;
-    r.min_edge_length = sizes.smallest;
-  }
+  // The projection mesher's sizes, shared; only where uniform sizes were not asked for by length does
+  // the clean-up follow the output's median edge instead of the default length.
+  r.sizes = target_sizes(s, box);
+  if (!r.sizes.varies() && !s.edge_length) r.sizes.largest = median_edge_length(mesh);
   return r;
 }
 

@@ -3,6 +3,7 @@
 #include <isopatch/error.hpp>
 #include <isopatch/settings.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -28,6 +29,15 @@ bool open_angle(double degrees) {
 void SizeSettings::validate() const {
   if (!positive(edge_length)) throw SettingError("edge_length", "the edge length must be a positive number");
   if (!positive(max_error)) throw SettingError("max_error", "the maximum error must be a positive number");
+}
+
+TargetSizes target_sizes(const SizeSettings& s, const Box& box) {
+  TargetSizes sizes;
+  sizes.largest = default_edge_length(s, box);
+  sizes.smallest = std::min(sizes.largest, box.size().maxCoeff() / 2048.0);
+  sizes.max_error = s.max_error;
+  sizes.user = s.size_field;
+  return sizes;
 }
 
 void OctreeSettings::validate() const {

@@ -1,4 +1,5 @@
-// Octree descent, leaf classification, shared crossings and loops (docs/algorithms.md 2.4-2.10).
+// The uniform octree builder: classification of the cells the shared descent (octree_descent.hpp)
+// yields, shared crossings and loops (docs/algorithms.md 2.4-2.10).
 //
 // Everything a neighbour must agree on is a function of shared lattice data: corner signs and face
 // centres come from the half-lattice cache, crossings are keyed by segment, loop links by the face

@@ -12,6 +12,7 @@
 
 #include <isopatch/geometry.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -37,6 +38,9 @@ struct CellCorner {
   Vec3 gradient = Vec3::Zero();  ///< grad f at position
 };
 
+/// No cell (CellFace::cells).
+inline constexpr std::uint32_t kNoCell = 0xffffffffu;
+
 /// A planar face of a cell (or the part of it that one neighbour shares) on which loop sides lie.
 struct CellFace {
   Vec3 normal = Vec3::UnitX();  ///< unit normal of the face's plane
@@ -44,6 +48,9 @@ struct CellFace {
   /// operations are then exact (a component set, not a projection with rounding).
   int axis = -1;
   Box region;  ///< bounds of the face: rays for side points stay inside it
+  /// The cells whose loops have a side on this face, ascending: two where the face is shared by
+  /// neighbours, one on the region's boundary; kNoCell where there is none.
+  std::array<std::uint32_t, 2> cells{kNoCell, kNoCell};
 };
 
 /// v without its component along the face normal.

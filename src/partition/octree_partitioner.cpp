@@ -17,6 +17,18 @@ namespace {
 constexpr double kGrazingDistance = 0.05;
 constexpr double kGrazingNormal = 0.9;
 
+/// Records that `cell` has a loop side on `face` (cells arrive in ascending order).
+void add_cell(CellFace& face, std::uint32_t cell) {
+  if (face.cells[0] == cell || face.cells[1] == cell) return;
+  if (face.cells[0] == kNoCell) {
+    face.cells[0] = cell;
+  } else if (face.cells[1] == kNoCell) {
+    face.cells[1] = cell;
+  } else {
+    throw Error(ErrorKind::Internal, "octree: a face with loop sides of three cells");
+  }
+}
+
 }  // namespace
 
 OctreeDepths plan_octree_depths(const Box& box, const OctreeDepthRequest& r) {
@@ -68,12 +80,15 @@ CellPartition cell_partition_of(const Partition& octree) {
     cell.size = octree.lattice.unit() * octree.lattice.step(leaf.depth);
     cell.level = leaf.depth;
     cell.reason = leaf.reason;
+    const auto index = static_cast<std::uint32_t>(p.cells.size());
     for (const Loop& loop : leaf.loops) {
       CellLoop l;
       l.corners = loop.corners;
-      for (const FaceId& id : loop.side_faces)
-        l.side_faces.push_back(
-            static_cast<std::uint32_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin()));
+      for (const FaceId& id : loop.side_faces) {
+        const auto f = static_cast<std::uint32_t>(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+        l.side_faces.push_back(f);
+        add_cell(p.faces[f], index);
+      }
       cell.loops.push_back(std::move(l));
     }
     p.cells.push_back(std::move(cell));

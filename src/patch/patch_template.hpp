@@ -2,8 +2,8 @@
 /// \file patch_template.hpp
 /// Template triangulations of the n-gon domain at resolution r (segments per side), the fixed
 /// connectivity that every n-sided patch of the projection mesher is sampled with (Sipos & Salvi,
-/// "Fast and robust meshing of implicit surfaces with the projection method", 2021, section 3; the
-/// topologies follow salvipeter/c0coons). Three layouts:
+/// "Creating good quality meshes from smooth implicit surfaces", WAIT 2021, section 2.2; the ring
+/// layouts follow the concentric-ring triangulation described there). Three layouts:
 ///   - n = 3: barycentric triangle grid,  V = (r+1)(r+2)/2,    T = r^2;
 ///   - n = 4: structured grid, one diagonal direction everywhere,  V = (r+1)^2,  T = 2 r^2;
 ///   - n >= 5: concentric rings around a centre vertex,  V = 1 + n r(r+1)/2,  T = n r^2.

@@ -14,7 +14,7 @@ constexpr double kMinCurvedCellEdges = 3.0;
 
 }  // namespace
 
-std::function<double(const Vec3&)> size_function(const Surface& surface, const SizeSpec& spec) {
+std::function<double(const Vec3&)> size_function(const Surface& surface, const TargetSizes& spec) {
   if (!spec.varies()) return [edge = spec.largest](const Vec3&) { return edge; };
   return [&surface, spec](const Vec3& p) { return target_size(surface, spec, p); };
 }

@@ -20,7 +20,7 @@ inline constexpr double kAutoSegments = 8.0;
 
 /// The target edge length at a point (target_size.hpp): constant unless max_error or a size field is
 /// set. `surface` must outlive the result.
-std::function<double(const Vec3&)> size_function(const Surface& surface, const SizeSpec& spec);
+std::function<double(const Vec3&)> size_function(const Surface& surface, const TargetSizes& spec);
 
 /// Cells shallower than `max_level` whose cell is longer than kAutoSegments times the smallest target
 /// size at their corners, ascending.

@@ -50,7 +50,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   octree.cancel = settings.cancel;
   OctreePartitioner partitioner(surface, box, octree);
   const CellMesherSettings stages{settings, settings, settings};
-  Mesh mesh = mesh_refining(surface, partitioner, settings, stages, size_spec(settings, box), stats);
+  Mesh mesh = mesh_refining(surface, partitioner, settings, stages, target_sizes(settings, box), stats);
   if (stats) stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return mesh;
 }

@@ -59,7 +59,7 @@ void record_doubts(const DoubtfulCells& doubtful, int max_level, MeshWarnings& w
 }  // namespace
 
 Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const OctreeSettings& octree,
-                   const CellMesherSettings& settings, const SizeSpec& sizes, MeshStats* stats) {
+                   const CellMesherSettings& settings, const TargetSizes& sizes, MeshStats* stats) {
   const BudgetSettings& budget = settings.budget;
   const int resolution = settings.patch.resolution;
   const Sampler f(surface);

@@ -25,6 +25,6 @@ namespace isopatch {
 /// \throw NoSurfaceError when no cell down to the finest level holds a sign change; LimitError on
 ///        cancel or beyond BudgetSettings::max_vertices; EvaluationError when f is not finite where needed.
 Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const OctreeSettings& octree,
-                   const CellMesherSettings& settings, const SizeSpec& sizes, MeshStats* stats);
+                   const CellMesherSettings& settings, const TargetSizes& sizes, MeshStats* stats);
 
 }  // namespace isopatch

@@ -92,7 +92,7 @@ class Remesher {
       stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
     }
     repair_until_settled();
-    if (settings_.max_error) stats_.error_bound_violations = enforce_error_bound();
+    if (settings_.sizes.max_error) stats_.error_bound_violations = enforce_error_bound();
     stats_.gradient_evaluations = f_.gradient_count();
     stats_.hessian_evaluations = sizes_.hessian_evaluations();
     return stats_;
@@ -152,7 +152,9 @@ class Remesher {
     return (mesh_.positions[a] - mesh_.positions[b]).norm();
   }
 
-  double collapse_factor() const { return settings_.max_error ? kErrorCollapseFactor : kCollapseFactor; }
+  double collapse_factor() const {
+    return settings_.sizes.max_error ? kErrorCollapseFactor : kCollapseFactor;
+  }
 
   bool try_split(std::uint32_t a, std::uint32_t b) {
     const auto e = mesh_.interior_edge(a, b);
@@ -432,7 +434,7 @@ class Remesher {
   /// partition cut a thin tip short, the splits there make triangles whose normals leave their vertices'
   /// and are refused (a needle 1:0.05:0.05 along the diagonal).
   std::size_t enforce_error_bound() {
-    const double eps = *settings_.max_error;
+    const double eps = *settings_.sizes.max_error;
     for (int round = 0;; ++round) {
       check_cancel();
       std::size_t beyond = 0;
@@ -469,23 +471,24 @@ class Remesher {
 };
 
 void check(const RemeshSettings& s) {
-  if (!(std::isfinite(s.edge_length) && s.edge_length > 0.0))
-    throw InputError("remesh: the edge length must be a positive number");
-  if (s.max_error && !(std::isfinite(*s.max_error) && *s.max_error > 0.0))
-    throw InputError("remesh: the maximum error must be a positive number");
-  if (s.max_error || s.size) {
-    if (!(s.min_edge_length > 0.0 && s.min_edge_length <= s.edge_length))
-      throw InputError("remesh: the smallest size must be positive and at most the edge length");
-  }
-  if (!(s.grading > 0.0 && s.grading <= 1.0)) throw InputError("remesh: grading must lie in (0, 1]");
+  const TargetSizes& sizes = s.sizes;
+  if (!(std::isfinite(sizes.largest) && sizes.largest > 0.0))
+    throw SettingError("sizes.largest", "remesh: the edge length must be a positive number");
+  if (sizes.max_error && !(std::isfinite(*sizes.max_error) && *sizes.max_error > 0.0))
+    throw SettingError("sizes.max_error", "remesh: the maximum error must be a positive number");
+  if (sizes.varies() && !(sizes.smallest > 0.0 && sizes.smallest <= sizes.largest))
+    throw SettingError("sizes.smallest",
+                       "remesh: the smallest size must be positive and at most the edge length");
+  if (!(s.grading > 0.0 && s.grading <= 1.0))
+    throw SettingError("grading", "remesh: grading must lie in (0, 1]");
   if (s.valence_search < 0 || s.valence_search > kMaxValenceSearch)
-    throw InputError("remesh: the valence search must be between 0 and " + std::to_string(kMaxValenceSearch) +
-                     " flips per chain");
+    throw SettingError("valence_search", "remesh: the valence search must be between 0 and " +
+                                             std::to_string(kMaxValenceSearch) + " flips per chain");
   if (s.curvature_sweeps < 0 || s.curvature_sweeps > kMaxCurvatureSweeps)
-    throw InputError("remesh: the curvature sweeps must be between 0 and " +
-                     std::to_string(kMaxCurvatureSweeps));
+    throw SettingError("curvature_sweeps", "remesh: the curvature sweeps must be between 0 and " +
+                                               std::to_string(kMaxCurvatureSweeps));
   if (s.iterations < 0 || s.iterations > 100)
-    throw InputError("remesh: iterations must be between 0 and 100");
+    throw SettingError("remesh_iterations", "remesh: iterations must be between 0 and 100");
 }
 
 }  // namespace

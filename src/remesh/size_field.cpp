@@ -10,18 +10,16 @@
 namespace isopatch {
 
 double SizeField::raw(const Vec3& p) {
-  if (!varies()) return settings_.edge_length;
-  if (settings_.max_error) ++hessians_;
-  return target_size(
-      surface_,
-      SizeSpec{settings_.edge_length, settings_.min_edge_length, settings_.max_error, settings_.size}, p);
+  if (!varies()) return settings_.sizes.largest;
+  if (settings_.sizes.max_error) ++hessians_;
+  return target_size(surface_, settings_.sizes, p);
 }
 
 void SizeField::update(const EditableMesh& mesh) {
   const std::size_t n = mesh.vertex_slots();
   raw_.resize(n, std::numeric_limits<double>::quiet_NaN());
   raw_at_.resize(n, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
-  graded_.assign(n, settings_.edge_length);
+  graded_.assign(n, settings_.sizes.largest);
   for (std::uint32_t v = 0; v < n; ++v) {
     if (!mesh.alive(v)) continue;
     if (std::isnan(raw_[v]) || raw_at_[v] != mesh.positions[v]) {

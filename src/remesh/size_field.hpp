@@ -17,7 +17,7 @@ class SizeField {
   SizeField(const Surface& surface, const RemeshSettings& settings)
       : surface_(surface), settings_(settings) {}
 
-  /// The ungraded size at p: edge_length, or size_for_error clamped to [min_edge_length, edge_length].
+  /// The ungraded size at p: sizes.largest, or the varying size clamped to [sizes.smallest, sizes.largest].
   double raw(const Vec3& p);
   /// Recomputes the graded sizes of every live vertex of `mesh` (raw sizes are cached per vertex slot
   /// and computed for new slots). Afterwards at(v) is defined for every live v.
@@ -27,7 +27,7 @@ class SizeField {
   double edge(std::uint32_t a, std::uint32_t b) const { return std::min(graded_[a], graded_[b]); }
   std::uint64_t hessian_evaluations() const { return hessians_; }
   /// Whether sizes vary over the surface (max_error or a size callback).
-  bool varies() const { return settings_.max_error.has_value() || static_cast<bool>(settings_.size); }
+  bool varies() const { return settings_.sizes.varies(); }
 
  private:
   const Surface& surface_;

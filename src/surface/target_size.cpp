@@ -9,16 +9,7 @@
 
 namespace isopatch {
 
-SizeSpec size_spec(const SizeSettings& s, const Box& box) {
-  SizeSpec spec;
-  spec.largest = default_edge_length(s, box);
-  spec.smallest = std::min(spec.largest, box.size().maxCoeff() / 2048.0);
-  spec.max_error = s.max_error;
-  spec.user = s.size_field;
-  return spec;
-}
-
-double target_size(const Surface& surface, const SizeSpec& spec, const Vec3& p) {
+double target_size(const Surface& surface, const TargetSizes& spec, const Vec3& p) {
   double h = spec.largest;
   if (spec.max_error)
     h = std::min(h, size_for_error(max_abs_principal_curvature(surface, p), *spec.max_error));

@@ -50,16 +50,16 @@ TEST(Remesh, RejectsInvalidSettings) {
   Mesh mesh = projection_only(*s, 0.2);
   RemeshSettings r;
   EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);  // no edge length
-  r.edge_length = 0.1;
+  r.sizes.largest = 0.1;
   r.iterations = -1;
   EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
   r.iterations = 2;
-  r.max_error = 0.0;
+  r.sizes.max_error = 0.0;
   EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
-  r.max_error = 1e-3;
-  r.min_edge_length = 0.0;
+  r.sizes.max_error = 1e-3;
+  r.sizes.smallest = 0.0;
   EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
-  r.max_error.reset();
+  r.sizes.max_error.reset();
   r.valence_search = -1;
   EXPECT_THROW(remesh_on_surface(mesh, *s, r), InputError);
   r.valence_search = 10001;
@@ -82,7 +82,7 @@ TEST(Remesh, ZeroIterationsLeaveTheMeshUnchanged) {
   Mesh mesh = projection_only(*s, 0.15);
   const Mesh before = mesh;
   RemeshSettings r;
-  r.edge_length = 0.15;
+  r.sizes.largest = 0.15;
   r.iterations = 0;
   remesh_on_surface(mesh, *s, r);
   EXPECT_EQ(mesh.positions, before.positions);
@@ -94,7 +94,7 @@ TEST(Remesh, KeepsTopologyAndVerticesOnTheSurfaceAndRemovesSmallAngles) {
   Mesh mesh = projection_only(*s, 0.08);
   const double before = test::min_angle_degrees(mesh);
   RemeshSettings r;
-  r.edge_length = 0.08;
+  r.sizes.largest = 0.08;
   r.box = s->box();
   const RemeshStats stats = remesh_on_surface(mesh, *s, r);
   const TopologyReport t = analyze_topology(mesh);
@@ -117,7 +117,7 @@ TEST(Remesh, SplitsToTheTargetSizeAndKeepsTheBoxBoundary) {
     ASSERT_GT(t.boundary_edges, 0u);
   }
   RemeshSettings r;
-  r.edge_length = 0.1;
+  r.sizes.largest = 0.1;
   r.box = plane->box();
   const RemeshStats stats = remesh_on_surface(mesh, *plane, r);
   EXPECT_GT(stats.splits, 0u);
