@@ -297,9 +297,9 @@ Analysis AdaptiveBuilder::analyse(const CellKey& key) {
     std::vector<SegmentKey> segments(m);
     int crossed = 0;
     for (std::size_t k = 0; k < m; ++k) {
-      segments[k] = segment_between(polygon.vertices[k], polygon.vertices[(k + 1) % m]);
+      segments[k] = segment_between(polygon.vertices[k], polygon.vertices[next(k, m)]);
       if (tested.insert(segments[k]).second && !segment_passes(segments[k], monotone)) edge_ok = false;
-      if (negative[k] != negative[(k + 1) % m]) ++crossed;
+      if (negative[k] != negative[next(k, m)]) ++crossed;
     }
     if (crossed == 0) continue;
     face_crossed[static_cast<std::size_t>(

@@ -18,15 +18,11 @@
 #include <span>
 #include <vector>
 
+#include "core/cyclic.hpp"
 #include "partition/partition_stats.hpp"
 #include "surface/sampler.hpp"
 
 namespace isopatch {
-
-/// The index after k on a cycle of n elements (n > 0): loop sides run from k to next(k, n).
-constexpr std::size_t next(std::size_t k, std::size_t n) {
-  return k + 1 == n ? 0 : k + 1;
-}
 
 /// A crossing of f = 0 with a cell edge: a patch corner.
 struct CellCorner {

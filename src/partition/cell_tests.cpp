@@ -2,6 +2,7 @@
 // reasons they imply a single disk when they hold everywhere are in docs/algorithms.md 2.9.5.
 #include "partition/cell_tests.hpp"
 
+#include "core/cyclic.hpp"
 #include "partition/sample_cache.hpp"
 
 #include <Eigen/Geometry>
@@ -58,7 +59,7 @@ Vec3 newell_normal(std::span<const Vec3> points) {
   Vec3 normal = Vec3::Zero();
   for (std::size_t k = 0; k < points.size(); ++k) {
     const Vec3 a = points[k] - centroid;
-    const Vec3 b = points[(k + 1) % points.size()] - centroid;
+    const Vec3 b = points[next(k, points.size())] - centroid;
     normal += a.cross(b);
   }
   return normal;

@@ -3,6 +3,8 @@
 
 #include <cstddef>
 
+#include "core/cyclic.hpp"
+
 namespace isopatch {
 
 namespace {
@@ -11,7 +13,7 @@ namespace {
 // a -> b when the vertex right after segment a is negative.
 FaceSide side(std::span<const bool> negative, int a, int b) {
   const auto m = negative.size();
-  const bool after_a = negative[(static_cast<std::size_t>(a) + 1) % m];
+  const bool after_a = negative[next(static_cast<std::size_t>(a), m)];
   return after_a ? FaceSide{a, b} : FaceSide{b, a};
 }
 
@@ -21,7 +23,7 @@ FaceLinks link_face(std::span<const bool> negative, bool centre_negative) {
   const std::size_t m = negative.size();
   std::vector<int> crossed;
   for (std::size_t k = 0; k < m; ++k)
-    if (negative[k] != negative[(k + 1) % m]) crossed.push_back(static_cast<int>(k));
+    if (negative[k] != negative[next(k, m)]) crossed.push_back(static_cast<int>(k));
   FaceLinks links;
   if (crossed.size() == 2) {
     links.sides.push_back(side(negative, crossed[0], crossed[1]));

@@ -9,6 +9,8 @@
 #include <string>
 #include <utility>
 
+#include "core/cyclic.hpp"
+
 namespace isopatch {
 namespace {
 
@@ -28,10 +30,10 @@ CoonsPatch::CoonsPatch(std::vector<PolylineCurve> curves)
   double longest = 0.0;
   for (const PolylineCurve& c : curves_) longest = std::max(longest, c.length());
   for (std::size_t k = 0; k < curves_.size(); ++k) {
-    const PolylineCurve& next = curves_[(k + 1) % curves_.size()];
-    if ((curves_[k].back() - next.front()).norm() > 1e-9 * longest)
+    const std::size_t k1 = next(k, curves_.size());
+    if ((curves_[k].back() - curves_[k1].front()).norm() > 1e-9 * longest)
       throw InputError("Coons patch: curve " + std::to_string(k) + " does not end where curve " +
-                       std::to_string((k + 1) % curves_.size()) + " starts");
+                       std::to_string(k1) + " starts");
   }
 }
 
