@@ -48,15 +48,19 @@ struct FairingSummary {
   std::size_t unconverged = 0;  ///< vertex projections that did not converge
 };
 
-/// The surface-bound clean-up (remesh.hpp).
-struct CleanupStats {
-  int iterations = 0;
+/// The surface-bound clean-up (remesh.hpp remesh_on_surface).
+struct RemeshStats {
+  int iterations = 0;  ///< rounds of split / collapse / flip / relax run
   std::size_t splits = 0;
   std::size_t collapses = 0;
   std::size_t flips = 0;
   std::size_t repairs = 0;          ///< small-angle triangles removed by the final pass
   std::size_t rejected_moves = 0;   ///< relaxation moves skipped (fold, projection failure, box)
   std::size_t exactness_moves = 0;  ///< vertex moves kept by the curvature sweeps
+  /// With max_error: triangles whose centroid is still farther than max_error from f = 0 at the end
+  /// (after the splits that enforce the bound).
+  std::size_t error_bound_violations = 0;
+  std::uint64_t gradient_evaluations = 0;
   std::uint64_t hessian_evaluations = 0;
 };
 
@@ -86,7 +90,7 @@ struct MeshStats {
   std::optional<ProjectionStats> projection;
   std::optional<MarchingCubesStats> marching_cubes;
   std::optional<FairingSummary> fairing;
-  std::optional<CleanupStats> cleanup;
+  std::optional<RemeshStats> cleanup;
   MeshWarnings warnings;
 };
 

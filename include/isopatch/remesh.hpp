@@ -21,6 +21,7 @@
 
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh.hpp>
+#include <isopatch/mesh_stats.hpp>
 #include <isopatch/stage_settings.hpp>
 #include <isopatch/surface.hpp>
 
@@ -64,19 +65,7 @@ struct RemeshSettings {
   const std::atomic<bool>* cancel = nullptr;
 };
 
-struct RemeshStats {
-  std::size_t splits = 0;
-  std::size_t collapses = 0;
-  std::size_t flips = 0;
-  std::size_t repairs = 0;          ///< small-angle triangles removed by the final pass
-  std::size_t rejected_moves = 0;   ///< relaxation moves skipped (fold, projection failure, box)
-  std::size_t exactness_moves = 0;  ///< vertex moves kept by the curvature sweeps
-  /// With max_error: triangles whose centroid is still farther than max_error from f = 0 at the end
-  /// (after the splits that enforce the bound).
-  std::size_t error_bound_violations = 0;
-  std::uint64_t gradient_evaluations = 0;
-  std::uint64_t hessian_evaluations = 0;
-};
+// RemeshStats, what remesh_on_surface() did, is in mesh_stats.hpp (it is also MeshStats::cleanup).
 
 /// Remeshes `mesh`, a mesh of `surface` (vertices on f = 0, triangles oriented along grad f), in place.
 /// Per-vertex attributes are carried over for surviving vertices; vertices created by splits take the

@@ -62,8 +62,7 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
   stats->gradient_evaluations += r.gradient_evaluations;
   stats->vertices = mesh.vertex_count();
   stats->triangles = mesh.triangle_count();
-  stats->cleanup = CleanupStats{iterations, r.splits,         r.collapses,       r.flips,
-                                r.repairs,  r.rejected_moves, r.exactness_moves, r.hessian_evaluations};
+  stats->cleanup = r;
   if (settings.max_error) stats->warnings.error_bound_violations = r.error_bound_violations;
 }
 

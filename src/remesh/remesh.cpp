@@ -507,6 +507,7 @@ RemeshStats remesh_on_surface(Mesh& mesh, const Surface& surface, const RemeshSe
   const double tolerance = 1e-13 * std::max(bounding_box(mesh).diagonal(), 1e-300);
   Remesher remesher(surface, editable, settings, tolerance);
   RemeshStats stats = remesher.run();
+  stats.iterations = settings.iterations;
   stats.gradient_evaluations += f.gradient_count();
   mesh = editable.to_mesh();
   return stats;
