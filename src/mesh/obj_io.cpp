@@ -52,15 +52,15 @@ void read_vertex(Tokens& tokens, Mesh& mesh, const std::string& name) {
     const std::string_view token = tokens.next_on_line('#');
     if (token.empty()) fail_at(name, tokens.line(), "vertex has fewer than 3 coordinates");
     double value = 0.0;
-    if (!parse_double(token, value)) fail_at(name, tokens.line(), "bad number " + quoted(token));
+    if (!parse_double(token, value)) fail_at(name, tokens.line(), "bad number " + io::quoted(token));
     if (!std::isfinite(value))
-      fail_at(name, tokens.line(), "vertex coordinate " + quoted(token) + " is not finite");
+      fail_at(name, tokens.line(), "vertex coordinate " + io::quoted(token) + " is not finite");
     p[axis] = value;
   }
   // Optional w or per-vertex colour: must be numbers, not kept.
   for (std::string_view token = tokens.next_on_line('#'); !token.empty(); token = tokens.next_on_line('#')) {
     double ignored = 0.0;
-    if (!parse_double(token, ignored)) fail_at(name, tokens.line(), "bad number " + quoted(token));
+    if (!parse_double(token, ignored)) fail_at(name, tokens.line(), "bad number " + io::quoted(token));
   }
   if (mesh.positions.size() >= std::numeric_limits<std::uint32_t>::max())
     fail_at(name, tokens.line(), "too many vertices");
@@ -72,7 +72,7 @@ void read_face(Tokens& tokens, Mesh& mesh, std::vector<std::int64_t>& corners, c
   corners.clear();
   for (std::string_view token = tokens.next_on_line('#'); !token.empty(); token = tokens.next_on_line('#')) {
     std::int64_t index = 0;
-    if (!parse_corner(token, index)) fail_at(name, tokens.line(), "bad face corner " + quoted(token));
+    if (!parse_corner(token, index)) fail_at(name, tokens.line(), "bad face corner " + io::quoted(token));
     if (index == 0) fail_at(name, tokens.line(), "face refers to vertex 0 (OBJ indices start at 1)");
     const std::int64_t resolved = index > 0 ? index - 1 : defined + index;
     if (resolved < 0 || resolved >= defined)
@@ -124,7 +124,7 @@ Mesh decode_obj(std::string_view bytes, const std::string& name) {
     } else if (keyword == "f") {
       read_face(tokens, mesh, corners, name);
     } else if (!is_statement(keyword)) {
-      fail_at(name, tokens.line(), "not an OBJ statement: " + quoted(keyword));
+      fail_at(name, tokens.line(), "not an OBJ statement: " + io::quoted(keyword));
     }
   } while (tokens.next_line());
   check_read_mesh(mesh, name);

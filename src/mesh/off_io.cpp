@@ -28,7 +28,7 @@ void skip_numbers(Tokens& tokens, const std::string& name) {
   for (std::string_view token = tokens.next_on_line(kComment); !token.empty();
        token = tokens.next_on_line(kComment)) {
     double ignored = 0.0;
-    if (!parse_double(token, ignored)) fail_at(name, tokens.line(), "bad number " + quoted(token));
+    if (!parse_double(token, ignored)) fail_at(name, tokens.line(), "bad number " + io::quoted(token));
   }
 }
 
@@ -36,7 +36,7 @@ std::uint64_t read_count(Tokens& tokens, std::string_view token, const char* wha
   std::uint64_t count = 0;
   if (token.empty()) fail_at(name, tokens.line(), std::string("missing ") + what + " count");
   if (!parse_uint(token, count))
-    fail_at(name, tokens.line(), std::string("bad ") + what + " count " + quoted(token));
+    fail_at(name, tokens.line(), std::string("bad ") + what + " count " + io::quoted(token));
   return count;
 }
 
@@ -98,10 +98,10 @@ Mesh decode_off(std::string_view bytes, const std::string& name) {
       if (axis > 0) token = tokens.next_on_line(kComment);
       if (token.empty())
         fail_at(name, tokens.line(), "vertex " + std::to_string(v) + " has fewer than 3 coordinates");
-      if (!parse_double(token, p[axis])) fail_at(name, tokens.line(), "bad number " + quoted(token));
+      if (!parse_double(token, p[axis])) fail_at(name, tokens.line(), "bad number " + io::quoted(token));
       if (!std::isfinite(p[axis]))
         fail_at(name, tokens.line(),
-                "vertex " + std::to_string(v) + " coordinate " + quoted(token) + " is not finite");
+                "vertex " + std::to_string(v) + " coordinate " + io::quoted(token) + " is not finite");
     }
     skip_numbers(tokens, name);
     tokens.next_line();
@@ -114,7 +114,7 @@ Mesh decode_off(std::string_view bytes, const std::string& name) {
     if (!seek_content(tokens, token))
       fail(name, "file ends after " + std::to_string(f) + " of " + std::to_string(face_count) + " faces");
     std::uint64_t n = 0;
-    if (!parse_uint(token, n)) fail_at(name, tokens.line(), "bad face size " + quoted(token));
+    if (!parse_uint(token, n)) fail_at(name, tokens.line(), "bad face size " + io::quoted(token));
     if (n < 3 || n > kMaxPolygon)
       fail_at(name, tokens.line(), "face " + std::to_string(f) + " has " + std::to_string(n) + " vertices");
     corners.clear();
@@ -124,7 +124,7 @@ Mesh decode_off(std::string_view bytes, const std::string& name) {
       if (token.empty())
         fail_at(name, tokens.line(),
                 "face " + std::to_string(f) + " has fewer than " + std::to_string(n) + " indices");
-      if (!parse_int(token, index)) fail_at(name, tokens.line(), "bad vertex index " + quoted(token));
+      if (!parse_int(token, index)) fail_at(name, tokens.line(), "bad vertex index " + io::quoted(token));
       corners.push_back(index);
     }
     skip_numbers(tokens, name);
@@ -133,7 +133,7 @@ Mesh decode_off(std::string_view bytes, const std::string& name) {
     tokens.next_line();
   }
   if (seek_content(tokens, token))
-    fail_at(name, tokens.line(), "unexpected data after the last face: " + quoted(token));
+    fail_at(name, tokens.line(), "unexpected data after the last face: " + io::quoted(token));
   check_read_mesh(mesh, name);
   return mesh;
 }

@@ -59,7 +59,7 @@ class HeaderParser {
       } else if (keyword == "property") {
         read_property();
       } else {
-        error("unknown header keyword " + quoted(keyword));
+        error("unknown header keyword " + io::quoted(keyword));
       }
     }
     if (!has_format) fail(name_, "header has no format line");
@@ -74,7 +74,7 @@ class HeaderParser {
 
   void end_of_line() {
     if (const std::string_view extra = tokens_.next_on_line(); !extra.empty())
-      error("unexpected " + quoted(extra) + " at the end of a header line");
+      error("unexpected " + io::quoted(extra) + " at the end of a header line");
   }
 
   std::string_view word(const char* what) {
@@ -86,7 +86,7 @@ class HeaderParser {
   PlyType type(const char* what) {
     const std::string_view token = word(what);
     PlyType t{};
-    if (!type_from_name(token, t)) error("unknown PLY type " + quoted(token));
+    if (!type_from_name(token, t)) error("unknown PLY type " + io::quoted(token));
     return t;
   }
 
@@ -99,10 +99,10 @@ class HeaderParser {
     } else if (encoding == "binary_big_endian") {
       header_.encoding = PlyEncoding::BinaryBigEndian;
     } else {
-      error("unknown PLY encoding " + quoted(encoding));
+      error("unknown PLY encoding " + io::quoted(encoding));
     }
     if (const std::string_view version = word("version"); version != "1.0")
-      error("unsupported PLY version " + quoted(version));
+      error("unsupported PLY version " + io::quoted(version));
     end_of_line();
   }
 
@@ -110,7 +110,7 @@ class HeaderParser {
     PlyElement element;
     element.name = std::string(word("element name"));
     const std::string_view count = word("element count");
-    if (!parse_uint(count, element.count)) error("bad element count " + quoted(count));
+    if (!parse_uint(count, element.count)) error("bad element count " + io::quoted(count));
     end_of_line();
     for (const PlyElement& e : header_.elements)
       if (e.name == element.name) error("element '" + e.name + "' is declared twice");
@@ -127,7 +127,7 @@ class HeaderParser {
       if (!ply_type_is_integer(property.count_type)) error("list count type must be an integer type");
       property.type = type("list item type");
     } else if (!type_from_name(first, property.type)) {
-      error("unknown PLY type " + quoted(first));
+      error("unknown PLY type " + io::quoted(first));
     }
     property.name = std::string(word("property name"));
     end_of_line();

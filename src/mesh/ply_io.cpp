@@ -88,16 +88,16 @@ class AsciiSource {
     if (ply_type_is_integer(type)) {
       std::int64_t value = 0;
       if (!parse_int(token, value))
-        place_.fail("has a bad integer " + quoted(token) + " on line " + std::to_string(tokens_.line()));
+        place_.fail("has a bad integer " + io::quoted(token) + " on line " + std::to_string(tokens_.line()));
       const auto v = static_cast<double>(value);
       if (v < ply_type_min(type) || v > ply_type_max(type))
-        place_.fail("has " + quoted(token) + " on line " + std::to_string(tokens_.line()) +
+        place_.fail("has " + io::quoted(token) + " on line " + std::to_string(tokens_.line()) +
                     ", out of range for its type");
       return v;
     }
     double value = 0.0;
     if (!parse_double(token, value))
-      place_.fail("has a bad number " + quoted(token) + " on line " + std::to_string(tokens_.line()));
+      place_.fail("has a bad number " + io::quoted(token) + " on line " + std::to_string(tokens_.line()));
     return type == PlyType::Float32 ? static_cast<double>(static_cast<float>(value)) : value;
   }
 
@@ -139,7 +139,7 @@ VertexLayout vertex_layout(const PlyElement& vertex, Mesh& mesh, const std::stri
     try {
       mesh.set_attribute(property.name, std::vector<float>(mesh.positions.size()));
     } catch (const InputError&) {
-      fail(name, "vertex property " + quoted(property.name) + " is not a valid attribute name");
+      fail(name, "vertex property " + io::quoted(property.name) + " is not a valid attribute name");
     }
   }
   return layout;

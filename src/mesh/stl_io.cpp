@@ -84,7 +84,7 @@ void expect(Tokens& tokens, std::string_view word, const std::string& name) {
   const std::string_view token = tokens.next();
   if (token != word) {
     if (token.empty()) fail(name, "file ends where '" + std::string(word) + "' was expected");
-    fail_at(name, tokens.line(), "expected '" + std::string(word) + "' but found " + quoted(token));
+    fail_at(name, tokens.line(), "expected '" + std::string(word) + "' but found " + io::quoted(token));
   }
 }
 
@@ -92,7 +92,7 @@ float read_float(Tokens& tokens, const std::string& name) {
   const std::string_view token = tokens.next();
   float value = 0.0f;
   if (token.empty()) fail(name, "file ends inside a facet");
-  if (!parse_float(token, value)) fail_at(name, tokens.line(), "bad number " + quoted(token));
+  if (!parse_float(token, value)) fail_at(name, tokens.line(), "bad number " + io::quoted(token));
   return value;
 }
 
@@ -113,7 +113,7 @@ Mesh decode_ascii(std::string_view bytes, const std::string& name) {
       tokens.next_line();
       continue;
     }
-    if (token != "facet") fail_at(name, tokens.line(), "expected 'facet' but found " + quoted(token));
+    if (token != "facet") fail_at(name, tokens.line(), "expected 'facet' but found " + io::quoted(token));
     expect(tokens, "normal", name);
     for (int axis = 0; axis < 3; ++axis) read_float(tokens, name);
     expect(tokens, "outer", name);

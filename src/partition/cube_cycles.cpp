@@ -10,7 +10,7 @@ namespace isopatch {
 
 namespace {
 
-bool is_negative(std::uint8_t negative, int corner) {
+bool corner_bit(std::uint8_t negative, int corner) {
   return ((negative >> corner) & 1u) != 0;
 }
 
@@ -33,15 +33,15 @@ void add_side(std::array<Link, 12>& links, int face, int a, int b, bool first_ne
 
 bool face_ambiguous(std::uint8_t negative, int face) {
   const auto& c = cube::kFace[face];
-  const bool n0 = is_negative(negative, c[0]);
-  const bool n1 = is_negative(negative, c[1]);
-  return n0 == is_negative(negative, c[2]) && n1 == is_negative(negative, c[3]) && n0 != n1;
+  const bool n0 = corner_bit(negative, c[0]);
+  const bool n1 = corner_bit(negative, c[1]);
+  return n0 == corner_bit(negative, c[2]) && n1 == corner_bit(negative, c[3]) && n0 != n1;
 }
 
 std::uint16_t crossed_edges(std::uint8_t negative) {
   std::uint16_t mask = 0;
   for (int e = 0; e < 12; ++e)
-    if (is_negative(negative, cube::kEdge[e][0]) != is_negative(negative, cube::kEdge[e][1]))
+    if (corner_bit(negative, cube::kEdge[e][0]) != corner_bit(negative, cube::kEdge[e][1]))
       mask = static_cast<std::uint16_t>(mask | (1u << e));
   return mask;
 }
@@ -52,9 +52,9 @@ std::vector<CubeCycle> cube_cycles(std::uint8_t negative, std::uint8_t centre_ne
     const auto& corner = cube::kFace[f];
     const auto& edge = cube::kFaceEdge[f];
     // Edge k of the face runs from corner k to corner k + 1; corner k + 1 comes right after it.
-    auto after = [&](int k) { return is_negative(negative, corner[(k + 1) % 4]); };
+    auto after = [&](int k) { return corner_bit(negative, corner[(k + 1) % 4]); };
     if (face_ambiguous(negative, f)) {
-      const bool centre_like_0 = is_negative(centre_negative, f) == is_negative(negative, corner[0]);
+      const bool centre_like_0 = corner_bit(centre_negative, f) == corner_bit(negative, corner[0]);
       // Joined with corners 0 and 2: cut off corners 1 and 3 (sides 0-1 and 2-3); else cut off 0 and 2.
       const int k0 = centre_like_0 ? 0 : 3;
       for (int k : {k0, (k0 + 2) % 4}) add_side(links, f, edge[k], edge[(k + 1) % 4], after(k));
@@ -63,7 +63,7 @@ std::vector<CubeCycle> cube_cycles(std::uint8_t negative, std::uint8_t centre_ne
     std::array<int, 2> crossed{};
     int count = 0;
     for (int k = 0; k < 4; ++k)
-      if (is_negative(negative, corner[k]) != after(k)) crossed[static_cast<std::size_t>(count++)] = k;
+      if (corner_bit(negative, corner[k]) != after(k)) crossed[static_cast<std::size_t>(count++)] = k;
     if (count == 0) continue;
     assert(count == 2);
     // Corners after edge crossed[0] up to edge crossed[1] all share the sign of the first of them.
