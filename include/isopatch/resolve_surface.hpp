@@ -34,9 +34,8 @@ SurfacePtr catalogue_surface(std::string_view name, const std::map<std::string, 
 ///    formula when it is one on its own (x, y, z, pi, e), else an UnknownSurfaceError suggesting the
 ///    closest name (a bare identifier is never a useful surface);
 ///  - anything else: a formula.
-/// A formula needs `box` (else InputError "a formula needs a box", setting "box"); a catalogue surface uses its
-/// own box unless `box` is given.
-/// \throw UnknownSurfaceError, ParseError, IoError, InputError as above
+/// A formula needs `box` (else InputError "a formula needs a box", setting "box"); a catalogue surface uses
+/// its own box unless `box` is given. \throw UnknownSurfaceError, ParseError, IoError, InputError as above
 SurfacePtr resolve_surface(const std::string& spec, const std::optional<Box>& box,
                            const std::map<std::string, double>& params = {});
 
