@@ -33,14 +33,13 @@ int exit_code(ErrorKind kind) {
 
 std::string flag_for_setting(const std::string& setting) {
   // Settings fields whose flag is not their name with dashes.
-  static constexpr std::array<std::pair<std::string_view, std::string_view>, 5> kRenamed{{
+  // (Fields no flag sets, such as max_boundary_ray_angle, march_steps or size_field, are in neither.)
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kRenamed{{
       {"params", "--param"},
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
-      {"max_boundary_ray_angle", ""},
-      {"march_steps", ""},
   }};
-  static constexpr std::array<std::string_view, 22> kSameName{"box",
+  static constexpr std::array<std::string_view, 20> kSameName{"box",
                                                               "method",
                                                               "edge_length",
                                                               "max_error",
@@ -59,9 +58,7 @@ std::string flag_for_setting(const std::string& setting) {
                                                               "curvature_sweeps",
                                                               "max_evaluations",
                                                               "time_limit",
-                                                              "max_vertices",
-                                                              "surface",
-                                                              "output"};
+                                                              "max_vertices"};
   for (const auto& [name, flag] : kRenamed)
     if (setting == name) return std::string(flag);
   for (const std::string_view name : kSameName)

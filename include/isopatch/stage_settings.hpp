@@ -41,6 +41,10 @@ inline double default_edge_length(const SizeSettings& s, const Box& box) {
   return s.edge_length.value_or(box.size().maxCoeff() / (s.max_error || s.size_field ? 16.0 : 64.0));
 }
 
+/// `box` itself when it is finite with lo < hi on every axis (the region a mesher may mesh).
+/// \throw SettingError naming "box" otherwise.
+const Box& valid_box(const Box& box);
+
 /// Target sizes resolved over a region: the one description of sizes that the projection mesher (cell
 /// sizes, segments per side) and the clean-up (split and collapse thresholds) both follow.
 struct TargetSizes {

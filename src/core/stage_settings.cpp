@@ -31,6 +31,11 @@ void SizeSettings::validate() const {
   if (!positive(max_error)) throw SettingError("max_error", "the maximum error must be a positive number");
 }
 
+const Box& valid_box(const Box& box) {
+  if (!box.valid()) throw SettingError("box", "the box must be finite with lo < hi on every axis");
+  return box;
+}
+
 TargetSizes target_sizes(const SizeSettings& s, const Box& box) {
   TargetSizes sizes;
   sizes.largest = default_edge_length(s, box);
@@ -105,7 +110,7 @@ void Settings::validate() const {
   MarchingCubesSettings::validate();
   CleanupSettings::validate();
   BudgetSettings::validate();
-  if (box && !box->valid()) throw SettingError("box", "the box must be finite with lo < hi on every axis");
+  if (box) valid_box(*box);
 }
 
 }  // namespace isopatch

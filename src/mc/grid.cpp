@@ -31,8 +31,7 @@ std::vector<double> axis_planes(double lo, double hi, double cells, double sigma
 }  // namespace
 
 McGrid marching_cubes_grid(const Box& box, const MarchingCubesSettings& settings) {
-  if (!box.valid())
-    throw SettingError("box", "marching cubes: the box must be finite with lo < hi on every axis");
+  valid_box(box);
   settings.validate();
 
   McGrid grid;

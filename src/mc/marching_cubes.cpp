@@ -157,12 +157,9 @@ class SlabMesher {
 
 Mesh marching_cubes(const Surface& surface, const Settings& settings, MeshStats* stats) {
   const auto start = std::chrono::steady_clock::now();
-  settings.MarchingCubesSettings::validate();
   settings.BudgetSettings::validate();
-  if (settings.box && !settings.box->valid())
-    throw SettingError("box", "the box must be finite with lo < hi on every axis");
-  const Box box = settings.box ? *settings.box : surface.box();
-  const McGrid grid = marching_cubes_grid(box, settings);
+  const Box box = settings.box.value_or(surface.box());
+  const McGrid grid = marching_cubes_grid(box, settings);  // checks the box and the grid settings
   SlabMesher mesher(surface, settings, settings, grid);
   Mesh mesh = mesher.run();
   if (mesh.triangles.empty())

@@ -41,8 +41,7 @@ Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats
   settings.PatchSettings::validate();
   settings.ProjectionSettings::validate();
   settings.BudgetSettings::validate();
-  const Box box = settings.box.value_or(surface.box());
-  if (!box.valid()) throw SettingError("box", "the box must be finite with lo < hi on every axis");
+  const Box box = valid_box(settings.box.value_or(surface.box()));
   const OctreeDepths depths = octree_depths(settings, settings, settings, box);
   PartitionSettings octree;
   octree.surface_depth = depths.start;
