@@ -39,7 +39,7 @@ std::string flag_for_setting(const std::string& setting) {
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
   }};
-  static constexpr std::array<std::string_view, 20> kSameName{"box",
+  static constexpr std::array<std::string_view, 22> kSameName{"box",
                                                               "method",
                                                               "edge_length",
                                                               "max_error",
@@ -58,6 +58,8 @@ std::string flag_for_setting(const std::string& setting) {
                                                               "curvature_sweeps",
                                                               "max_evaluations",
                                                               "time_limit",
+                                                              "threads",
+                                                              "quality",
                                                               "max_vertices"};
   for (const auto& [name, flag] : kRenamed)
     if (setting == name) return std::string(flag);

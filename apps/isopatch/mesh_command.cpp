@@ -51,6 +51,8 @@ struct MeshOptions {
   std::uint64_t max_evaluations = 0;
   double time_limit = 0.0;
   std::optional<double> max_error;
+  std::string quality = "default";
+  int threads = 0;
 };
 
 int run_mesh(const MeshOptions& o) {
@@ -80,6 +82,8 @@ int run_mesh(const MeshOptions& o) {
   settings.max_evaluations = o.max_evaluations;
   settings.time_limit = o.time_limit;
   settings.max_error = o.max_error;
+  settings.quality = parse_quality(o.quality);
+  settings.threads = o.threads;
   if (o.coordinates == "wachspress")
     settings.coordinates = Settings::Coordinates::Wachspress;
   else if (o.coordinates == "mean-value")
@@ -171,6 +175,13 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--max-error", o->max_error,
                   "Curvature-adapted sizes: triangle centroids stay within this distance of f = 0 "
                   "(edges at most --edge-length)");
+  cmd->add_option("--quality", o->quality,
+                  "preview (the paper's method with a local repair: fastest, valence 6 >= 90%, angles >= "
+                  "20 degrees) | default | fine (lowest curvature error)")
+      ->capture_default_str();
+  cmd->add_option("--threads", o->threads,
+                  "Worker threads (0: every core); the mesh is the same bytes for any count")
+      ->capture_default_str();
   cmd->add_option("--max-evaluations", o->max_evaluations,
                   "Stop with an error after this many evaluations of f (0: none)");
   cmd->add_option("--time-limit", o->time_limit, "Stop with an error after this many seconds (0: none)");

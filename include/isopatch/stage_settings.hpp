@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 
 namespace isopatch {
 
@@ -155,7 +156,22 @@ inline constexpr int kMaxValenceSearch = 10000;
 inline constexpr int kMaxCurvatureSweeps = 1000;
 
 /// The whole-surface clean-up (remesh.hpp).
+/// Presets of speed against quality (Settings::quality; CLI --quality preview|default|fine).
+enum class Quality {
+  /// The paper's quick preview: the projection mesh with only a local repair of what its seams and
+  /// corners leave (small angles, irregular vertices); as fast as possible with valence 6 >= 90% and
+  /// smallest angle >= 20 degrees.
+  Preview,
+  /// The full clean-up (remesh_iterations, valence_search, curvature_sweeps as set).
+  Default,
+  /// Default, then more curvature sweeps and relaxation: the lowest curvature error at a vertex count.
+  Fine,
+};
+
 struct CleanupSettings {
+  /// The preset; Default leaves remesh_iterations, valence_search and curvature_sweeps in charge, the
+  /// other two override them (docs/performance.md).
+  Quality quality = Quality::Default;
   /// Rounds of surface-bound remeshing (split, collapse, flip, relax, project) applied to the output,
   /// 0..100. Empty (default): 6 for projection, 0 for marching cubes. 0 gives the paper's method alone.
   std::optional<int> remesh_iterations;
@@ -170,6 +186,14 @@ struct CleanupSettings {
   /// \throw SettingError for a count out of range.
   void validate() const;
 };
+
+/// The most worker threads a run may ask for (BudgetSettings::threads).
+inline constexpr int kMaxThreads = 1024;
+
+/// The quality preset named "preview", "default" or "fine". \throw SettingError("quality") otherwise.
+Quality parse_quality(const std::string& name);
+/// "preview", "default" or "fine".
+const char* quality_name(Quality quality);
 
 /// Progress of a long run, reported through BudgetSettings::progress.
 struct Progress {
@@ -191,8 +215,10 @@ struct BudgetSettings {
   std::function<void(const Progress&)> progress;
   /// When set and true, the mesher stops with LimitError("cancelled") at the next check.
   const std::atomic<bool>* cancel = nullptr;
+  /// Worker threads, 1..kMaxThreads; 0 (default): every core. The output is the same bytes for any count.
+  int threads = 0;
 
-  /// \throw SettingError for a negative or non-finite time limit.
+  /// \throw SettingError for a negative or non-finite time limit, or threads out of range.
   void validate() const;
   /// \throw LimitError("cancelled", "cancel") when cancel is set and true.
   void check_cancel() const;

@@ -90,6 +90,7 @@ void CleanupSettings::validate() const {
 void BudgetSettings::validate() const {
   if (!(std::isfinite(time_limit) && time_limit >= 0.0))
     throw SettingError("time_limit", "the time limit must be a number of seconds >= 0");
+  check_count("threads", "the thread count (0: every core)", threads, 0, kMaxThreads);
 }
 
 void BudgetSettings::check_cancel() const {
@@ -111,6 +112,25 @@ void Settings::validate() const {
   CleanupSettings::validate();
   BudgetSettings::validate();
   if (box) valid_box(*box);
+}
+
+Quality parse_quality(const std::string& name) {
+  if (name == "preview") return Quality::Preview;
+  if (name == "default") return Quality::Default;
+  if (name == "fine") return Quality::Fine;
+  throw SettingError("quality", "unknown quality '" + name + "' (want preview, default or fine)");
+}
+
+const char* quality_name(Quality quality) {
+  switch (quality) {
+    case Quality::Preview:
+      return "preview";
+    case Quality::Default:
+      return "default";
+    case Quality::Fine:
+      return "fine";
+  }
+  return "?";
 }
 
 }  // namespace isopatch
