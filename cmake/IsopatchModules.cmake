@@ -64,7 +64,7 @@ function(isopatch_module name)
 
   list(TRANSFORM ARG_PUBLIC PREPEND isopatch_)
   list(TRANSFORM ARG_PRIVATE PREPEND isopatch_)
-  target_link_libraries(${target} PUBLIC ${ARG_PUBLIC} Eigen3::Eigen Threads::Threads PRIVATE ${ARG_PRIVATE})
+  target_link_libraries(${target} PUBLIC ${ARG_PUBLIC} Eigen3::Eigen Threads::Threads TBB::tbb PRIVATE ${ARG_PRIVATE})
   set_property(GLOBAL APPEND PROPERTY ISOPATCH_MODULES ${name})
   set_target_properties(${target} PROPERTIES ISOPATCH_HEADERS "${ARG_HEADERS}")
 endfunction()

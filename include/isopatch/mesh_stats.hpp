@@ -11,8 +11,42 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace isopatch {
+
+/// Wall time of each stage of a run, by stable names in the order the stages first ran; a stage that
+/// runs several times (a refinement round, a clean-up round) adds up. Names: "partition", "sides",
+/// "patches", "checks", "defects" (the projection mesher), "marching_cubes", "fairing", and "cleanup_<pass>"
+/// ("cleanup_setup", "cleanup_split", "cleanup_collapse", "cleanup_flip", "cleanup_relax",
+/// "cleanup_repair", "cleanup_valence_search", "cleanup_curvature", "cleanup_error_bound",
+/// "cleanup_local" for the preview's local repair).
+struct StageTimes {
+  std::vector<std::pair<std::string, double>> seconds;
+  /// Adds `s` seconds to `stage` (appended when new).
+  void add(std::string_view stage, double s);
+  /// Adds every stage of `other`.
+  void merge(const StageTimes& other);
+  /// The seconds of `stage`, 0 when it did not run.
+  double of(std::string_view stage) const;
+};
+
+/// Where the projection mesh (before any clean-up) is imperfect, by what made the vertex: patch corners
+/// (edge crossings of the partition), the seams between patches (side vertices), patch interiors and
+/// centres, and the fans that close cells without a patch. A triangle counts for the most
+/// seam-like of its vertices (fan > corner > seam > interior). Filled when vertex roles were kept.
+struct RawDefects {
+  /// Indices: 0 corner, 1 seam, 2 interior (centre included), 3 fan.
+  static constexpr int kKinds = 4;
+  std::size_t vertices[kKinds] = {};
+  std::size_t irregular_vertices[kKinds] = {};  ///< interior vertices of valence other than 6
+  std::size_t triangles[kKinds] = {};
+  std::size_t triangles_under_20[kKinds] = {};  ///< smallest angle below 20 degrees
+  std::size_t triangles_under_10[kKinds] = {};
+  std::size_t short_edges = 0;  ///< edges shorter than a fifth of the target size
+  static constexpr const char* kNames[kKinds] = {"corner", "seam", "interior", "fan"};
+};
 
 /// The projection mesher (projection.hpp).
 struct ProjectionStats {
@@ -34,6 +68,7 @@ struct ProjectionStats {
   std::size_t flat_corner_cells = 0;            ///< cells with a corner inside one of their faces
   std::map<int, std::size_t> cells_by_depth;    ///< surface cells of the final partition by depth
   bool coons_base = false;                      ///< the multi-sided Coons base was used
+  std::optional<RawDefects> defects;            ///< of the mesh before the clean-up (vertex roles kept)
 };
 
 /// Marching cubes (marching_cubes.hpp).
@@ -62,6 +97,7 @@ struct RemeshStats {
   std::size_t error_bound_violations = 0;
   std::uint64_t gradient_evaluations = 0;
   std::uint64_t hessian_evaluations = 0;
+  StageTimes times;  ///< per pass, "cleanup_<pass>" (StageTimes)
 };
 
 /// What the mesh written may get wrong, for warnings.
@@ -83,6 +119,7 @@ struct MeshWarnings {
 
 struct MeshStats {
   double seconds = 0.0;
+  int threads = 1;                         ///< worker threads the run used
   std::uint64_t value_evaluations = 0;     ///< evaluations of f alone
   std::uint64_t gradient_evaluations = 0;  ///< evaluations of f with its gradient
   std::size_t vertices = 0;
@@ -92,12 +129,14 @@ struct MeshStats {
   std::optional<FairingSummary> fairing;
   std::optional<RemeshStats> cleanup;
   MeshWarnings warnings;
+  StageTimes times;  ///< wall time per stage
 };
 
 /// Calls `visit(stage, name, value)` for every number of `stats` whose stage ran, in a fixed order:
-/// stage "mesh" (seconds, evaluations, vertices, triangles), then "projection", "marching_cubes",
-/// "fairing", "cleanup", "warnings". Names are stable (scripts read them): per-count families are
-/// spelled "patches_N", "leaves_depth_N", "doubtful_REASON".
+/// stage "mesh" (seconds, threads, evaluations, evaluations per output vertex, vertices, triangles),
+/// then "seconds" (StageTimes), "projection" (with "defect_<kind>_<what>" from RawDefects),
+/// "marching_cubes", "fairing", "cleanup", "warnings". Names are stable (scripts read them): per-count
+/// families are spelled "patches_N", "leaves_depth_N", "doubtful_REASON".
 void visit_stats(
     const MeshStats& stats,
     const std::function<void(std::string_view stage, std::string_view name, double value)>& visit);

@@ -4,11 +4,14 @@
 #include <isopatch/isopatch.hpp>
 #include <isopatch/remesh.hpp>
 
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
+
 #include "api/budgeted_surface.hpp"
 #include "surface/singular_level_set.hpp"
 #include "surface/target_size.hpp"
@@ -40,6 +43,19 @@ RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings&
   r.iterations = iterations;
   r.valence_search = s.valence_search;
   r.curvature_sweeps = s.curvature_sweeps;
+  switch (s.quality) {
+    case Quality::Preview:
+      r.local_only = true;
+      break;
+    case Quality::Default:
+      break;
+    case Quality::Fine:
+      // More of what lowers the curvature error (docs/performance.md).
+      r.curvature_sweeps = std::min(kMaxCurvatureSweeps, 2 * s.curvature_sweeps);
+      r.final_relaxation_rounds = 12;
+      r.valence_search = std::min(kMaxValenceSearch, 2 * s.valence_search);
+      break;
+  }
   r.box = box;
   r.cancel = s.cancel;
   // The projection mesher's sizes, shared; only where uniform sizes were not asked for by length does
@@ -60,6 +76,7 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
   if (!stats) return;
   stats->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   stats->gradient_evaluations += r.gradient_evaluations;
+  stats->times.merge(r.times);
   stats->vertices = mesh.vertex_count();
   stats->triangles = mesh.triangle_count();
   stats->cleanup = r;
@@ -103,9 +120,16 @@ Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats
 
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
   settings.validate();
-  if (settings.max_evaluations == 0 && settings.time_limit == 0.0) return dispatch(surface, settings, stats);
-  const BudgetedSurface budgeted(surface, settings.max_evaluations, settings.time_limit);
-  return dispatch(budgeted, settings, stats);
+  // Every parallel loop of the pipeline runs in this arena: settings.threads workers, or every core.
+  const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
+  if (stats) stats->threads = threads;
+  tbb::task_arena arena(threads);
+  return arena.execute([&] {
+    if (settings.max_evaluations == 0 && settings.time_limit == 0.0)
+      return dispatch(surface, settings, stats);
+    const BudgetedSurface budgeted(surface, settings.max_evaluations, settings.time_limit);
+    return dispatch(budgeted, settings, stats);
+  });
 }
 
 Method parse_method(const std::string& name) {

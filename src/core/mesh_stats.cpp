@@ -5,6 +5,25 @@
 
 namespace isopatch {
 
+void StageTimes::add(std::string_view stage, double s) {
+  for (auto& [name, total] : seconds)
+    if (name == stage) {
+      total += s;
+      return;
+    }
+  seconds.emplace_back(std::string(stage), s);
+}
+
+void StageTimes::merge(const StageTimes& other) {
+  for (const auto& [name, s] : other.seconds) add(name, s);
+}
+
+double StageTimes::of(std::string_view stage) const {
+  for (const auto& [name, total] : seconds)
+    if (name == stage) return total;
+  return 0.0;
+}
+
 void visit_stats(
     const MeshStats& stats,
     const std::function<void(std::string_view stage, std::string_view name, double value)>& visit) {
@@ -12,8 +31,13 @@ void visit_stats(
   visit("mesh", "seconds", stats.seconds);
   visit("mesh", "value_evaluations", count(stats.value_evaluations));
   visit("mesh", "gradient_evaluations", count(stats.gradient_evaluations));
+  const double per_vertex = stats.vertices > 0 ? 1.0 / count(stats.vertices) : 0.0;
+  visit("mesh", "value_evaluations_per_vertex", count(stats.value_evaluations) * per_vertex);
+  visit("mesh", "gradient_evaluations_per_vertex", count(stats.gradient_evaluations) * per_vertex);
+  visit("mesh", "threads", stats.threads);
   visit("mesh", "vertices", count(stats.vertices));
   visit("mesh", "triangles", count(stats.triangles));
+  for (const auto& [stage, seconds] : stats.times.seconds) visit("seconds", stage, seconds);
   if (const auto& p = stats.projection) {
     const auto v = [&](std::string_view name, double value) { visit("projection", name, value); };
     v("depth", p->start_depth);
@@ -35,6 +59,17 @@ void visit_stats(
     for (const auto& [depth, cells] : p->cells_by_depth)
       v("leaves_depth_" + std::to_string(depth), count(cells));
     v("base_coons", p->coons_base ? 1.0 : 0.0);
+    if (const auto& d = p->defects) {
+      for (int k = 0; k < RawDefects::kKinds; ++k) {
+        const std::string kind = std::string("defect_") + RawDefects::kNames[k] + "_";
+        v(kind + "vertices", count(d->vertices[k]));
+        v(kind + "irregular", count(d->irregular_vertices[k]));
+        v(kind + "triangles", count(d->triangles[k]));
+        v(kind + "under_20", count(d->triangles_under_20[k]));
+        v(kind + "under_10", count(d->triangles_under_10[k]));
+      }
+      v("defect_short_edges", count(d->short_edges));
+    }
   }
   if (const auto& m = stats.marching_cubes) {
     visit("marching_cubes", "cells", count(m->cells));

@@ -11,6 +11,10 @@
 #include <optional>
 #include <tuple>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "core/stage_timer.hpp"
 #include "patch/base_surface.hpp"
 #include "patch/coons_patch.hpp"
 #include "patch/patch_template.hpp"
@@ -58,16 +62,15 @@ CellMesher::CellMesher(const Sampler& f, const CellPartition& partition, CellMes
       size_at_(std::move(size_at)),
       uniform_sizes_(uniform_sizes) {}
 
-Mesh CellMesher::run(CellMesherCounters& counters) {
-  collect_sides();
-  compute_sides(counters);
-  for (std::size_t c = 0; c < part_.cells.size(); ++c) {
-    settings_.budget.check_cancel();
-    if (settings_.budget.progress && c % 64 == 0) settings_.budget.progress(Progress{c, part_.cells.size()});
-    mesh_cell(c, counters);
-    settings_.budget.check_vertices(mesh_.positions.size());
+Mesh CellMesher::run(CellMesherCounters& counters, StageTimes* times) {
+  {
+    const StageTimer timer(times, "sides");
+    collect_sides();
+    compute_sides(counters);
   }
-  if (settings_.projection.vertex_roles) mesh_.set_attribute("role", std::move(roles_));
+  const StageTimer timer(times, "patches");
+  mesh_cells(counters);
+  if (settings_.projection.vertex_roles) mesh_.set_attribute("role", roles_);
   return std::move(mesh_);
 }
 
@@ -178,20 +181,37 @@ void CellMesher::add_vertex(const Vec3& position, const Vec3& gradient, float ro
   roles_.push_back(role);
 }
 
-/// Phase 1: boundary vertices of every side; vertex ids: corners first, then sides in key order.
+/// Phase 1: boundary vertices of every side; vertex ids: corners first, then sides in key order. The
+/// segment counts come first (in order: they fill lazy caches), then the sides are sampled in parallel
+/// and appended in key order, so the ids do not depend on the threads.
 void CellMesher::compute_sides(CellMesherCounters& counters) {
   mesh_.positions.reserve(part_.corners.size());
   gradients_.reserve(part_.corners.size());
   roles_.reserve(part_.corners.size());
   for (const CellCorner& c : part_.corners)
     add_vertex(c.position, c.gradient, role_value(VertexRole::Corner));
+  if (fixed_resolution_ == 0) {
+    // The target size at every corner, in parallel (size_at_ evaluates the curvature with max_error).
+    corner_sizes_.assign(part_.corners.size(), -1.0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, part_.corners.size(), 256), [&](const auto& range) {
+      settings_.budget.check_cancel();
+      for (std::size_t c = range.begin(); c != range.end(); ++c)
+        corner_sizes_[c] = size_at_(part_.corners[c].position);
+    });
+  }
+  side_segments_.reserve(sides_.size());
+  for (std::size_t i = 0; i < sides_.size(); ++i) side_segments_.push_back(side_segments(i));
+  std::vector<SidePoints> sampled(sides_.size());
+  if (settings_.patch.base == PatchSettings::Base::Coons) side_curves_.assign(sides_.size(), {});
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, sides_.size(), 64), [&](const auto& range) {
+    settings_.budget.check_cancel();
+    for (std::size_t i = range.begin(); i != range.end(); ++i) sampled[i] = sample(i, side_segments_[i]);
+  });
   side_accepted_.reserve(sides_.size());
   side_offsets_.reserve(sides_.size());
   for (std::size_t i = 0; i < sides_.size(); ++i) {
-    settings_.budget.check_cancel();
-    side_segments_.push_back(side_segments(i));
     side_offsets_.push_back(mesh_.positions.size());
-    const SidePoints s = sample(sides_[i], side_segments_.back());
+    const SidePoints& s = sampled[i];
     if (!s.accepted) {
       ++counters.rejected_sides;
       for (std::size_t cell : side_cells_[i])
@@ -203,8 +223,10 @@ void CellMesher::compute_sides(CellMesherCounters& counters) {
   }
 }
 
-/// The side's inner boundary vertices; with the Coons base also its face curve, kept for the patches.
-SidePoints CellMesher::sample(const Side& side, int segments) {
+/// Side i's inner boundary vertices; with the Coons base also its face curve, kept for the patches
+/// (side_curves_[i]). Touches nothing but side_curves_[i]: sides are sampled in parallel.
+SidePoints CellMesher::sample(std::size_t i, int segments) {
+  const Side& side = sides_[i];
   const CellCorner& from = part_.corners[side.from];
   const CellCorner& to = part_.corners[side.to];
   const CellFace& face = part_.faces[side.face];
@@ -213,7 +235,7 @@ SidePoints CellMesher::sample(const Side& side, int segments) {
   if (settings_.patch.base == PatchSettings::Base::Barycentric)
     return sample_side(f_, from, to, face, params);
   FaceCurve curve = trace_face_curve(f_, from, to, face, params);
-  side_curves_.push_back(std::move(curve.dense));
+  side_curves_[i] = std::move(curve.dense);
   return SidePoints{std::move(curve.points), curve.accepted};
 }
 
@@ -259,33 +281,79 @@ bool CellMesher::loop_sides_accepted(const CellLoop& loop) const {
   return true;
 }
 
+/// Phase 2: the cells in chunks; each chunk's cells are meshed in parallel into their own outputs,
+/// then appended in cell order (new vertex ids in that order), so the mesh does not depend on the
+/// threads. Chunks bound the memory held by outputs not yet appended.
+void CellMesher::mesh_cells(CellMesherCounters& counters) {
+  constexpr std::size_t kChunk = 4096;
+  std::vector<CellOutput> outputs;
+  for (std::size_t first = 0; first < part_.cells.size(); first += kChunk) {
+    settings_.budget.check_cancel();
+    if (settings_.budget.progress) settings_.budget.progress(Progress{first, part_.cells.size()});
+    const std::size_t count = std::min(kChunk, part_.cells.size() - first);
+    outputs.assign(count, CellOutput{});
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16), [&](const auto& range) {
+      settings_.budget.check_cancel();
+      for (std::size_t k = range.begin(); k != range.end(); ++k) mesh_cell(first + k, outputs[k]);
+    });
+    for (std::size_t k = 0; k < count; ++k) append(first + k, outputs[k], counters);
+    settings_.budget.check_vertices(mesh_.positions.size());
+  }
+}
+
+/// Adds cell c's output: its new vertices get the next ids, its triangles refer to them.
+void CellMesher::append(std::size_t c, const CellOutput& out, CellMesherCounters& counters) {
+  if (out.split) split_cells_.insert(c);
+  if (out.patch_sides > 0) ++counters.patches_by_sides[out.patch_sides];
+  if (out.refined) ++counters.refined_patches;
+  if (out.rejected) {
+    ++counters.rejected_patches;
+    ++counters.rejected_by_verdict[*out.rejected];
+  }
+  if (out.fan) ++counters.fallback_cells;
+  counters.unprojected_vertices += out.unprojected;
+  counters.patch.gradient_rays += out.patch.gradient_rays;
+  counters.patch.clamped_base_points += out.patch.clamped_base_points;
+  if (mesh_.positions.size() + out.points.size() >= kLocalVertex)
+    throw LimitError("projection: more than 2^31 vertices", "max_vertices");
+  const auto base = static_cast<std::uint32_t>(mesh_.positions.size());
+  for (std::size_t i = 0; i < out.points.size(); ++i)
+    add_vertex(out.points[i].position, out.points[i].gradient, out.roles[i]);
+  for (Triangle t : out.triangles) {
+    for (std::uint32_t& v : t)
+      if (v >= kLocalVertex) v = base + (v - kLocalVertex);
+    mesh_.triangles.push_back(t);
+  }
+}
+
 /// Phase 2 for one cell: a projected patch; when it fails, a request to split the cell or, where it
-/// cannot be split, fans.
-void CellMesher::mesh_cell(std::size_t c, CellMesherCounters& counters) {
+/// cannot be split, fans. Reads the mesher's state, writes only `out` (cells run in parallel).
+void CellMesher::mesh_cell(std::size_t c, CellOutput& out) const {
   if (split_cells_.contains(c)) return;  // a side failed: the cell is refined anyway
   const PartitionCell& cell = part_.cells[c];
   const bool simple = !needs_refinement(cell) && cell.loops.front().corners.size() >= 3 &&
                       cell.loops.front().corners.size() <= 12;
   if (simple && loop_sides_accepted(cell.loops.front())) {
-    const PatchVerdict verdict = mesh_patch(cell, cell.loops.front(), counters.patch);
+    const PatchVerdict verdict = mesh_patch(cell, cell.loops.front(), out);
     if (verdict == PatchVerdict::Accepted) {
-      ++counters.patches_by_sides[static_cast<int>(cell.loops.front().corners.size())];
-      if (cell.level > part_.start_level) ++counters.refined_patches;
+      out.patch_sides = static_cast<int>(cell.loops.front().corners.size());
+      out.refined = cell.level > part_.start_level;
       return;
     }
-    ++counters.rejected_patches;
-    ++counters.rejected_by_verdict[verdict];
+    out.rejected = verdict;
+    out.points.clear();
+    out.roles.clear();
+    out.triangles.clear();
   }
   if (refinable(c)) {
-    split_cells_.insert(c);
+    out.split = true;
     return;
   }
-  ++counters.fallback_cells;
-  for (const CellLoop& loop : cell.loops) mesh_fan(cell, loop, counters);
+  out.fan = true;
+  for (const CellLoop& loop : cell.loops) mesh_fan(cell, loop, out);
 }
 
-PatchVerdict CellMesher::mesh_patch(const PartitionCell& cell, const CellLoop& loop,
-                                    PatchStats& patch_stats) {
+PatchVerdict CellMesher::mesh_patch(const PartitionCell& cell, const CellLoop& loop, CellOutput& out) const {
   const int n = static_cast<int>(loop.corners.size());
   // The template has as many segments per side as the loop's longest side count; a side with fewer
   // takes, for template vertex i, its point round(i k / r): coinciding template vertices merge and the
@@ -312,26 +380,27 @@ PatchVerdict CellMesher::mesh_patch(const PartitionCell& cell, const CellLoop& l
     }
     points[v] = {mesh_.positions[ids[v]], gradients_[ids[v]]};
   }
-  const PatchVerdict verdict = project_patch(f_, *patch, *base, d, cell.bounds, params_, points, patch_stats);
+  const PatchVerdict verdict = project_patch(f_, *patch, *base, d, cell.bounds, params_, points, out.patch);
   if (verdict != PatchVerdict::Accepted) return verdict;
   for (std::size_t v = 0; v < patch->vertex_count(); ++v) {
     if (patch->tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;
-    ids[v] = static_cast<std::uint32_t>(mesh_.positions.size());
+    ids[v] = kLocalVertex + static_cast<std::uint32_t>(out.points.size());
     const VertexRole role =
         static_cast<int>(v) == patch->centre() ? VertexRole::Centre : VertexRole::Interior;
-    add_vertex(points[v].position, points[v].gradient, role_value(role));
+    out.points.push_back(points[v]);
+    out.roles.push_back(role_value(role));
   }
   for (const TemplateTriangle& t : patch->triangles()) {
     const Triangle tri{ids[static_cast<std::size_t>(t[0])], ids[static_cast<std::size_t>(t[1])],
                        ids[static_cast<std::size_t>(t[2])]};
-    if (tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0]) mesh_.triangles.push_back(tri);
+    if (tri[0] != tri[1] && tri[1] != tri[2] && tri[2] != tri[0]) out.triangles.push_back(tri);
   }
   return PatchVerdict::Accepted;
 }
 
 /// Fallback: the loop's boundary polygon (corners and shared side vertices) fanned around a centre
 /// vertex moved onto f = 0 along the polygon's normal when a ray finds the surface near the cell.
-void CellMesher::mesh_fan(const PartitionCell& cell, const CellLoop& loop, CellMesherCounters& counters) {
+void CellMesher::mesh_fan(const PartitionCell& cell, const CellLoop& loop, CellOutput& out) const {
   std::vector<std::uint32_t> polygon;
   for (std::size_t k = 0; k < loop.corners.size(); ++k) {
     const std::uint32_t a = loop.corners[k];
@@ -365,12 +434,13 @@ void CellMesher::mesh_fan(const PartitionCell& cell, const CellLoop& loop, CellM
     position = hit->point;
     gradient = f_.value_gradient(position).gradient;
   } else {
-    ++counters.unprojected_vertices;
+    ++out.unprojected;
   }
-  const auto c = static_cast<std::uint32_t>(mesh_.positions.size());
-  add_vertex(position, gradient, role_value(VertexRole::FanCentre));
+  const std::uint32_t c = kLocalVertex + static_cast<std::uint32_t>(out.points.size());
+  out.points.push_back({position, gradient});
+  out.roles.push_back(role_value(VertexRole::FanCentre));
   for (std::size_t k = 0; k < polygon.size(); ++k)
-    mesh_.triangles.push_back({c, polygon[k], polygon[next(k, polygon.size())]});
+    out.triangles.push_back({c, polygon[k], polygon[next(k, polygon.size())]});
 }
 
 }  // namespace isopatch

@@ -6,12 +6,14 @@
 /// it can run in parallel with the same output. Sees the partition only through cell_partition.hpp.
 
 #include <isopatch/mesh.hpp>
+#include <isopatch/mesh_stats.hpp>
 #include <isopatch/stage_settings.hpp>
 
 #include <cstddef>
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -58,9 +60,15 @@ class CellMesher {
   CellMesher(const Sampler& f, const CellPartition& partition, CellMesherSettings settings, int resolution,
              int refinable_level, std::function<double(const Vec3&)> size_at, bool uniform_sizes);
 
-  /// The mesh; meaningful only when to_split() is empty afterwards.
+  /// The mesh; meaningful only when to_split() is empty afterwards. Sides, then cells, run in parallel
+  /// (TBB, in the caller's task arena) and are assembled in a fixed order: the same mesh for any number
+  /// of threads. `size_at` and f are called concurrently. Adds "sides" and "patches" to `times`
+  /// (may be null).
   /// \throw LimitError when cancelled or beyond BudgetSettings::max_vertices; EvaluationError as f does.
-  Mesh run(CellMesherCounters& counters);
+  Mesh run(CellMesherCounters& counters, StageTimes* times = nullptr);
+
+  /// The role (role_value) of every vertex of the mesh run() returned.
+  const std::vector<float>& roles() const { return roles_; }
 
   /// Smallest and largest segment count over the sides (0, 0 without sides).
   std::pair<int, int> segment_range() const;
@@ -69,6 +77,23 @@ class CellMesher {
   std::vector<std::size_t> to_split() const { return {split_cells_.begin(), split_cells_.end()}; }
 
  private:
+  /// Vertex ids at or above this, in a cell's output, are the cell's own new vertices (numbered from 0).
+  static constexpr std::uint32_t kLocalVertex = 0x80000000u;
+
+  /// What one cell adds (cells are meshed in parallel, then appended in order).
+  struct CellOutput {
+    std::vector<SurfacePoint> points;  ///< new vertices
+    std::vector<float> roles;          ///< per new vertex
+    std::vector<Triangle> triangles;   ///< ids: shared vertices, or kLocalVertex + new vertex
+    PatchStats patch;
+    std::optional<PatchVerdict> rejected;
+    int patch_sides = 0;  ///< sides of the accepted patch, 0 without one
+    bool refined = false;
+    bool split = false;
+    bool fan = false;
+    std::size_t unprojected = 0;
+  };
+
   /// A side shared by two loops: corner ids from < to, and the face it lies on.
   struct Side {
     std::uint32_t from = 0;
@@ -85,13 +110,15 @@ class CellMesher {
   bool refinable(std::size_t cell) const { return part_.cells[cell].level < refinable_level_; }
   std::size_t side_index(std::uint32_t a, std::uint32_t b) const;
   void compute_sides(CellMesherCounters& counters);
-  SidePoints sample(const Side& side, int segments);
+  SidePoints sample(std::size_t i, int segments);
   std::unique_ptr<BaseSurface> base_surface(const CellLoop& loop, std::vector<Vec3>& directions) const;
   std::uint32_t side_vertex(std::uint32_t a, std::uint32_t b, int i) const;
   bool loop_sides_accepted(const CellLoop& loop) const;
-  void mesh_cell(std::size_t c, CellMesherCounters& counters);
-  PatchVerdict mesh_patch(const PartitionCell& cell, const CellLoop& loop, PatchStats& patch_stats);
-  void mesh_fan(const PartitionCell& cell, const CellLoop& loop, CellMesherCounters& counters);
+  void mesh_cells(CellMesherCounters& counters);
+  void append(std::size_t c, const CellOutput& out, CellMesherCounters& counters);
+  void mesh_cell(std::size_t c, CellOutput& out) const;
+  PatchVerdict mesh_patch(const PartitionCell& cell, const CellLoop& loop, CellOutput& out) const;
+  void mesh_fan(const PartitionCell& cell, const CellLoop& loop, CellOutput& out) const;
   void add_vertex(const Vec3& position, const Vec3& gradient, float role);
 
   const Sampler& f_;

@@ -9,9 +9,11 @@
 #include <tuple>
 #include <vector>
 
+#include "core/stage_timer.hpp"
 #include "project/cell_mesher.hpp"
 #include "project/cell_sizing.hpp"
 #include "project/doubtful_cells.hpp"
+#include "project/raw_defects.hpp"
 
 namespace isopatch {
 namespace {
@@ -69,10 +71,14 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Octre
   bool start_settled = false;
   const int max_level = partitioner.max_level();
   const std::function<double(const Vec3&)> size_at = size_function(surface, sizes);
+  StageTimes* times = stats ? &stats->times : nullptr;
   // Restarts at a finer level do not count as rounds: only refinements do.
   for (int round = 0;;) {
     budget.check_cancel();
-    const CellPartition partition = partitioner.build();
+    const CellPartition partition = [&] {
+      const StageTimer timer(times, "partition");
+      return partitioner.build();
+    }();
     partition_values += partition.stats.value_evaluations;
     partition_gradients += partition.stats.gradient_evaluations;
     if (budget.progress)
@@ -115,13 +121,16 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Octre
     const int refinable_level = round < kMaxRounds ? patch_level : 0;
     CellMesher mesher(f, partition, settings, resolution, refinable_level, size_at, !sizes.varies());
     counters.start_pass();
-    Mesh mesh = mesher.run(counters);
+    Mesh mesh = mesher.run(counters, times);
     if (const std::vector<std::size_t> split = mesher.to_split(); !split.empty()) {
       partitioner.split(split);
       ++round;
       continue;
     }
-    const DoubtfulCells doubtful = doubtful_cells(partition, partitioner, f);
+    const DoubtfulCells doubtful = [&] {
+      const StageTimer timer(times, "checks");
+      return doubtful_cells(partition, partitioner, f);
+    }();
     mesh.triangles.shrink_to_fit();
     if (stats) {
       stats->value_evaluations = partition_values + f.value_count();
@@ -131,6 +140,8 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Octre
       stats->projection = projection_stats(partition, mesher, counters, settings.patch, max_level,
                                            static_cast<std::size_t>(round), curvature_steps);
       record_doubts(doubtful, max_level, stats->warnings);
+      const StageTimer timer(times, "defects");
+      stats->projection->defects = raw_defects(mesh, mesher.roles(), sizes.largest);
     }
     return mesh;
   }

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <iterator>
-#include <map>
 
 namespace isopatch {
 
@@ -23,14 +22,20 @@ EditableMesh::EditableMesh(const Mesh& mesh, std::vector<Vec3> vertex_normals)
     attributes.push_back(a.values);
   }
   // A vertex is locked when one of its edges has a number of triangles other than two.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  edges.reserve(3 * triangles.size());
   for (const Triangle& t : triangles)
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
-      ++uses[{std::min(a, b), std::max(a, b)}];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
     }
-  for (const auto& [edge, count] : uses)
-    if (count != 2) locked[edge.first] = locked[edge.second] = true;
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i != 2) locked[edges[i].first] = locked[edges[i].second] = true;
+    i = j;
+  }
 }
 
 std::optional<EditableMesh::Edge> EditableMesh::interior_edge(std::uint32_t a, std::uint32_t b) const {
@@ -121,6 +126,26 @@ bool EditableMesh::adjacent(std::uint32_t a, std::uint32_t b) const {
     if (std::find(tri.begin(), tri.end(), b) != tri.end()) return true;
   }
   return false;
+}
+
+std::vector<std::vector<std::uint32_t>> EditableMesh::independent_classes(
+    const std::vector<std::uint32_t>& vertices) const {
+  constexpr std::uint32_t kNone = UINT32_MAX;
+  std::vector<std::uint32_t> colour(positions.size(), kNone);
+  std::vector<std::vector<std::uint32_t>> classes;
+  std::vector<char> taken;
+  for (std::uint32_t v : vertices) {
+    taken.assign(classes.size() + 1, 0);
+    for (std::uint32_t t : incident[v])
+      for (std::uint32_t w : triangles[t])
+        if (w != v && colour[w] != kNone) taken[colour[w]] = 1;
+    std::uint32_t c = 0;
+    while (taken[c]) ++c;
+    colour[v] = c;
+    if (c == classes.size()) classes.emplace_back();
+    classes[c].push_back(v);
+  }
+  return classes;
 }
 
 void EditableMesh::replace_vertex(std::uint32_t t, std::uint32_t from, std::uint32_t to) {

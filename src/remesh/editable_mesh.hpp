@@ -42,6 +42,11 @@ class EditableMesh {
   /// Neighbours of v, counted from its triangles: one more than their number on the boundary (one fan).
   std::size_t valence(std::uint32_t v) const { return incident[v].size() + (locked[v] ? 1 : 0); }
   bool adjacent(std::uint32_t a, std::uint32_t b) const;
+  /// `vertices` split into classes of which no two members are adjacent, greedily in list order (each
+  /// takes the smallest class no earlier neighbour took): the same classes for the same mesh and list,
+  /// so the members of a class can move in parallel with one result.
+  std::vector<std::vector<std::uint32_t>> independent_classes(
+      const std::vector<std::uint32_t>& vertices) const;
 
   /// Splits the edge at the new vertex (position p, normal n); returns its id. Attributes are copied
   /// from e.a.

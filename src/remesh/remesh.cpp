@@ -3,19 +3,27 @@
 #include <isopatch/remesh.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "core/stage_timer.hpp"
 #include "remesh/box_boundary.hpp"
+#include "remesh/defect_region.hpp"
 #include "remesh/editable_mesh.hpp"
 #include "remesh/laplacian_exactness.hpp"
+#include "remesh/remesh_checks.hpp"
 #include "remesh/size_field.hpp"
 #include "remesh/triangle_angle.hpp"
 #include "remesh/valence_flips.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 #include "surface/project_point.hpp"
 #include "surface/sampler.hpp"
 
@@ -27,9 +35,16 @@ namespace {
 constexpr double kMinNormalDot = 0.3;
 /// Triangles below this smallest angle are removed by the final pass (degrees).
 constexpr double kRepairAngle = 20.0;
-/// Relaxation-only rounds after the last round that changes connectivity (docs/whole-surface-quality.md:
-/// mean-curvature error 10-45% lower than without, for about a fifth more time).
-constexpr int kFinalRelaxationRounds = 8;
+/// The preview's local repair (run_local): triangles under this smallest angle (degrees) need it; the
+/// vertices near a defect are those within kLocalRings rings of one, relaxed kLocalRelaxationRounds
+/// times.
+constexpr double kLocalAngle = 30.0;
+constexpr int kLocalRings = 2;
+constexpr int kLocalRelaxationRounds = 6;
+/// The local repair collapses only the short edges that cells clipped near a corner leave: the patch
+/// lattices' own short edges (down to about half the size across a stretched template) are kept, or
+/// their collapses would leave irregular vertices behind.
+constexpr double kLocalCollapseFactor = 0.35;
 /// Smallest angle (degrees) a neutral flip of a glide chain may leave in its two triangles.
 constexpr double kGlideAngle = 15.0;
 /// The Laplacian-exactness sweeps may not take a triangle's smallest angle below min(its current one,
@@ -57,30 +72,32 @@ class Remesher {
       : f_(surface), mesh_(mesh), settings_(settings), sizes_(surface, settings), tolerance_(tolerance) {}
 
   RemeshStats run() {
+    if (settings_.local_only) return run_local();
     if (settings_.box) slide_axis_ = sliding_axes(mesh_, *settings_.box);
-    sizes_.update(mesh_);
+    timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
     for (int it = 0; it < settings_.iterations; ++it) {
-      split_long_edges();
-      sizes_.update(mesh_);
-      collapse_short_edges();
-      sizes_.update(mesh_);
-      flip_valences();
-      relax();
-      sizes_.update(mesh_);
+      timed("cleanup_split", [&] { split_long_edges(); });
+      timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
+      timed("cleanup_collapse", [&] { collapse_short_edges(); });
+      timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
+      timed("cleanup_flip", [&] { flip_valences(); });
+      timed("cleanup_relax", [&] { relax(); });
+      timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
     }
     for (int round = 0; round < 3; ++round) {
-      if (repair_small_angles() == 0) break;
-      sizes_.update(mesh_);
-      flip_valences();  // the repairs' collapses leave irregular vertices behind
-      relax();
+      if (timed("cleanup_repair", [&] { return repair_small_angles(); }) == 0) break;
+      timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
+      timed("cleanup_flip", [&] { flip_valences(); });  // the repairs' collapses leave irregular vertices
+      timed("cleanup_relax", [&] { relax(); });
     }
     // One sweep of chains that may pass through one flip that costs energy: pulls apart the 5-7 pairs
     // that neutral chains leave side by side (docs/whole-surface-quality.md).
     if (settings_.valence_search > 0)
-      flip_valences(GlideLimits{.budget = settings_.valence_search, .max_debt = 2});
+      timed("cleanup_valence_search",
+            [&] { flip_valences(GlideLimits{.budget = settings_.valence_search, .max_debt = 2}); });
     // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
     // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
-    for (int round = 0; round < kFinalRelaxationRounds; ++round) relax();
+    timed("cleanup_relax", [&] { relax(settings_.final_relaxation_rounds); });
     if (settings_.curvature_sweeps > 0) {
       const ExactnessMoveRules rules{
           .project = [this](Vec3& p, Vec3& n, double max_step) { return project(p, n, max_step); },
@@ -89,16 +106,59 @@ class Remesher {
           .size = [this](std::uint32_t v) { return sizes_.at(v); },
           .angle_floor = kExactnessAngleFloor,
           .before_sweep = [this] { check_cancel(); }};
-      stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
+      timed("cleanup_curvature", [&] {
+        stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
+      });
     }
-    repair_until_settled();
-    if (settings_.sizes.max_error) stats_.error_bound_violations = enforce_error_bound();
+    timed("cleanup_repair", [&] { repair_until_settled(); });
+    if (settings_.sizes.max_error)
+      timed("cleanup_error_bound", [&] { stats_.error_bound_violations = enforce_error_bound(); });
+    stats_.gradient_evaluations = f_.gradient_count();
+    stats_.hessian_evaluations = sizes_.hessian_evaluations();
+    return stats_;
+  }
+
+  /// The preview's local repair: the topological fixes (short edges, small angles, valences) act only
+  /// where a defect is, then relaxation runs over the vertices near the defects alone (work list), so
+  /// the cost follows what needs fixing, not the mesh size.
+  RemeshStats run_local() {
+    if (settings_.box) slide_axis_ = sliding_axes(mesh_, *settings_.box);
+    timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
+    timed("cleanup_collapse", [&] { collapse_short_edges(); });
+    timed("cleanup_repair", [&] { repair_until_settled(); });
+    timed("cleanup_flip", [&] { flip_valences(); });
+    std::vector<std::uint32_t> work;
+    timed("cleanup_relax", [&] {
+      const DefectThresholds thresholds{.cos_small_angle = std::cos(kLocalAngle * std::numbers::pi / 180.0),
+                                        .split_factor = kSplitFactor,
+                                        .collapse_factor = collapse_factor()};
+      work = vertices_near_defects(mesh_, sizes_, thresholds, kLocalRings);
+      relax(work, kLocalRelaxationRounds);
+    });
+    timed("cleanup_repair", [&] { repair_until_settled(); });
+    if (settings_.valence_search > 0)
+      timed("cleanup_valence_search", [&] {
+        flip_valences(GlideLimits{.budget = settings_.valence_search, .passes = 2, .max_debt = 2});
+      });
+    timed("cleanup_relax", [&] { relax(work, kLocalRelaxationRounds); });
+    timed("cleanup_repair", [&] { repair_until_settled(); });
+    // The relaxation frees flips that its angles refused: one more greedy pass with neutral chains.
+    timed("cleanup_flip", [&] { flip_valences(); });
+    timed("cleanup_relax", [&] { relax(work, 2); });
+    timed("cleanup_repair", [&] { repair_until_settled(); });
     stats_.gradient_evaluations = f_.gradient_count();
     stats_.hessian_evaluations = sizes_.hessian_evaluations();
     return stats_;
   }
 
  private:
+  /// Runs `pass`, adding its wall time to stage `name` of the statistics; returns what it returns.
+  template <class Pass>
+  std::invoke_result_t<Pass> timed(const char* name, Pass pass) {
+    const StageTimer timer(&stats_.times, name);
+    return pass();
+  }
+
   void check_cancel() const {
     if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
   }
@@ -144,16 +204,13 @@ class Remesher {
                        mesh_.normals[t[0]], mesh_.normals[t[1]], mesh_.normals[t[2]]);
   }
 
-  double smallest_angle(const Triangle& t) const {
-    return isopatch::smallest_angle(mesh_.positions[t[0]], mesh_.positions[t[1]], mesh_.positions[t[2]]);
-  }
-
   double length(std::uint32_t a, std::uint32_t b) const {
     return (mesh_.positions[a] - mesh_.positions[b]).norm();
   }
 
   double collapse_factor() const {
-    return settings_.sizes.max_error ? kErrorCollapseFactor : kCollapseFactor;
+    if (settings_.sizes.max_error) return kErrorCollapseFactor;
+    return settings_.local_only ? kLocalCollapseFactor : kCollapseFactor;
   }
 
   bool try_split(std::uint32_t a, std::uint32_t b) {
@@ -254,20 +311,26 @@ class Remesher {
     }
   }
 
-  /// Flips e when its two new triangles are valid and `accept` (given the smallest angles of the old
-  /// and new pairs) agrees.
+  /// Flips e when its two new triangles are valid and `accept` agrees, given the cosines of the
+  /// smallest angles of the old and of the new pair (a larger cosine is a smaller angle; cosines
+  /// rather than angles: this is the inner loop of the flips).
   template <class Accept>
   bool try_flip(const EditableMesh::Edge& e, Accept accept) {
-    if (mesh_.adjacent(e.c, e.d)) return false;
     if (mesh_.valence(e.a) <= 3 || mesh_.valence(e.b) <= 3) return false;
+    if (mesh_.adjacent(e.c, e.d)) return false;
     const Triangle t1{e.a, e.d, e.c}, t2{e.b, e.c, e.d};
     if (!triangle_ok(t1) || !triangle_ok(t2)) return false;
-    const double before =
-        std::min(smallest_angle(mesh_.triangles[e.t_ab]), smallest_angle(mesh_.triangles[e.t_ba]));
-    const double after = std::min(smallest_angle(t1), smallest_angle(t2));
+    const double before = std::max(smallest_angle_cosine(mesh_.triangles[e.t_ab]),
+                                   smallest_angle_cosine(mesh_.triangles[e.t_ba]));
+    const double after = std::max(smallest_angle_cosine(t1), smallest_angle_cosine(t2));
     if (!accept(before, after)) return false;
     mesh_.flip(e);
     return true;
+  }
+
+  double smallest_angle_cosine(const Triangle& t) const {
+    return isopatch::smallest_angle_cosine(mesh_.positions[t[0]], mesh_.positions[t[1]],
+                                           mesh_.positions[t[2]]);
   }
 
   /// Valence flips (valence_flips.hpp). A flip that lowers the valence energy may not lower the
@@ -278,9 +341,9 @@ class Remesher {
     stats_.flips += flip_towards_valence_six(
         mesh_,
         [this](const EditableMesh::Edge& e, bool neutral) {
-          if (neutral) return try_flip(e, [](double, double new_angle) { return new_angle >= kGlideAngle; });
-          return try_flip(e, [](double old_angle, double new_angle) {
-            return new_angle >= std::min(old_angle, kRepairAngle) || new_angle > 30.0;
+          if (neutral) return try_flip(e, [this](double, double after) { return after <= cos_glide_; });
+          return try_flip(e, [this](double before, double after) {
+            return after <= std::max(before, cos_repair_) || after < cos_30_;
           });
         },
         limits);
@@ -288,53 +351,66 @@ class Remesher {
 
   /// Tangential relaxation towards the area-weighted centroid of the incident triangles, then back onto
   /// f = 0 (Gauss-Seidel order; a move that would fold a triangle or leave the box is skipped).
-  void relax() {
-    check_cancel();
-    for (std::uint32_t v = 0; v < mesh_.vertex_slots(); ++v) {
-      if (!mesh_.alive(v)) continue;
-      if (mesh_.locked[v]) {
-        if (slide_axis(v) >= 0) relax_along_box_face(v);
-        continue;
-      }
-      Vec3 centroid = Vec3::Zero();
-      double area = 0.0;
-      for (std::uint32_t t : mesh_.incident[v]) {
-        const Triangle& tri = mesh_.triangles[t];
-        const Vec3& p0 = mesh_.positions[tri[0]];
-        const Vec3& p1 = mesh_.positions[tri[1]];
-        const Vec3& p2 = mesh_.positions[tri[2]];
-        const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
-        centroid += a * (p0 + p1 + p2) / 3.0;
-        area += a;
-      }
-      if (!(area > 0.0)) continue;
-      centroid /= area;
-      const Vec3& p = mesh_.positions[v];
-      const Vec3& n = mesh_.normals[v];
-      Vec3 move = centroid - p;
-      move -= n * n.dot(move);
-      Vec3 q = p + move;
-      Vec3 nq;
-      if (!project(q, nq, std::max(move.norm(), sizes_.at(v)))) {
-        ++stats_.rejected_moves;
-        continue;
-      }
-      bool ok = true;
-      for (std::uint32_t t : mesh_.incident[v]) ok = ok && triangle_ok_with(t, v, q, nq);
-      if (!ok) {
-        ++stats_.rejected_moves;
-        continue;
-      }
-      mesh_.positions[v] = q;
-      mesh_.normals[v] = nq;
+  void relax(int rounds = 1) {
+    std::vector<std::uint32_t> all;
+    for (std::uint32_t v = 0; v < mesh_.vertex_slots(); ++v)
+      if (mesh_.alive(v)) all.push_back(v);
+    relax(all, rounds);
+  }
+
+  /// `rounds` of relax_vertex over `vertices`, by classes of non-adjacent vertices (a move reads only
+  /// its neighbours), each class in parallel: the same result for any number of threads.
+  void relax(const std::vector<std::uint32_t>& vertices, int rounds) {
+    const std::vector<std::vector<std::uint32_t>> classes = mesh_.independent_classes(vertices);
+    std::atomic<std::size_t> rejected{0};
+    for (int round = 0; round < rounds; ++round) {
+      check_cancel();
+      for (const std::vector<std::uint32_t>& members : classes)
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, members.size(), 256), [&](const auto& range) {
+          for (std::size_t i = range.begin(); i != range.end(); ++i)
+            if (!relax_vertex(members[i])) rejected.fetch_add(1, std::memory_order_relaxed);
+        });
     }
+    stats_.rejected_moves += rejected.load();
+  }
+
+  /// Moves v towards the area-weighted centroid of its triangles, tangentially, then onto f = 0; a
+  /// sliding cut vertex along its box face. Writes only v. False when the move was refused.
+  bool relax_vertex(std::uint32_t v) {
+    if (!mesh_.alive(v)) return true;
+    if (mesh_.locked[v]) return slide_axis(v) < 0 || relax_along_box_face(v);
+    Vec3 centroid = Vec3::Zero();
+    double area = 0.0;
+    for (std::uint32_t t : mesh_.incident[v]) {
+      const Triangle& tri = mesh_.triangles[t];
+      const Vec3& p0 = mesh_.positions[tri[0]];
+      const Vec3& p1 = mesh_.positions[tri[1]];
+      const Vec3& p2 = mesh_.positions[tri[2]];
+      const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
+      centroid += a * (p0 + p1 + p2) / 3.0;
+      area += a;
+    }
+    if (!(area > 0.0)) return true;
+    centroid /= area;
+    const Vec3& p = mesh_.positions[v];
+    const Vec3& n = mesh_.normals[v];
+    Vec3 move = centroid - p;
+    move -= n * n.dot(move);
+    Vec3 q = p + move;
+    Vec3 nq;
+    if (!project(q, nq, std::max(move.norm(), sizes_.at(v)))) return false;
+    for (std::uint32_t t : mesh_.incident[v])
+      if (!triangle_ok_with(t, v, q, nq)) return false;
+    mesh_.positions[v] = q;
+    mesh_.normals[v] = nq;
+    return true;
   }
 
   /// Moves a boundary vertex that may slide towards the midpoint of its two boundary neighbours, then
   /// onto the curve where f = 0 meets its box face (it stays on that face and off the others).
-  void relax_along_box_face(std::uint32_t v) {
+  bool relax_along_box_face(std::uint32_t v) {
     const std::vector<std::uint32_t> ends = mesh_.boundary_neighbours(v);
-    if (ends.size() != 2) return;
+    if (ends.size() != 2) return true;
     const int axis = slide_axis(v);
     const Vec3& p = mesh_.positions[v];
     Vec3 q = 0.5 * (mesh_.positions[ends[0]] + mesh_.positions[ends[1]]);
@@ -342,20 +418,16 @@ class Remesher {
     Vec3 gradient;
     if (!project_to_surface_in_plane(f_, q, axis, tolerance_, std::max((q - p).norm(), sizes_.at(v)),
                                      &gradient) ||
-        !in_box(q)) {
-      ++stats_.rejected_moves;
-      return;
-    }
+        !in_box(q))
+      return false;
     for (int k = 0; k < 3; ++k)
-      if (k != axis && (q[k] == settings_.box->lo[k] || q[k] == settings_.box->hi[k])) return;
+      if (k != axis && (q[k] == settings_.box->lo[k] || q[k] == settings_.box->hi[k])) return true;
     const Vec3 n = gradient.normalized();
     for (std::uint32_t t : mesh_.incident[v])
-      if (!triangle_ok_with(t, v, q, n)) {
-        ++stats_.rejected_moves;
-        return;
-      }
+      if (!triangle_ok_with(t, v, q, n)) return false;
     mesh_.positions[v] = q;
     mesh_.normals[v] = n;
+    return true;
   }
 
   /// repair_small_angles, up to three passes: a repair can make a new small angle next to one it already
@@ -373,7 +445,7 @@ class Remesher {
     for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
       if (!mesh_.triangle_alive[t]) continue;
       const Triangle tri = mesh_.triangles[t];
-      if (smallest_angle(tri) >= kRepairAngle) continue;
+      if (smallest_angle_cosine(tri) <= cos_repair_) continue;
       int longest = 0, shortest = 0;
       double lmax = -1.0, lmin = INFINITY;
       for (int i = 0; i < 3; ++i) {
@@ -384,7 +456,7 @@ class Remesher {
       const std::uint32_t a = tri[static_cast<std::size_t>(longest)];
       const std::uint32_t b = tri[static_cast<std::size_t>((longest + 1) % 3)];
       if (const auto e = mesh_.interior_edge(a, b);
-          e && try_flip(*e, [](double old_angle, double new_angle) { return new_angle > old_angle; })) {
+          e && try_flip(*e, [](double before, double after) { return after < before; })) {
         ++changes;
         continue;
       }
@@ -461,6 +533,9 @@ class Remesher {
     }
   }
 
+  const double cos_glide_ = std::cos(kGlideAngle * std::numbers::pi / 180.0);
+  const double cos_repair_ = std::cos(kRepairAngle * std::numbers::pi / 180.0);
+  const double cos_30_ = std::cos(30.0 * std::numbers::pi / 180.0);
   std::vector<int> slide_axis_;  ///< per vertex slot at the start; empty without a box
   Sampler f_;
   EditableMesh& mesh_;
@@ -470,31 +545,10 @@ class Remesher {
   RemeshStats stats_;
 };
 
-void check(const RemeshSettings& s) {
-  const TargetSizes& sizes = s.sizes;
-  if (!(std::isfinite(sizes.largest) && sizes.largest > 0.0))
-    throw SettingError("sizes.largest", "remesh: the edge length must be a positive number");
-  if (sizes.max_error && !(std::isfinite(*sizes.max_error) && *sizes.max_error > 0.0))
-    throw SettingError("sizes.max_error", "remesh: the maximum error must be a positive number");
-  if (sizes.varies() && !(sizes.smallest > 0.0 && sizes.smallest <= sizes.largest))
-    throw SettingError("sizes.smallest",
-                       "remesh: the smallest size must be positive and at most the edge length");
-  if (!(s.grading > 0.0 && s.grading <= 1.0))
-    throw SettingError("grading", "remesh: grading must lie in (0, 1]");
-  if (s.valence_search < 0 || s.valence_search > kMaxValenceSearch)
-    throw SettingError("valence_search", "remesh: the valence search must be between 0 and " +
-                                             std::to_string(kMaxValenceSearch) + " flips per chain");
-  if (s.curvature_sweeps < 0 || s.curvature_sweeps > kMaxCurvatureSweeps)
-    throw SettingError("curvature_sweeps", "remesh: the curvature sweeps must be between 0 and " +
-                                               std::to_string(kMaxCurvatureSweeps));
-  if (s.iterations < 0 || s.iterations > 100)
-    throw SettingError("remesh_iterations", "remesh: iterations must be between 0 and 100");
-}
-
 }  // namespace
 
 RemeshStats remesh_on_surface(Mesh& mesh, const Surface& surface, const RemeshSettings& settings) {
-  check(settings);
+  check_remesh_settings(settings);
   if (settings.iterations == 0 || mesh.triangles.empty()) return {};
   mesh.validate();
   const Sampler f(surface);

@@ -1,8 +1,8 @@
-// The tool is deterministic: the same command line run twice (two processes) writes the same file,
-// byte for byte, for each mesher configuration (projection with the whole clean-up on two surfaces,
-// the paper's method alone, the Coons base, --max-error, marching cubes) and each output format. The
-// files must be non-empty and hold a closed mesh of the catalogue genus with more than 100 vertices,
-// so two equally empty or broken outputs do not pass.
+// The tool is deterministic: the same command line run three times (three processes, with --threads
+// 1, 2 and 4) writes the same file, byte for byte, for each mesher configuration (projection with the whole
+// clean-up on two surfaces, the paper's method alone, the Coons base, --max-error, marching cubes) and each
+// output format. The files must be non-empty and hold a closed mesh of the catalogue genus with more than 100
+// vertices, so two equally empty or broken outputs do not pass.
 #include <isopatch/catalogue.hpp>
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/topology.hpp>
@@ -38,6 +38,8 @@ constexpr CliConfig kConfigs[] = {
     {"blobby_projection", "blobby", "--edge-length 0.08"},
     {"genus2_remesh0", "genus2", "--edge-length 0.05 --remesh 0"},  // the paper's method alone
     {"genus2_coons", "genus2", "--edge-length 0.05 --base coons"},
+    {"tanglecube_preview", "tanglecube", "--quality preview"},
+    {"torus_fine", "torus", "--edge-length 0.15 --quality fine"},
     {"blobby_max_error", "blobby", "--max-error 3e-3"},
     {"torus_mc", "torus", "--method mc --grid 48"},
 };
@@ -78,29 +80,34 @@ std::string read_bytes(const std::filesystem::path& path) {
 
 class CliDeterminism : public ::testing::TestWithParam<CliCase> {};
 
-TEST_P(CliDeterminism, TwoRunsWriteTheSameBytes) {
+TEST_P(CliDeterminism, RunsWithOneTwoAndFourThreadsWriteTheSameBytes) {
   const CliCase& c = GetParam();
   // Per process, so that another build's copy of this test running at the same time keeps its own files.
   const auto dir = test::scratch_dir("determinism_" + case_id(c) + "_" + std::to_string(getpid()));
-  std::filesystem::path outputs[2];
-  std::string bytes[2];
-  for (int run = 0; run < 2; ++run) {
-    // Same file name, separate folders: the two command lines differ only in the folder.
+  constexpr int kThreads[] = {1, 2, 4};
+  std::filesystem::path outputs[3];
+  std::string bytes[3];
+  for (int run = 0; run < 3; ++run) {
+    // Same file name, separate folders: the command lines differ only in the folder and the threads.
     const auto run_dir = dir / ("run" + std::to_string(run));
     std::filesystem::create_directories(run_dir);
     outputs[run] = run_dir / ("mesh." + c.format);
-    const auto r = test::run_command(
-        kCli + " mesh " + c.config.surface + " " + c.config.options + " -q -o " + outputs[run].string(),
-        run_dir);
+    const auto r =
+        test::run_command(kCli + " mesh " + c.config.surface + " " + c.config.options + " --threads " +
+                              std::to_string(kThreads[run]) + " -q -o " + outputs[run].string(),
+                          run_dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     bytes[run] = read_bytes(outputs[run]);
     ASSERT_FALSE(bytes[run].empty()) << outputs[run];
   }
-  EXPECT_EQ(bytes[0].size(), bytes[1].size());
-  const auto [first, second] =
-      std::mismatch(bytes[0].begin(), bytes[0].end(), bytes[1].begin(), bytes[1].end());
-  EXPECT_TRUE(first == bytes[0].end() && second == bytes[1].end())
-      << "the two outputs differ first at byte " << (first - bytes[0].begin()) << " of " << bytes[0].size();
+  for (int run = 1; run < 3; ++run) {
+    SCOPED_TRACE("1 thread against " + std::to_string(kThreads[run]));
+    EXPECT_EQ(bytes[0].size(), bytes[run].size());
+    const auto [first, second] =
+        std::mismatch(bytes[0].begin(), bytes[0].end(), bytes[run].begin(), bytes[run].end());
+    EXPECT_TRUE(first == bytes[0].end() && second == bytes[run].end())
+        << "the outputs differ first at byte " << (first - bytes[0].begin()) << " of " << bytes[0].size();
+  }
 
   // Not two equally empty or broken files: a closed mesh of the surface's genus.
   const Mesh mesh = read_mesh(outputs[0].string());

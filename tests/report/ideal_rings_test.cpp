@@ -50,17 +50,25 @@ TEST(IdealRings, GiveTheSecondOrderErrorOfALatticeOnATorus) {
 }
 
 TEST(IdealRings, GradedSizesHelpWhereTheCurvatureVaries) {
-  // genus2 at about 1.5k vertices: its tips are narrower than a uniform edge, the rings there are
-  // badly off; edges shrinking with the curvature (the --max-error law) give far less error.
+  // genus2 at about 1.3k-1.6k vertices: its tips are narrower than a uniform edge, the rings there are
+  // badly off; edges shrinking with the curvature (the --max-error law) give less error. The ratio
+  // depends on where the sample vertices fall near the tips (0.56-0.76 over edge lengths 0.05-0.052),
+  // so it is taken over three meshes.
   const SurfacePtr s = catalogue_surface("genus2");
-  const Mesh mesh = mesh_of(*s, 0.05068);
-  const IdealRingResult uniform = ideal_ring_error(mesh, *s, {});
-  IdealRingOptions options;
-  options.sizes = RingSizes::Graded;
-  const IdealRingResult graded = ideal_ring_error(mesh, *s, options);
-  EXPECT_GT(uniform.nrms_mean, 0.08);
-  EXPECT_LT(graded.nrms_mean, 0.6 * uniform.nrms_mean);
-  EXPECT_EQ(uniform.samples + uniform.skipped, mesh.vertex_count());
+  double uniform_sum = 0.0, graded_sum = 0.0;
+  for (const double edge_length : {0.048, 0.05, 0.052}) {
+    const Mesh mesh = mesh_of(*s, edge_length);
+    const IdealRingResult uniform = ideal_ring_error(mesh, *s, {});
+    IdealRingOptions options;
+    options.sizes = RingSizes::Graded;
+    const IdealRingResult graded = ideal_ring_error(mesh, *s, options);
+    EXPECT_GT(uniform.nrms_mean, 0.08);
+    EXPECT_LT(graded.nrms_mean, 0.85 * uniform.nrms_mean) << "edge length " << edge_length;
+    EXPECT_EQ(uniform.samples + uniform.skipped, mesh.vertex_count());
+    uniform_sum += uniform.nrms_mean;
+    graded_sum += graded.nrms_mean;
+  }
+  EXPECT_LT(graded_sum, 0.7 * uniform_sum);
 }
 
 TEST(IdealRings, RejectBadInput) {

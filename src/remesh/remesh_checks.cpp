@@ -1,0 +1,35 @@
+// Validation of RemeshSettings (remesh_checks.hpp).
+#include "remesh/remesh_checks.hpp"
+
+#include <isopatch/error.hpp>
+
+#include <cmath>
+#include <string>
+
+namespace isopatch {
+
+void check_remesh_settings(const RemeshSettings& s) {
+  const TargetSizes& sizes = s.sizes;
+  if (!(std::isfinite(sizes.largest) && sizes.largest > 0.0))
+    throw SettingError("sizes.largest", "remesh: the edge length must be a positive number");
+  if (sizes.max_error && !(std::isfinite(*sizes.max_error) && *sizes.max_error > 0.0))
+    throw SettingError("sizes.max_error", "remesh: the maximum error must be a positive number");
+  if (sizes.varies() && !(sizes.smallest > 0.0 && sizes.smallest <= sizes.largest))
+    throw SettingError("sizes.smallest",
+                       "remesh: the smallest size must be positive and at most the edge length");
+  if (!(s.grading > 0.0 && s.grading <= 1.0))
+    throw SettingError("grading", "remesh: grading must lie in (0, 1]");
+  if (s.valence_search < 0 || s.valence_search > kMaxValenceSearch)
+    throw SettingError("valence_search", "remesh: the valence search must be between 0 and " +
+                                             std::to_string(kMaxValenceSearch) + " flips per chain");
+  if (s.curvature_sweeps < 0 || s.curvature_sweeps > kMaxCurvatureSweeps)
+    throw SettingError("curvature_sweeps", "remesh: the curvature sweeps must be between 0 and " +
+                                               std::to_string(kMaxCurvatureSweeps));
+  if (s.final_relaxation_rounds < 0 || s.final_relaxation_rounds > 100)
+    throw SettingError("final_relaxation_rounds",
+                       "remesh: the final relaxation rounds must be between 0 and 100");
+  if (s.iterations < 0 || s.iterations > 100)
+    throw SettingError("remesh_iterations", "remesh: iterations must be between 0 and 100");
+}
+
+}  // namespace isopatch

@@ -1,0 +1,135 @@
+// The quality presets (Settings::quality) through the whole pipeline, and the statistics that say where
+// the time and the defects are:
+// - preview meets its floor (closed, manifold, oriented, right genus, no self-intersections, vertices on
+//   f = 0, smallest angle >= 20 degrees, valence 6 >= 90%) with a mean-curvature error well below the
+//   raw projection mesh's, and keeps the raw mesh's vertices where nothing needed repair;
+// - fine has a lower mean-curvature error than default at the same size;
+// - every stage reports its time, evaluations per vertex are counted, and the raw mesh's defects add up
+//   to its vertices and triangles.
+#include <isopatch/isopatch.hpp>
+#include <isopatch/metrics.hpp>
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+
+#include "mesh_checks.hpp"
+#include "self_intersection.hpp"
+#include "test_surfaces.hpp"
+
+namespace isopatch {
+namespace {
+
+struct PresetCase {
+  const char* name;
+  SurfacePtr (*make)();
+  double edge_length;
+  int genus;
+};
+
+void PrintTo(const PresetCase& c, std::ostream* out) {
+  *out << c.name << " at edge length " << c.edge_length;
+}
+
+SurfacePtr torus() {
+  return test::torus();
+}
+
+Mesh mesh_with(const Surface& s, double edge_length, Quality quality, MeshStats* stats,
+               std::optional<int> remesh = std::nullopt) {
+  Settings settings;
+  settings.edge_length = edge_length;
+  settings.quality = quality;
+  settings.remesh_iterations = remesh;
+  return mesh_surface(s, settings, stats);
+}
+
+class QualityPresets : public ::testing::TestWithParam<PresetCase> {};
+
+TEST_P(QualityPresets, PreviewMeetsItsFloor) {
+  const PresetCase c = GetParam();
+  const SurfacePtr s = c.make();
+  MeshStats stats, raw_stats;
+  const Mesh mesh = mesh_with(*s, c.edge_length, Quality::Preview, &stats);
+  const Mesh raw = mesh_with(*s, c.edge_length, Quality::Default, &raw_stats, 0);
+  EXPECT_GE(mesh.vertex_count(), 1000u);
+  const QualityReport q = analyze_quality(mesh, s.get());
+  EXPECT_TRUE(q.topology.watertight());
+  EXPECT_TRUE(q.topology.manifold());
+  EXPECT_TRUE(q.topology.consistently_oriented());
+  EXPECT_EQ(q.topology.components.size(), 1u);
+  EXPECT_EQ(q.topology.genus, c.genus);
+  EXPECT_EQ(test::count_self_intersections(mesh), 0u);
+  EXPECT_LT(test::max_vertex_distance(*s, mesh), 1e-9 * s->box().diagonal());
+  EXPECT_GE(q.valence.share_6, 0.90);
+  EXPECT_GE(q.shape.min_angle.min, 20.0);
+  // The raw mesh has slivers; the local repair removes them and lowers the curvature error.
+  const QualityReport r = analyze_quality(raw, s.get());
+  EXPECT_LT(r.shape.min_angle.min, 20.0);
+  EXPECT_LT(q.accuracy->mean_curvature.nrms, 0.5 * r.accuracy->mean_curvature.nrms);
+  // Local: most vertices are the raw mesh's (collapses remove a few, nothing is split).
+  EXPECT_LE(mesh.vertex_count(), raw.vertex_count());
+  EXPECT_GE(mesh.vertex_count(), raw.vertex_count() * 8 / 10);
+  EXPECT_EQ(stats.cleanup->splits, 0u);
+}
+
+TEST_P(QualityPresets, FineHasALowerCurvatureErrorThanDefault) {
+  const PresetCase c = GetParam();
+  const SurfacePtr s = c.make();
+  MeshStats fine_stats, default_stats;
+  const Mesh fine = mesh_with(*s, c.edge_length, Quality::Fine, &fine_stats);
+  const Mesh normal = mesh_with(*s, c.edge_length, Quality::Default, &default_stats);
+  const QualityReport f = analyze_quality(fine, s.get());
+  const QualityReport d = analyze_quality(normal, s.get());
+  EXPECT_LT(f.accuracy->mean_curvature.nrms, d.accuracy->mean_curvature.nrms);
+  EXPECT_GE(f.valence.share_6, 0.90);
+  EXPECT_GE(f.shape.min_angle.min, 20.0);
+  EXPECT_GT(fine_stats.cleanup->exactness_moves, default_stats.cleanup->exactness_moves);
+}
+
+INSTANTIATE_TEST_SUITE_P(Surfaces, QualityPresets,
+                         ::testing::Values(PresetCase{"torus", &torus, 0.05, 1},
+                                           PresetCase{"tanglecube", &test::tanglecube, 0.12, 5},
+                                           PresetCase{"genus2", &test::genus2, 0.03, 2}),
+                         [](const ::testing::TestParamInfo<PresetCase>& param) {
+                           return std::string(param.param.name);
+                         });
+
+TEST(StageStatistics, EveryStageReportsItsTimeAndTheDefectsAddUp) {
+  const SurfacePtr s = test::torus();
+  MeshStats stats, raw_stats;
+  mesh_with(*s, 0.08, Quality::Default, &stats);
+  const Mesh raw = mesh_with(*s, 0.08, Quality::Default, &raw_stats, 0);
+  for (const char* stage : {"partition", "sides", "patches", "checks", "defects", "cleanup_split",
+                            "cleanup_collapse", "cleanup_flip", "cleanup_relax", "cleanup_curvature"}) {
+    bool found = false;
+    for (const auto& [name, seconds] : stats.times.seconds)
+      if (name == stage) found = seconds >= 0.0;
+    EXPECT_TRUE(found) << stage;
+  }
+  double sum = 0.0;
+  for (const auto& [name, seconds] : stats.times.seconds) sum += seconds;
+  EXPECT_LE(sum, stats.seconds * 1.01 + 1e-3);
+  EXPECT_GT(stats.gradient_evaluations, stats.vertices);  // the clean-up evaluates grad f per move
+  // The raw mesh's defects: every vertex and triangle counted once, by kind.
+  const RawDefects& d = raw_stats.projection->defects.value();
+  std::size_t vertices = 0, triangles = 0, under_20 = 0;
+  for (int k = 0; k < RawDefects::kKinds; ++k) {
+    vertices += d.vertices[k];
+    triangles += d.triangles[k];
+    under_20 += d.triangles_under_20[k];
+    EXPECT_LE(d.irregular_vertices[k], d.vertices[k]);
+    EXPECT_LE(d.triangles_under_10[k], d.triangles_under_20[k]);
+  }
+  EXPECT_EQ(vertices, raw.vertex_count());
+  EXPECT_EQ(triangles, raw.triangle_count());
+  const QualityReport r = analyze_quality(raw, s.get());
+  EXPECT_NEAR(static_cast<double>(under_20) / static_cast<double>(triangles), r.shape.share_below_20, 1e-9);
+  EXPECT_GT(d.vertices[1], 0u);  // seams
+  EXPECT_GT(d.vertices[2], 0u);  // patch interiors
+}
+
+}  // namespace
+}  // namespace isopatch
