@@ -79,7 +79,8 @@ struct RemeshSettings {
 /// Per-vertex attributes are carried over for surviving vertices; vertices created by splits take the
 /// value of the first edge end, except for an attribute named "role", where they get 5.
 /// \throw InputError for invalid settings; EvaluationError if f or its derivatives are not finite at a
-///        vertex; LimitError("cancelled").
+///        vertex; LimitError("cancelled"). After an exception from the remeshing itself (not from the
+///        checks of the settings and the mesh), `mesh` is left empty: it is held once, not twice.
 RemeshStats remesh_on_surface(Mesh& mesh, const Surface& surface, const RemeshSettings& settings);
 
 }  // namespace isopatch

@@ -557,8 +557,9 @@ RemeshStats remesh_on_surface(Mesh& mesh, const Surface& surface, const RemeshSe
     const Vec3 g = f.value_gradient(mesh.positions[v]).gradient;
     if (g.norm() > 0.0) normals[v] = g.normalized();
   }
-  EditableMesh editable(mesh, std::move(normals));
   const double tolerance = 1e-13 * std::max(bounding_box(mesh).diagonal(), 1e-300);
+  EditableMesh editable(mesh, std::move(normals));
+  mesh = Mesh{};  // the editable copy is the mesh now: no second copy held through the clean-up
   Remesher remesher(surface, editable, settings, tolerance);
   RemeshStats stats = remesher.run();
   stats.iterations = settings.iterations;

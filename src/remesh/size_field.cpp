@@ -17,6 +17,10 @@ double SizeField::raw(const Vec3& p) {
 
 void SizeField::update(const EditableMesh& mesh) {
   const std::size_t n = mesh.vertex_slots();
+  if (!varies()) {  // one size everywhere: no per-vertex cache
+    graded_.assign(n, settings_.sizes.largest);
+    return;
+  }
   raw_.resize(n, std::numeric_limits<double>::quiet_NaN());
   raw_at_.resize(n, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
   graded_.assign(n, settings_.sizes.largest);
@@ -28,7 +32,6 @@ void SizeField::update(const EditableMesh& mesh) {
     }
     graded_[v] = raw_[v];
   }
-  if (!varies()) return;
   // Grading: h(v) <= h(u) + grading |u - v| along edges, by relaxation sweeps until nothing changes.
   const auto edges = mesh.edges();
   for (int sweep = 0; sweep < 64; ++sweep) {

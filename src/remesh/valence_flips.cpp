@@ -32,7 +32,10 @@ bool same_edge(const VertexPair& p, std::uint32_t a, std::uint32_t b) {
 class GlideSearch {
  public:
   GlideSearch(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits)
-      : mesh_(mesh), flip_(flip), limits_(limits) {}
+      : mesh_(mesh),
+        flip_(flip),
+        limits_(limits),
+        around_(static_cast<std::size_t>(std::max(limits.depth, 1))) {}
 
   /// Flips kept by a chain starting with the flip of a-b (0 when none was found).
   std::size_t start(std::uint32_t a, std::uint32_t b) {
@@ -56,11 +59,14 @@ class GlideSearch {
   /// The interior edges at the four vertices of the flip just made (now c-d), once each, without c-d.
   /// Read from the triangle fan of each vertex alone: edge v-w is (v, w, c) in one triangle and
   /// (w, v, d) in another, both incident to v.
-  std::vector<Candidate> candidates_around(const EditableMesh::Edge& e) const {
-    std::vector<Candidate> out;
+  /// Written into `out` (cleared first); the fans' scratch lists are members, so no allocation once
+  /// they have grown.
+  void candidates_around(const EditableMesh::Edge& e, std::vector<Candidate>& out) {
+    out.clear();
     const std::uint32_t quad[4] = {e.a, e.b, e.c, e.d};
     const auto in_quad = [&](std::uint32_t w) { return std::find(quad, quad + 4, w) != quad + 4; };
-    std::vector<std::uint32_t> next, previous;
+    std::vector<std::uint32_t>& next = next_;
+    std::vector<std::uint32_t>& previous = previous_;
     for (std::uint32_t v : quad) {
       next.clear();
       previous.clear();
@@ -80,7 +86,6 @@ class GlideSearch {
         out.push_back({{v, w}, flip_energy_change(mesh_, EditableMesh::Edge{v, w, c, d, 0, 0})});
       }
     }
-    return out;
   }
 
   /// Flips e (its energy change brought the chain's debt to `debt`), then looks at the edges around its
@@ -88,7 +93,10 @@ class GlideSearch {
   /// within limits.max_debt to continue from. Undoes e when nothing is found.
   std::size_t chain(const EditableMesh::Edge& e, int depth, int debt) {
     if (budget_-- <= 0 || !flip_(e, true)) return 0;
-    const std::vector<Candidate> around = candidates_around(e);
+    // One candidate list per chain depth, kept between chains (sized once: a deeper call must not
+    // move the lists the shallower ones are iterating).
+    std::vector<Candidate>& around = around_[static_cast<std::size_t>(limits_.depth - depth)];
+    candidates_around(e, around);
     for (const Candidate& next : around) {
       if (next.change + debt >= 0) continue;
       if (const auto edge = mesh_.interior_edge(next.edge.first, next.edge.second);
@@ -112,6 +120,8 @@ class GlideSearch {
   const FlipIfValid& flip_;
   const GlideLimits& limits_;
   int budget_ = 0;
+  std::vector<std::vector<Candidate>> around_;  ///< per chain depth
+  std::vector<std::uint32_t> next_, previous_;  ///< scratch of candidates_around
 };
 
 /// The edges whose flip changes the valence of an irregular vertex: those at it and those of its link
