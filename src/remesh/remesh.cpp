@@ -40,7 +40,7 @@ constexpr double kRepairAngle = 20.0;
 /// times.
 constexpr double kLocalAngle = 30.0;
 constexpr int kLocalRings = 2;
-constexpr int kLocalRelaxationRounds = 6;
+constexpr int kLocalRelaxationRounds = 3;
 /// The local repair collapses only the short edges that cells clipped near a corner leave: the patch
 /// lattices' own short edges (down to about half the size across a stretched template) are kept, or
 /// their collapses would leave irregular vertices behind.
