@@ -161,9 +161,26 @@ bool triangles_meet(const Mesh& mesh, const Triangle& s, const Triangle& t, Vec3
   }
 }
 
+/// x rounded to a float no larger (down) or no smaller (up) than x.
+float round_down(double x) {
+  const auto f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float round_up(double x) {
+  const auto f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+/// A box in floats rounded outwards (it holds the double box, so overlaps are never missed; the exact
+/// triangle test decides): half the memory of doubles, for meshes of millions of triangles.
 struct BoxOf {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity());
+  Eigen::Vector3f hi = Eigen::Vector3f::Constant(-std::numeric_limits<float>::infinity());
+  static BoxOf around(const Vec3& p) {
+    BoxOf b;
+    for (int a = 0; a < 3; ++a) b.lo[a] = round_down(p[a]), b.hi[a] = round_up(p[a]);
+    return b;
+  }
   void add(const BoxOf& b) {
     lo = lo.cwiseMin(b.lo);
     hi = hi.cwiseMax(b.hi);
@@ -178,7 +195,7 @@ class TriangleTree {
  public:
   static constexpr std::size_t kLeafSize = 4;
 
-  TriangleTree(std::vector<BoxOf> boxes, std::vector<std::size_t> order)
+  TriangleTree(std::vector<BoxOf> boxes, std::vector<std::uint32_t> order)
       : boxes_(std::move(boxes)), order_(std::move(order)) {
     nodes_.reserve(2 * order_.size() / kLeafSize + 2);
     if (!order_.empty()) build(0, order_.size());
@@ -194,8 +211,8 @@ class TriangleTree {
  private:
   struct Node {
     BoxOf box;
-    std::size_t begin = 0, end = 0;   // triangle range in order_ (leaves)
-    std::size_t left = 0, right = 0;  // children (inner nodes; left == 0 for leaves)
+    std::uint32_t begin = 0, end = 0;   // triangle range in order_ (leaves)
+    std::uint32_t left = 0, right = 0;  // children (inner nodes; left == 0 for leaves)
     bool leaf() const { return left == 0; }
   };
 
@@ -206,12 +223,12 @@ class TriangleTree {
     for (std::size_t k = begin; k < end; ++k) {
       const BoxOf& b = boxes_[order_[k]];
       box.add(b);
-      const Vec3 c = 0.5 * (b.lo + b.hi);
+      const Eigen::Vector3f c = 0.5f * (b.lo + b.hi);
       centres.add(BoxOf{c, c});
     }
     nodes_[index].box = box;
-    nodes_[index].begin = begin;
-    nodes_[index].end = end;
+    nodes_[index].begin = static_cast<std::uint32_t>(begin);
+    nodes_[index].end = static_cast<std::uint32_t>(end);
     if (end - begin <= kLeafSize) return index;
     int axis = 0;
     (centres.hi - centres.lo).maxCoeff(&axis);
@@ -220,11 +237,11 @@ class TriangleTree {
     std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(begin),
                      order_.begin() + static_cast<std::ptrdiff_t>(middle),
                      order_.begin() + static_cast<std::ptrdiff_t>(end),
-                     [&](std::size_t a, std::size_t b) { return centre(a) < centre(b); });
+                     [&](std::uint32_t a, std::uint32_t b) { return centre(a) < centre(b); });
     const std::size_t left = build(begin, middle);
     const std::size_t right = build(middle, end);
-    nodes_[index].left = left;
-    nodes_[index].right = right;
+    nodes_[index].left = static_cast<std::uint32_t>(left);
+    nodes_[index].right = static_cast<std::uint32_t>(right);
     return index;
   }
 
@@ -258,7 +275,7 @@ class TriangleTree {
   }
 
   std::vector<BoxOf> boxes_;
-  std::vector<std::size_t> order_;
+  std::vector<std::uint32_t> order_;
   std::vector<Node> nodes_;
 };
 
@@ -266,14 +283,16 @@ class TriangleTree {
 
 SelfIntersectionReport find_self_intersections(const Mesh& mesh, std::size_t limit) {
   analysis::check_mesh(mesh, "find_self_intersections");
+  if (mesh.triangles.size() >= std::numeric_limits<std::uint32_t>::max())
+    throw InputError("find_self_intersections: more than 2^32 triangles");
   std::vector<BoxOf> boxes(mesh.triangles.size());
-  std::vector<std::size_t> order;
+  std::vector<std::uint32_t> order;
   order.reserve(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const Triangle& tri = mesh.triangles[t];
     if (analysis::repeats_vertex(tri)) continue;
-    for (std::uint32_t v : tri) boxes[t].add(BoxOf{mesh.positions[v], mesh.positions[v]});
-    order.push_back(t);
+    for (std::uint32_t v : tri) boxes[t].add(BoxOf::around(mesh.positions[v]));
+    order.push_back(static_cast<std::uint32_t>(t));
   }
   SelfIntersectionReport report;
   if (limit == 0) return report;
