@@ -41,6 +41,8 @@ constexpr double kRepairAngle = 20.0;
 constexpr double kLocalAngle = 30.0;
 constexpr int kLocalRings = 2;
 constexpr int kLocalRelaxationRounds = 3;
+/// Flips tried per neutral glide chain in the local repair's flip passes (200 in the whole-mesh rounds).
+constexpr int kLocalGlideBudget = 30;
 /// The local repair collapses only the short edges that cells clipped near a corner leave: the patch
 /// lattices' own short edges (down to about half the size across a stretched template) are kept, or
 /// their collapses would leave irregular vertices behind.
@@ -126,7 +128,7 @@ class Remesher {
     timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
     timed("cleanup_collapse", [&] { collapse_short_edges(); });
     timed("cleanup_repair", [&] { repair_until_settled(); });
-    timed("cleanup_flip", [&] { flip_valences(); });
+    timed("cleanup_flip", [&] { flip_valences(GlideLimits{.budget = kLocalGlideBudget}); });
     std::vector<std::uint32_t> work;
     timed("cleanup_relax", [&] {
       const DefectThresholds thresholds{.cos_small_angle = std::cos(kLocalAngle * std::numbers::pi / 180.0),
@@ -143,7 +145,7 @@ class Remesher {
     timed("cleanup_relax", [&] { relax(work, kLocalRelaxationRounds); });
     timed("cleanup_repair", [&] { repair_until_settled(); });
     // The relaxation frees flips that its angles refused: one more greedy pass with neutral chains.
-    timed("cleanup_flip", [&] { flip_valences(); });
+    timed("cleanup_flip", [&] { flip_valences(GlideLimits{.budget = kLocalGlideBudget}); });
     timed("cleanup_relax", [&] { relax(work, 2); });
     timed("cleanup_repair", [&] { repair_until_settled(); });
     stats_.gradient_evaluations = f_.gradient_count();
