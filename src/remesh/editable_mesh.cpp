@@ -128,17 +128,23 @@ bool EditableMesh::adjacent(std::uint32_t a, std::uint32_t b) const {
   return false;
 }
 
-std::vector<std::vector<std::uint32_t>> EditableMesh::independent_classes(
-    const std::vector<std::uint32_t>& vertices) const {
+namespace {
+
+/// Greedy classes of `vertices` in list order: each takes the smallest class that none of the
+/// vertices `conflicts(v, mark)` marks has taken.
+template <class Conflicts>
+std::vector<std::vector<std::uint32_t>> greedy_classes(std::size_t slots,
+                                                       const std::vector<std::uint32_t>& vertices,
+                                                       Conflicts conflicts) {
   constexpr std::uint32_t kNone = UINT32_MAX;
-  std::vector<std::uint32_t> colour(positions.size(), kNone);
+  std::vector<std::uint32_t> colour(slots, kNone);
   std::vector<std::vector<std::uint32_t>> classes;
   std::vector<char> taken;
   for (std::uint32_t v : vertices) {
     taken.assign(classes.size() + 1, 0);
-    for (std::uint32_t t : incident[v])
-      for (std::uint32_t w : triangles[t])
-        if (w != v && colour[w] != kNone) taken[colour[w]] = 1;
+    conflicts(v, [&](std::uint32_t w) {
+      if (w != v && colour[w] != kNone) taken[colour[w]] = 1;
+    });
     std::uint32_t c = 0;
     while (taken[c]) ++c;
     colour[v] = c;
@@ -146,6 +152,26 @@ std::vector<std::vector<std::uint32_t>> EditableMesh::independent_classes(
     classes[c].push_back(v);
   }
   return classes;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::uint32_t>> EditableMesh::independent_classes(
+    const std::vector<std::uint32_t>& vertices) const {
+  return greedy_classes(positions.size(), vertices, [&](std::uint32_t v, const auto& mark) {
+    for (std::uint32_t t : incident[v])
+      for (std::uint32_t w : triangles[t]) mark(w);
+  });
+}
+
+std::vector<std::vector<std::uint32_t>> EditableMesh::ring_disjoint_classes(
+    const std::vector<std::uint32_t>& vertices) const {
+  return greedy_classes(positions.size(), vertices, [&](std::uint32_t v, const auto& mark) {
+    for (std::uint32_t t : incident[v])
+      for (std::uint32_t w : triangles[t])
+        for (std::uint32_t t2 : incident[w])
+          for (std::uint32_t x : triangles[t2]) mark(x);
+  });
 }
 
 void EditableMesh::replace_vertex(std::uint32_t t, std::uint32_t from, std::uint32_t to) {

@@ -47,6 +47,10 @@ class EditableMesh {
   /// so the members of a class can move in parallel with one result.
   std::vector<std::vector<std::uint32_t>> independent_classes(
       const std::vector<std::uint32_t>& vertices) const;
+  /// The same with no two members of a class within two edges of each other (their rings of
+  /// neighbours are disjoint): members of a class may each rewrite data of their whole ring.
+  std::vector<std::vector<std::uint32_t>> ring_disjoint_classes(
+      const std::vector<std::uint32_t>& vertices) const;
 
   /// Splits the edge at the new vertex (position p, normal n); returns its id. Attributes are copied
   /// from e.a.

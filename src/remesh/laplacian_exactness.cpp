@@ -5,8 +5,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <numbers>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include "remesh/triangle_angle.hpp"
 
@@ -124,20 +129,41 @@ double laplacian_exactness_energy(const EditableMesh& mesh) {
 
 namespace {
 
+/// What one move works with (one per thread).
+struct Scratch {
+  std::vector<std::uint32_t> ring;               ///< u's neighbours and u
+  std::vector<std::size_t> corner_slot;          ///< [3 k + c]: ring index of corner c of u's k-th triangle
+  std::vector<MomentSums> ring_sums;             ///< the ring's sums with u at the trial position
+  std::vector<std::array<MomentSums, 3>> trial;  ///< corner sums of u's triangles at the last trial
+  Eigen::VectorXd r0, r1;
+  Eigen::VectorXd column[2];  ///< the Jacobian's columns (forward differences along e1, e2)
+};
+
 /// Gauss-Seidel sweeps with the moment sums of every vertex and every triangle corner cached: a trial
 /// position of u only recomputes u's triangles, once for all three corners, and adds the change to the
 /// cached sums of u and its neighbours.
 class ExactnessSweeper {
  public:
   ExactnessSweeper(EditableMesh& mesh, const ExactnessMoveRules& rules)
-      : mesh_(mesh), rules_(rules), floor_cosine_(std::cos(rules.angle_floor * std::numbers::pi / 180.0)) {}
+      : mesh_(mesh), rules_(rules), floor_cosine_(std::cos(rules.angle_floor * std::numbers::pi / 180.0)) {
+    std::vector<std::uint32_t> movable;
+    for (std::uint32_t u = 0; u < mesh_.vertex_slots(); ++u)
+      if (free(u)) movable.push_back(u);
+    classes_ = mesh_.ring_disjoint_classes(movable);
+  }
 
+  /// One sweep: the vertices by classes whose rings are disjoint (a move rewrites the sums of its
+  /// ring), each class in parallel: the same moves for any number of threads.
   std::size_t sweep() {
     refresh();
-    std::size_t kept = 0;
-    for (std::uint32_t u = 0; u < mesh_.vertex_slots(); ++u)
-      if (free(u) && usable_[u] && move(u)) ++kept;
-    return kept;
+    std::atomic<std::size_t> kept{0};
+    for (const std::vector<std::uint32_t>& members : classes_)
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, members.size(), 64), [&](const auto& range) {
+        Scratch& scratch = scratch_.local();
+        for (std::size_t i = range.begin(); i != range.end(); ++i)
+          if (usable_[members[i]] && move(members[i], scratch)) kept.fetch_add(1, std::memory_order_relaxed);
+      });
+    return kept.load();
   }
 
  private:
@@ -165,70 +191,81 @@ class ExactnessSweeper {
   }
 
   /// The ring of u (its neighbours and u) with their residuals when u sits at q, stacked into `out`;
-  /// the sums with u at q into ring_sums_, the corner sums of u's triangles into trial_. False when a
+  /// the sums with u at q into ring_sums, the corner sums of u's triangles into trial. False when a
   /// triangle of u degenerates.
-  bool evaluate(std::uint32_t u, const Vec3& q, Eigen::VectorXd& out) {
-    for (std::size_t i = 0; i < ring_.size(); ++i) ring_sums_[i] = sums_[ring_[i]];
-    trial_.resize(mesh_.incident[u].size());
+  bool evaluate(std::uint32_t u, const Vec3& q, Eigen::VectorXd& out, Scratch& s) const {
+    const std::vector<std::uint32_t>& ring = s.ring;
+    const std::vector<std::size_t>& corner_slot = s.corner_slot;
+    std::vector<MomentSums>& ring_sums = s.ring_sums;
+    std::vector<std::array<MomentSums, 3>>& trial = s.trial;
+    for (std::size_t i = 0; i < ring.size(); ++i) ring_sums[i] = sums_[ring[i]];
+    trial.resize(mesh_.incident[u].size());
     for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) {
       const std::uint32_t t = mesh_.incident[u][k];
       const Triangle& tri = mesh_.triangles[t];
       if (!triangle_sums({&position(mesh_, tri[0], u, q), &position(mesh_, tri[1], u, q),
                           &position(mesh_, tri[2], u, q)},
-                         {&frame_[tri[0]], &frame_[tri[1]], &frame_[tri[2]]}, trial_[k]))
+                         {&frame_[tri[0]], &frame_[tri[1]], &frame_[tri[2]]}, trial[k]))
         return false;
       for (std::size_t c = 0; c < 3; ++c) {
-        MomentSums& s = ring_sums_[corner_slot_[3 * k + c]];
-        s -= corner_[t][c];
-        s += trial_[k][c];
+        MomentSums& sum = ring_sums[corner_slot[3 * k + c]];
+        sum -= corner_[t][c];
+        sum += trial[k][c];
       }
     }
-    for (std::size_t i = 0; i < ring_.size(); ++i)
+    for (std::size_t i = 0; i < ring.size(); ++i)
       out.segment<3>(3 * static_cast<Eigen::Index>(i)) =
-          free(ring_[i]) ? residual_of(ring_sums_[i]) : Eigen::Vector3d::Zero();
+          free(ring[i]) ? residual_of(ring_sums[i]) : Eigen::Vector3d::Zero();
     return true;
   }
 
-  /// ring_: u's neighbours and u; corner_slot_[3 k + c]: the ring index of corner c of u's k-th
+  /// ring: u's neighbours and u; corner_slot[3 k + c]: the ring index of corner c of u's k-th
   /// triangle.
-  void collect_ring(std::uint32_t u) {
-    ring_.clear();
-    corner_slot_.resize(3 * mesh_.incident[u].size());
+  void collect_ring(std::uint32_t u, Scratch& s) const {
+    std::vector<std::uint32_t>& ring = s.ring;
+    std::vector<std::size_t>& corner_slot = s.corner_slot;
+    ring.clear();
+    corner_slot.resize(3 * mesh_.incident[u].size());
     for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) {
       const Triangle& tri = mesh_.triangles[mesh_.incident[u][k]];
       for (std::size_t c = 0; c < 3; ++c) {
-        const auto found = std::find(ring_.begin(), ring_.end(), tri[c]);
-        corner_slot_[3 * k + c] = static_cast<std::size_t>(found - ring_.begin());
-        if (found == ring_.end()) ring_.push_back(tri[c]);
+        const auto found = std::find(ring.begin(), ring.end(), tri[c]);
+        corner_slot[3 * k + c] = static_cast<std::size_t>(found - ring.begin());
+        if (found == ring.end()) ring.push_back(tri[c]);
       }
     }
   }
 
-  bool move(std::uint32_t u) {
-    collect_ring(u);
-    ring_sums_.resize(ring_.size());
-    const Eigen::Index rows = 3 * static_cast<Eigen::Index>(ring_.size());
-    r0_.resize(rows), r1_.resize(rows), column_[0].resize(rows), column_[1].resize(rows);
-    for (std::size_t i = 0; i < ring_.size(); ++i)
-      r0_.segment<3>(3 * static_cast<Eigen::Index>(i)) =
-          free(ring_[i]) ? residual_of(sums_[ring_[i]]) : Eigen::Vector3d::Zero();
-    const double before = r0_.squaredNorm();
+  bool move(std::uint32_t u, Scratch& s) {
+    collect_ring(u, s);
+    const std::vector<std::uint32_t>& ring = s.ring;
+    std::vector<MomentSums>& ring_sums = s.ring_sums;
+    const std::vector<std::array<MomentSums, 3>>& trial = s.trial;
+    Eigen::VectorXd &r0 = s.r0, &r1 = s.r1;
+    Eigen::VectorXd* column = s.column;
+    ring_sums.resize(ring.size());
+    const Eigen::Index rows = 3 * static_cast<Eigen::Index>(ring.size());
+    r0.resize(rows), r1.resize(rows), column[0].resize(rows), column[1].resize(rows);
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      r0.segment<3>(3 * static_cast<Eigen::Index>(i)) =
+          free(ring[i]) ? residual_of(sums_[ring[i]]) : Eigen::Vector3d::Zero();
+    const double before = r0.squaredNorm();
     const Vec3 p = mesh_.positions[u];
     const Vec3 n = mesh_.normals[u];
     const Frame& f = frame_[u];
     const double h = rules_.size(u);
     const double delta = 1e-4 * h;
     for (int k = 0; k < 2; ++k) {
-      if (!evaluate(u, p + delta * (k == 0 ? f.e1 : f.e2), r1_)) return false;
-      column_[k] = (r1_ - r0_) / delta;
+      if (!evaluate(u, p + delta * (k == 0 ? f.e1 : f.e2), r1, s)) return false;
+      column[k] = (r1 - r0) / delta;
     }
     // Normal equations of the 2-column Jacobian, slightly damped.
     Eigen::Matrix2d normal;
-    normal(0, 0) = column_[0].squaredNorm();
-    normal(1, 1) = column_[1].squaredNorm();
-    normal(0, 1) = normal(1, 0) = column_[0].dot(column_[1]);
+    normal(0, 0) = column[0].squaredNorm();
+    normal(1, 1) = column[1].squaredNorm();
+    normal(0, 1) = normal(1, 0) = column[0].dot(column[1]);
     normal.diagonal().array() += 1e-9 * normal.trace() + 1e-300;
-    Eigen::Vector2d step = -normal.ldlt().solve(Eigen::Vector2d(column_[0].dot(r0_), column_[1].dot(r0_)));
+    Eigen::Vector2d step = -normal.ldlt().solve(Eigen::Vector2d(column[0].dot(r0), column[1].dot(r0)));
     if (!step.allFinite()) return false;
     if (step.norm() > 0.2 * h) step *= 0.2 * h / step.norm();
     // The floor as the cosine of an angle: no smallest angle may fall below min(its own, the floor).
@@ -238,7 +275,7 @@ class ExactnessSweeper {
       Vec3 q = p + step[0] * f.e1 + step[1] * f.e2;
       Vec3 nq = n;
       if (!rules_.project(q, nq, step.norm() + h)) return false;
-      if (!evaluate(u, q, r1_) || !(r1_.squaredNorm() < before)) continue;
+      if (!evaluate(u, q, r1, s) || !(r1.squaredNorm() < before)) continue;
       bool valid = true;
       for (std::uint32_t t : mesh_.incident[u])
         if (!rules_.triangle_valid(t, u, q, nq) || angle_cosine(t, u, q) > floor_cosine) {
@@ -248,8 +285,8 @@ class ExactnessSweeper {
       if (!valid) continue;
       mesh_.positions[u] = q;
       mesh_.normals[u] = nq;
-      for (std::size_t i = 0; i < ring_.size(); ++i) sums_[ring_[i]] = ring_sums_[i];
-      for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) corner_[mesh_.incident[u][k]] = trial_[k];
+      for (std::size_t i = 0; i < ring.size(); ++i) sums_[ring[i]] = ring_sums[i];
+      for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) corner_[mesh_.incident[u][k]] = trial[k];
       return true;
     }
     return false;
@@ -268,13 +305,9 @@ class ExactnessSweeper {
   std::vector<Frame> frame_;      ///< per vertex slot: tangent frame of its normal at the sweep's start
   std::vector<MomentSums> sums_;  ///< per vertex slot: moment sums in that frame
   std::vector<bool> usable_;      ///< per vertex slot: no degenerate triangle around it
-  std::vector<std::array<MomentSums, 3>> corner_;  ///< per triangle slot: the sums at each corner
-  std::vector<std::uint32_t> ring_;
-  std::vector<std::size_t> corner_slot_;
-  std::vector<MomentSums> ring_sums_;
-  std::vector<std::array<MomentSums, 3>> trial_;  ///< corner sums of u's triangles at the last trial
-  Eigen::VectorXd r0_, r1_;
-  Eigen::VectorXd column_[2];  ///< the Jacobian's columns (forward differences along e1, e2)
+  std::vector<std::array<MomentSums, 3>> corner_;    ///< per triangle slot: the sums at each corner
+  std::vector<std::vector<std::uint32_t>> classes_;  ///< free vertices, by classes of disjoint rings
+  tbb::enumerable_thread_specific<Scratch> scratch_;
 };
 
 }  // namespace
