@@ -6,46 +6,21 @@
 // surface, 5 parse, 6 file, 8 no surface in the box, 1 internal).
 #include <isopatch/error.hpp>
 #include <isopatch/mesh_io.hpp>
-#include <isopatch/resolve_surface.hpp>
 
 #include <CLI/CLI.hpp>
 
-#include <charconv>
-#include <cmath>
 #include <cstdio>
-#include <exception>
-#include <map>
-#include <optional>
 #include <string>
-#include <vector>
 
 #include "cgal_peer/peer_mesher.hpp"
+#include "peer_support/peer_support.hpp"
 #include "tool_errors.hpp"
 
 namespace {
 
-// "name=value" items -> map, as `isopatch mesh --param`. \throw InputError for a malformed item.
-std::map<std::string, double> parse_params(const std::vector<std::string>& items) {
-  std::map<std::string, double> params;
-  for (const std::string& item : items) {
-    const auto eq = item.find('=');
-    double value = 0.0;
-    const char* end = item.data() + item.size();
-    const bool ok = eq != std::string::npos && eq > 0 && eq + 1 < item.size();
-    const auto parsed = ok ? std::from_chars(item.data() + eq + 1, end, value) : std::from_chars_result{};
-    if (!ok || parsed.ec != std::errc() || parsed.ptr != end || !std::isfinite(value))
-      throw isopatch::InputError("bad --param '" + item + "' (want name=value with a finite number)");
-    if (!params.emplace(item.substr(0, eq), value).second)
-      throw isopatch::InputError("--param " + item.substr(0, eq) + " is given twice");
-  }
-  return params;
-}
-
 struct Arguments {
-  std::string surface;
+  isopatch::bench::SurfaceArguments surface;
   std::string output;
-  std::string box;
-  std::vector<std::string> params;
   isopatch::bench::PeerOptions peer;
   bool json = false;
 };
@@ -53,8 +28,7 @@ struct Arguments {
 int run(const Arguments& a) {
   using namespace isopatch;
   isopatch::format_from_path(a.output);  // unknown extension: IoError before any work
-  const std::optional<Box> box = a.box.empty() ? std::nullopt : std::optional<Box>(parse_box(a.box));
-  const SurfacePtr surface = resolve_surface(a.surface, box, parse_params(a.params));
+  const SurfacePtr surface = a.surface.resolve();
   const bench::PeerResult r = bench::cgal_surface_mesh(*surface, surface->box(), a.peer);
   write_mesh(r.mesh, a.output);
   const double ms = 1e3 * r.seconds;
@@ -84,10 +58,8 @@ int run(const Arguments& a) {
 int main(int argc, char** argv) {
   CLI::App app{"CGAL Surface_mesher on an isopatch surface (the peer of the quality report)"};
   Arguments a;
-  app.add_option("surface", a.surface, "Catalogue name, formula or @file")->required();
+  a.surface.add_to(app);
   app.add_option("-o,--output", a.output, "Output mesh: .ply, .obj, .off or .stl")->required();
-  app.add_option("--box", a.box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
-  app.add_option("--param", a.params, "Override a definition of the formula: name=value (repeatable)");
   app.add_option("--radius", a.peer.radius_bound, "Radius bound of the surface Delaunay balls (size)")
       ->capture_default_str();
   app.add_option("--distance", a.peer.distance_bound, "Distance bound (default: radius / 10)");
