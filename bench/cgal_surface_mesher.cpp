@@ -18,28 +18,21 @@
 
 namespace {
 
-struct Arguments {
-  isopatch::bench::SurfaceArguments surface;
-  std::string output;
-  isopatch::bench::PeerOptions peer;
-  bool json = false;
-};
+using Arguments = isopatch::bench::SurfacePeerArguments<isopatch::bench::PeerOptions>;
 
 int run(const Arguments& a) {
   using namespace isopatch;
-  isopatch::format_from_path(a.output);  // unknown extension: IoError before any work
-  const SurfacePtr surface = a.surface.resolve();
-  const bench::PeerResult r = bench::cgal_surface_mesh(*surface, surface->box(), a.peer);
-  write_mesh(r.mesh, a.output);
+  const auto [surface, r] = bench::mesh_and_write(
+      a, [&a](const Surface& s) { return bench::cgal_surface_mesh(s, s.box(), a.options); });
   const double ms = 1e3 * r.seconds;
-  if (a.json) {
+  if (a.output.json) {
     std::printf(
         "{\"system\":\"cgal\",\"surface\":\"%s\",\"vertices\":%zu,\"triangles\":%zu,\"ms\":%.6f,"
         "\"radius_bound\":%.17g,\"distance_bound\":%.17g,\"angle_bound\":%.17g,\"box_facets_removed\":%zu,"
         "\"non_finite_values\":%zu,\"output\":\"%s\"}\n",
-        surface->name().c_str(), r.mesh.vertex_count(), r.mesh.triangle_count(), ms, a.peer.radius_bound,
-        a.peer.distance_bound > 0 ? a.peer.distance_bound : a.peer.radius_bound / 10, a.peer.angle_bound,
-        r.box_facets_removed, r.non_finite_values, a.output.c_str());
+        surface->name().c_str(), r.mesh.vertex_count(), r.mesh.triangle_count(), ms, a.options.radius_bound,
+        a.options.distance_bound > 0 ? a.options.distance_bound : a.options.radius_bound / 10,
+        a.options.angle_bound, r.box_facets_removed, r.non_finite_values, a.output.path.c_str());
   } else {
     std::printf("surface    %s (CGAL Surface_mesher)\n", surface->name().c_str());
     std::printf("vertices   %zu\ntriangles  %zu\n", r.mesh.vertex_count(), r.mesh.triangle_count());
@@ -48,7 +41,7 @@ int run(const Arguments& a) {
     if (r.box_facets_removed > 0) std::printf("box facets %zu removed\n", r.box_facets_removed);
     if (r.non_finite_values > 0)
       std::printf("non-finite %zu values of f counted positive\n", r.non_finite_values);
-    std::printf("time       %.3f ms\nwrote      %s\n", ms, a.output.c_str());
+    std::printf("time       %.3f ms\nwrote      %s\n", ms, a.output.path.c_str());
   }
   return 0;
 }
@@ -58,19 +51,17 @@ int run(const Arguments& a) {
 int main(int argc, char** argv) {
   CLI::App app{"CGAL Surface_mesher on an isopatch surface (the peer of the quality report)"};
   Arguments a;
-  a.surface.add_to(app);
-  app.add_option("-o,--output", a.output, "Output mesh: .ply, .obj, .off or .stl")->required();
-  app.add_option("--radius", a.peer.radius_bound, "Radius bound of the surface Delaunay balls (size)")
+  a.add_to(app);
+  app.add_option("--radius", a.options.radius_bound, "Radius bound of the surface Delaunay balls (size)")
       ->capture_default_str();
-  app.add_option("--distance", a.peer.distance_bound, "Distance bound (default: radius / 10)");
-  app.add_option("--angle", a.peer.angle_bound, "Angle bound in degrees")->capture_default_str();
-  app.add_option("--error-bound", a.peer.error_bound,
+  app.add_option("--distance", a.options.distance_bound, "Distance bound (default: radius / 10)");
+  app.add_option("--angle", a.options.angle_bound, "Angle bound in degrees")->capture_default_str();
+  app.add_option("--error-bound", a.options.error_bound,
                  "Oracle bisection precision, relative to the sphere radius")
       ->capture_default_str();
-  app.add_option("--initial-points", a.peer.initial_points, "Initial points on the surface")
+  app.add_option("--initial-points", a.options.initial_points, "Initial points on the surface")
       ->capture_default_str();
-  app.add_flag("--keep-box-faces", a.peer.keep_box_faces,
+  app.add_flag("--keep-box-faces", a.options.keep_box_faces,
                "Keep the facets closing an open surface on the box");
-  app.add_flag("--json", a.json, "Print one JSON line instead of a summary");
   return isopatch::bench::run_tool("isopatch_cgal_peer", app, argc, argv, [&] { return run(a); });
 }

@@ -17,20 +17,13 @@
 
 namespace {
 
-struct Arguments {
-  isopatch::bench::SurfaceArguments surface;
-  std::string output;
-  isopatch::bench::FlyingEdgesOptions options;
-  bool json = false;
-};
+using Arguments = isopatch::bench::SurfacePeerArguments<isopatch::bench::FlyingEdgesOptions>;
 
 int run(const Arguments& a) {
   using namespace isopatch;
-  format_from_path(a.output);  // unknown extension: IoError before any work
-  const SurfacePtr surface = a.surface.resolve();
-  const bench::FlyingEdgesResult r = bench::flying_edges(*surface, surface->box(), a.options);
-  write_mesh(r.mesh, a.output);
-  if (a.json) {
+  const auto [surface, r] =
+      bench::mesh_and_write(a, [&a](const Surface& s) { return bench::flying_edges(s, s.box(), a.options); });
+  if (a.output.json) {
     std::printf(
         "{\"system\":\"flying_edges\",\"surface\":\"%s\",\"vertices\":%zu,\"triangles\":%zu,\"ms\":%.6f,"
         "\"sample_ms\":%.6f,\"contour_ms\":%.6f,\"convert_ms\":%.6f,\"grid\":%d,\"samples\":[%d,%d,%d],"
@@ -39,7 +32,7 @@ int run(const Arguments& a) {
         surface->name().c_str(), r.mesh.vertex_count(), r.mesh.triangle_count(), 1e3 * r.seconds,
         1e3 * r.sample_seconds, 1e3 * r.contour_seconds, 1e3 * r.convert_seconds, a.options.grid,
         r.samples[0], r.samples[1], r.samples[2], r.value_evaluations, r.non_finite_values,
-        r.degenerate_dropped, a.options.threads, r.smp_backend.c_str(), a.output.c_str());
+        r.degenerate_dropped, a.options.threads, r.smp_backend.c_str(), a.output.path.c_str());
   } else {
     std::printf("surface    %s (VTK Flying Edges)\n", surface->name().c_str());
     std::printf("vertices   %zu\ntriangles  %zu\n", r.mesh.vertex_count(), r.mesh.triangle_count());
@@ -50,7 +43,7 @@ int run(const Arguments& a) {
     std::printf("time       %.3f ms (sampling %.3f, contour %.3f, conversion %.3f; %d threads, %s)\n",
                 1e3 * r.seconds, 1e3 * r.sample_seconds, 1e3 * r.contour_seconds, 1e3 * r.convert_seconds,
                 a.options.threads, r.smp_backend.c_str());
-    std::printf("wrote      %s\n", a.output.c_str());
+    std::printf("wrote      %s\n", a.output.path.c_str());
   }
   return 0;
 }
@@ -60,11 +53,9 @@ int run(const Arguments& a) {
 int main(int argc, char** argv) {
   CLI::App app{"VTK Flying Edges on an isopatch surface (a peer of the performance report)"};
   Arguments a;
-  a.surface.add_to(app);
-  app.add_option("-o,--output", a.output, "Output mesh: .ply, .obj, .off or .stl")->required();
+  a.add_to(app);
   app.add_option("--grid", a.options.grid, "Cells along the longest side of the box")->capture_default_str();
   app.add_option("--threads", a.options.threads, "Threads of the sampling and of VTK's SMP back end")
       ->capture_default_str();
-  app.add_flag("--json", a.json, "Print one JSON line instead of a summary");
   return isopatch::bench::run_tool("isopatch_vtk_peer", app, argc, argv, [&] { return run(a); });
 }

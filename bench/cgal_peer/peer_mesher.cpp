@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "interior_seed.hpp"
-#include "peer_support/peer_support.hpp"
+#include "peer_support/orient.hpp"
 #include "to_mesh.hpp"
 
 namespace isopatch::bench {

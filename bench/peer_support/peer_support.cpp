@@ -2,12 +2,12 @@
 
 #include <isopatch/error.hpp>
 #include <isopatch/geometry.hpp>
+#include <isopatch/mesh_io.hpp>
 #include <isopatch/resolve_surface.hpp>
 
 #include <charconv>
 #include <cmath>
 #include <optional>
-#include <utility>
 
 namespace isopatch::bench {
 
@@ -38,18 +38,13 @@ SurfacePtr SurfaceArguments::resolve() const {
   return resolve_surface(surface, region, parse_params(params));
 }
 
-void orient_along_gradient(Mesh& mesh, const Surface& surface) {
-  double vote = 0.0;
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3& a = mesh.positions[t[0]];
-    const Vec3& b = mesh.positions[t[1]];
-    const Vec3& c = mesh.positions[t[2]];
-    const Vec3 g = surface.value_gradient((a + b + c) / 3.0).gradient;
-    const double d = (b - a).cross(c - a).dot(g);
-    if (std::isfinite(d)) vote += d;
-  }
-  if (vote < 0.0)
-    for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
+void OutputArguments::add_to(CLI::App& app) {
+  app.add_option("-o,--output", path, "Output mesh: .ply, .obj, .off or .stl")->required();
+  app.add_flag("--json", json, "Print one JSON line instead of a summary");
+}
+
+void OutputArguments::check() const {
+  format_from_path(path);
 }
 
 }  // namespace isopatch::bench

@@ -1,16 +1,18 @@
 #pragma once
 /// \file peer_support.hpp
 /// What the peer tools of bench/ (CGAL Surface_mesher, VTK Flying Edges, CGAL remeshing) share: the
-/// surface arguments as `isopatch mesh` takes them, and orienting a peer's mesh the way isopatch does.
-/// Benchmark code only.
+/// surface arguments as `isopatch mesh` takes them, the output, and the steps of a surface peer
+/// (orient.hpp orients a peer's mesh). Benchmark code only.
 
 #include <isopatch/mesh.hpp>
+#include <isopatch/mesh_io.hpp>
 #include <isopatch/surface.hpp>
 
 #include <CLI/CLI.hpp>
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace isopatch::bench {
@@ -31,8 +33,42 @@ struct SurfaceArguments {
   SurfacePtr resolve() const;
 };
 
-/// Flips every triangle when most of the area faces against grad f, so that triangles are
-/// counter-clockwise seen from outside (along grad f), as isopatch writes them.
-void orient_along_gradient(Mesh& mesh, const Surface& surface);
+/// The output of a peer's command line: the mesh file (-o, required) and --json (one JSON line
+/// instead of a summary).
+struct OutputArguments {
+  std::string path;
+  bool json = false;
+
+  /// Adds -o/--output and --json to `app`; `this` must outlive it.
+  void add_to(CLI::App& app);
+  /// \throw IoError for an extension isopatch cannot write (before any work)
+  void check() const;
+};
+
+/// The command line of a peer that meshes a surface: the surface, the output and its own options.
+template <class Options>
+struct SurfacePeerArguments {
+  SurfaceArguments surface;
+  OutputArguments output;
+  Options options;
+
+  /// Adds the surface's and the output's arguments to `app` (the peer adds its options).
+  void add_to(CLI::App& app) {
+    surface.add_to(app);
+    output.add_to(app);
+  }
+};
+
+/// The steps every surface peer takes: checks the output's extension, resolves the surface, runs
+/// `mesher(surface)` (a result with a `mesh` member) and writes that mesh. Returns the surface and
+/// the result, for the peer's summary. \throw whatever those steps throw
+template <class Options, class Mesher>
+auto mesh_and_write(const SurfacePeerArguments<Options>& a, Mesher&& mesher) {
+  a.output.check();
+  SurfacePtr surface = a.surface.resolve();
+  auto result = std::forward<Mesher>(mesher)(*surface);
+  write_mesh(result.mesh, a.output.path);
+  return std::pair{std::move(surface), std::move(result)};
+}
 
 }  // namespace isopatch::bench

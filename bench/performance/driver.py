@@ -6,14 +6,16 @@ Every number comes from this run.
 """
 
 import argparse
+import glob
 import json
-import math
 import os
+import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "quality_report"))
 
+import building  # noqa: E402
 import machine  # noqa: E402
 import main as quality_main  # noqa: E402  (catalogue and box helpers of the quality report)
 import matching  # noqa: E402
@@ -46,13 +48,13 @@ def large_run(tools: measure.Tools, surface: list[str], known: dict, vertices: i
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--tool", required=True, help="the isopatch command-line tool to measure")
-    parser.add_argument("--cgal", default="", help="isopatch_cgal_peer (empty: no CGAL rows)")
-    parser.add_argument("--vtk", default="", help="isopatch_vtk_peer (empty: no Flying Edges rows)")
-    parser.add_argument("--remesh", default="", help="isopatch_cgal_remesh (empty: no FE + remesh rows)")
-    parser.add_argument("--out", required=True, help="the Markdown report to write")
-    parser.add_argument("--work", required=True, help="folder for the meshes and results.json")
+    parser.add_argument("isopatch", nargs="?", default="", help="the isopatch binary (default: BUILD/bin/isopatch)")
+    parser.add_argument("--build", default=os.environ.get("ISOPATCH_BUILD", "build-bench"), help="build folder")
+    parser.add_argument("--no-build", action="store_true", help="use the build folder as it is")
+    parser.add_argument("--out", default="docs/performance.md", help="the Markdown report to write")
+    parser.add_argument("--work", default="out/performance", help="folder for the meshes and results.json")
     parser.add_argument("--repo", default=".", help="repository root (for the commit in the header)")
+    parser.add_argument("--cwd", default=".", help="the folder a relative ISOPATCH_BIN is relative to")
     parser.add_argument("--quick", action="store_true", help=f"{', '.join(QUICK_SURFACES)} at 20k only")
     parser.add_argument("--surfaces", default="", help="comma-separated subset of the public closed surfaces")
     parser.add_argument("--repeats", type=int, default=REPEATS, help="timed runs per system (minimum kept)")
@@ -60,6 +62,20 @@ def main() -> int:
     parser.add_argument("--keep-meshes", action="store_true", help="keep the chosen meshes in the work folder")
     parser.add_argument("--command", default="scripts/performance_report.sh", help="the command shown in the header")
     args = parser.parse_args()
+    if args.isopatch:
+        args.isopatch = os.path.join(args.cwd, args.isopatch)
+    os.chdir(args.repo)
+    if not args.no_build:
+        try:
+            building.build(args.repo, args.build, not args.isopatch, measure.log)
+        except subprocess.CalledProcessError as e:
+            measure.log(f"build failed: {e}")
+            return 2
+    args.tool = args.isopatch or os.path.join(args.build, "bin", "isopatch")
+    if not os.access(args.tool, os.X_OK):
+        measure.log(f"{args.tool} not found: build first or drop --no-build")
+        return 2
+    args.cgal, args.remesh, args.vtk = (building.peer(args.build, name, measure.log) for name in building.PEERS)
 
     start = time.monotonic()
     os.makedirs(args.work, exist_ok=True)
@@ -95,9 +111,10 @@ def main() -> int:
         known = known_by_surface.setdefault(spec.name, {})
         if not known.get("default"):
             side = quality_main.longest_side(names.get(spec.name, spec.box))
-            measure._fit(tools, surface, sizes[0][1], side, f"{spec.name}-sizing", known.setdefault("default", []),
-                         "default")
+            measure._fit(tools, surface, sizes[0][1], side, f"{spec.name}-sizing", known, "default")
         large = large_run(tools, surface, known, args.large)
+        for path in glob.glob(os.path.join(tools.work, f"{spec.name}-sizing-*")):
+            os.remove(path)
         loads.append(os.getloadavg()[0])
 
     seconds = time.monotonic() - start

@@ -64,15 +64,22 @@ def _isopatch_maker(tools, surface, quality, threads):
 
 
 def _fit(tools, surface, target, side, tag, known, quality):
-    return matching.match_projection(tools.isopatch, surface, target, side, tools.work, tag, known,
-                                     make=_isopatch_maker(tools, surface, quality, 2))
+    """isopatch `--quality quality` on 2 threads fitted to `target` vertices; `known` holds the earlier
+    fits of the surface by quality (a quality's first fit starts from the default's runs)."""
+    pool = known.setdefault(quality, [])
+    seed = pool if pool else [r for r in known.get("default", []) if r.ok]
+    run = matching.match_projection(tools.isopatch, surface, target, side, tools.work, tag, seed,
+                                    make=_isopatch_maker(tools, surface, quality, 2))
+    if seed is not pool:
+        pool.extend(r for r in seed if r.ok and r.quality == quality)
+    return run
 
 
 def _fit_all(tools, name, surface, side, label, target, known) -> dict:
     """Every system fitted to the count of isopatch's default (2 threads); the chosen runs by name."""
     tag = lambda system: f"{name}-{label}-{system.replace(' ', '')}"  # noqa: E731
     r = {}
-    d2 = _fit(tools, surface, target, side, tag("default2t"), known.setdefault("default", []), "default")
+    d2 = _fit(tools, surface, target, side, tag("default2t"), known, "default")
     r["default 2t"] = d2
     count = d2.vertices if d2.ok else target
     if d2.ok:
@@ -81,7 +88,7 @@ def _fit_all(tools, name, surface, side, label, target, known) -> dict:
         r["default 4t"] = systems.isopatch(tools.isopatch, surface, d2.value, "default", 4, out(4))
         runs.analyze(tools.isopatch, d2, surface)
     for quality in ("preview", "fine"):
-        r[quality] = _fit(tools, surface, count, side, tag(quality), known.setdefault(quality, []), quality)
+        r[quality] = _fit(tools, surface, count, side, tag(quality), known, quality)
     if tools.vtk:
         fe_make = lambda g, out: systems.flying_edges(tools.vtk, surface, g, 2, out)  # noqa: E731
         start = known.get("fe_grid", 64)
@@ -101,7 +108,7 @@ def _fit_all(tools, name, surface, side, label, target, known) -> dict:
         c = matching.match_cgal(tools.cgal, surface, count, radius, tools.work, tag("cgal"))
         if c.ok:
             known["cgal"].append(c)
-        r["cgal"] = systems.Timed(**vars(c))
+        r["cgal"] = systems.Timed(**vars(c))  # its CPU time comes from the repetitions
     else:
         r["cgal"] = _missing("cgal", "isopatch_cgal_peer not built (CGAL not found)")
     return r
@@ -118,7 +125,7 @@ def _again(tools, surface, name, run, chosen):
     if name == "fe + remesh":
         return lambda: systems.remesh(tools.remesh, chosen["fe"], run.value, 0, run.mesh)
     if name == "cgal":
-        return lambda: systems.Timed(**vars(runs.cgal(tools.cgal, surface, run.value, run.mesh)))
+        return lambda: systems.cgal(tools.cgal, surface, run.value, run.mesh)
     return None
 
 

@@ -1,9 +1,8 @@
 """docs/performance.md from the measured groups: ratios first, then the targets of issue 20, the
 per-surface tables, the large mesh, where isopatch's time goes, and how it was measured."""
 
-import subprocess
-
 import figures as fig
+import machine
 from markdown import _table
 from figures import _fmt
 
@@ -13,20 +12,9 @@ QUALITY_SYSTEMS = [("default 2t", "isopatch default"), ("preview", "isopatch pre
                    ("cgal", "CGAL Surface_mesher"), ("fe", "VTK Flying Edges"), ("fe + remesh", "FE + isotropic remeshing")]
 
 
-def _vtk_version() -> str:
-    try:
-        p = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "libvtk9-dev"], capture_output=True, text=True,
-                           timeout=10, check=False)
-        if p.returncode == 0 and p.stdout.strip():
-            return f"VTK {p.stdout.strip()} (Debian libvtk9-dev)"
-    except (OSError, subprocess.TimeoutExpired):
-        pass
-    return "VTK (version unknown)"
-
-
 def tool_lines(args, loads) -> list[str]:
     """Header lines beyond the quality report's: the peers, the load during the run, the binary."""
-    fe = f"{_vtk_version()}, vtkFlyingEdges3D" if args.vtk else "not built (VTK not found): FE rows say so"
+    fe = f"{machine.debian_version('libvtk9-dev', 'VTK')}, vtkFlyingEdges3D" if args.vtk else "not built (VTK not found): FE rows say so"
     remesh = "CGAL Polygon_mesh_processing::isotropic_remeshing, 5 rounds" if args.remesh else "not built"
     return [f"- Flying Edges: {fe}; remeshing: {remesh}",
             f"- isopatch binary: `{args.tool}`; timed runs per system: {args.repeats} (minimum kept)",
@@ -84,7 +72,7 @@ def _speed_cell(run) -> str:
 
 
 def _quality_table(results, label) -> str:
-    header = ["surface", "system", "knob", "vertices", "ms (min of n)", "% val 6", "min ∠", "H nRMS", "H ÷ CGAL",
+    header = ["surface", "system", "knob", "vertices", "ms (min of n)", "CPU ms", "% val 6", "min ∠", "H nRMS", "H ÷ CGAL",
               "max vert dist", "f evals / v", "grad evals / v"]
     rows = []
     for spec, _, groups in results:
@@ -95,17 +83,18 @@ def _quality_table(results, label) -> str:
             for name, shown in QUALITY_SYSTEMS:
                 run = g.runs.get(name)
                 if run is None or not run.ok:
-                    rows.append([spec.name, shown, "", f"failed: {run.error if run else 'not run'}"] + ["–"] * 8)
+                    rows.append([spec.name, shown, "", f"failed: {run.error if run else 'not run'}"] + ["–"] * 9)
                     continue
                 m = fig.quality(run) or {}
                 ms = f"{run.ms:.1f} ({len(run.timings)})"
-                rows.append([spec.name, shown, run.knob, str(run.vertices), ms,
+                cpu = _fmt(min(run.cpu_ms), ".1f") if getattr(run, "cpu_ms", None) else "–"
+                rows.append([spec.name, shown, run.knob, str(run.vertices), ms, cpu,
                              _fmt(None if m.get("valence6") is None else 100 * m["valence6"], ".1f"),
                              _fmt(m.get("min_angle"), ".1f"), _fmt(m.get("h_nrms"), ".3g"),
                              _fmt(fig.ratio(m.get("h_nrms"), cgal_h), ".3g"), _fmt(m.get("vertex_distance"), ".1e"),
                              _fmt(fig.per_vertex(getattr(run, "value_evaluations", None), run), ".3g"),
                              _fmt(fig.per_vertex(getattr(run, "gradient_evaluations", None), run), ".3g")])
-    return _table(header, ["l", "l", "l"] + ["r"] * 9, rows)
+    return _table(header, ["l", "l", "l"] + ["r"] * 10, rows)
 
 
 def _stage_section(results, labels) -> list[str]:
@@ -196,7 +185,8 @@ def document(header_lines, results, large, sizes) -> str:
                   _speed_table(results, label), ""]
     for label in labels:
         parts += [f"## Quality per surface, about {label} vertices", "",
-                  "`ms (n)`: wall time, minimum of n timed runs; `H ÷ CGAL` H nRMS over CGAL's at the same size; "
+                  "`ms (n)`: wall time, minimum of n timed runs; `CPU ms`: user + system time of the whole process "
+                  "(files and start-up included; for FE + remesh the remeshing process alone), minimum over the runs; `H ÷ CGAL` H nRMS over CGAL's at the same size; "
                   "`max vert dist` the largest |f|/|grad f| at a vertex over the box diagonal.", "",
                   _quality_table(results, label), ""]
     parts += _large_section(large)

@@ -8,6 +8,7 @@ import hashlib
 import json
 import os
 import re
+import resource
 from dataclasses import dataclass, field
 
 import runs
@@ -30,6 +31,25 @@ class Timed(runs.Run):
     input_ms: list[float] = field(default_factory=list)  # FE + remesh: the Flying Edges times
     input_vertices: int | None = None
     notes: list[str] = field(default_factory=list)  # oddities seen while measuring
+    cpu_ms: list[float] = field(default_factory=list)  # user + system time of each timed process, whole run
+
+
+def _children_cpu_ms() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return 1e3 * (usage.ru_utime + usage.ru_stime)
+
+
+def _with_cpu(make):
+    """Wraps a function that runs one child process and returns a Timed: records the child's CPU time
+    (user + system of the whole process, files included), a load-independent cross-check of wall times."""
+    def wrapped(*args, **kwargs):
+        before = _children_cpu_ms()
+        run = make(*args, **kwargs)
+        if run.ok:
+            run.cpu_ms.append(_children_cpu_ms() - before)
+        return run
+    wrapped.__doc__ = make.__doc__
+    return wrapped
 
 
 def digest(path: str | None) -> str | None:
@@ -71,6 +91,7 @@ def read_stats(run: Timed, path: str) -> None:
     run.stage_ms = _stage_times(run.stats)
 
 
+@_with_cpu
 def isopatch(tool: str, surface: list[str], h: float, quality: str, threads: int, out: str) -> Timed:
     """`isopatch mesh SURFACE --edge-length h --quality Q --threads T --stats-json ...`."""
     run = Timed(f"isopatch {quality}", f"h {h:.4g}", h, quality=quality, threads=threads)
@@ -104,10 +125,19 @@ def isopatch_peak_memory(tool: str, surface: list[str], h: float, threads: int, 
     return run
 
 
+def cgal(peer: str, surface: list[str], radius: float, out: str) -> Timed:
+    """CGAL's Surface_mesher peer (quality_report/runs.py) as a Timed run."""
+    return Timed(**vars(runs.cgal(peer, surface, radius, out)))
+
+
+cgal = _with_cpu(cgal)
+
+
 def _json_line(stdout: str) -> dict:
     return json.loads(stdout.strip().splitlines()[-1])
 
 
+@_with_cpu
 def flying_edges(peer: str, surface: list[str], grid: int, threads: int, out: str) -> Timed:
     """isopatch_vtk_peer: grid sampling (batch evaluation) and vtkFlyingEdges3D, timed together."""
     run = Timed("vtk fe", f"grid {grid}", grid, threads=threads)
@@ -127,6 +157,7 @@ def flying_edges(peer: str, surface: list[str], grid: int, threads: int, out: st
     return run
 
 
+@_with_cpu
 def remesh(remesher: str, fe: Timed, edge: float | None, vertices: int, out: str) -> Timed:
     """isopatch_cgal_remesh on the Flying Edges mesh `fe`: target edge `edge`, or from `vertices` when
     None. The run's time is Flying Edges' plus the remeshing's (both minima over repetitions)."""
@@ -158,6 +189,7 @@ def add_timing(run: Timed, other: Timed) -> None:
     if not (run.ok and other.ok and other.vertices == run.vertices):
         return
     run.timings.extend(other.timings)
+    run.cpu_ms.extend(other.cpu_ms)
     if run.system == "fe + remesh":
         run.ms = min(run.timings) + min(run.input_ms)
     else:

@@ -38,15 +38,20 @@ def commit(repo: str) -> str:
     return "unknown"
 
 
-def cgal_version() -> str:
+def debian_version(package: str, name: str) -> str:
+    """"NAME VERSION (Debian PACKAGE)" from dpkg, or "NAME (version unknown)"."""
     try:
-        p = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "libcgal-dev"], capture_output=True, text=True,
+        p = subprocess.run(["dpkg-query", "-W", "-f=${Version}", package], capture_output=True, text=True,
                            timeout=10, check=False)
         if p.returncode == 0 and p.stdout.strip():
-            return f"CGAL {p.stdout.strip()} (Debian libcgal-dev)"
+            return f"{name} {p.stdout.strip()} (Debian {package})"
     except (OSError, subprocess.TimeoutExpired):
         pass
-    return "CGAL (version unknown)"
+    return f"{name} (version unknown)"
+
+
+def cgal_version() -> str:
+    return debian_version("libcgal-dev", "CGAL")
 
 
 def header(repo: str, command: str, seconds: float, peer_built: bool, quick: bool) -> list[str]:

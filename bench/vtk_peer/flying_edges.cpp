@@ -10,18 +10,20 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkSMPTools.h>
+#include <vtkSMP.h>  // VTK_SMP_BACKEND (vtkSMPTools.h itself does not compile as C++20)
 
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <span>
+#include <string>
 #include <thread>
 #include <vector>
 
-#include "peer_support/peer_support.hpp"
+#include "peer_support/orient.hpp"
 
 namespace isopatch::bench {
 namespace {
@@ -105,9 +107,10 @@ FlyingEdgesResult flying_edges(const Surface& surface, const Box& box, const Fly
   if (!box.valid()) throw InputError("invalid box");
   if (options.grid < 2 || options.threads < 1)
     throw InputError("Flying Edges needs grid >= 2 and threads >= 1");
-  vtkSMPTools::Initialize(options.threads);
+  // VTK reads its thread count from the environment when its SMP tools first start (in Update below).
+  setenv("VTK_SMP_MAX_THREADS", std::to_string(options.threads).c_str(), 1);
   FlyingEdgesResult r;
-  r.smp_backend = vtkSMPTools::GetBackend();
+  r.smp_backend = VTK_SMP_BACKEND;
   const double spacing = box.size().maxCoeff() / options.grid;
   r.samples = grid_points(box, spacing);
   r.value_evaluations = static_cast<std::size_t>(r.samples[0]) * static_cast<std::size_t>(r.samples[1]) *

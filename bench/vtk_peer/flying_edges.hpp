@@ -15,8 +15,10 @@
 namespace isopatch::bench {
 
 struct FlyingEdgesOptions {
-  int grid = 64;    ///< cells along the longest side of the box; the cells are cubes
-  int threads = 1;  ///< threads of the sampling and of VTK's SMP back end
+  int grid = 64;  ///< cells along the longest side of the box; the cells are cubes
+  /// threads of the sampling and of VTK's SMP back end (set through VTK_SMP_MAX_THREADS, so it
+  /// holds for the first call in a process)
+  int threads = 1;
 };
 
 /// What Flying Edges produced and where its time went (wall times, seconds).
