@@ -57,6 +57,8 @@ def main() -> int:
     parser.add_argument("--cwd", default=".", help="the folder a relative ISOPATCH_BIN is relative to")
     parser.add_argument("--quick", action="store_true", help=f"{', '.join(QUICK_SURFACES)} at 20k only")
     parser.add_argument("--surfaces", default="", help="comma-separated subset of the public closed surfaces")
+    parser.add_argument("--sizes", default="", help="comma-separated subset of the sizes (" +
+                        ",".join(label for label, _ in SIZES) + ")")
     parser.add_argument("--repeats", type=int, default=REPEATS, help="timed runs per system (minimum kept)")
     parser.add_argument("--large", type=int, default=LARGE_VERTICES, help="vertices of the large run (0: none)")
     parser.add_argument("--keep-meshes", action="store_true", help="keep the chosen meshes in the work folder")
@@ -89,6 +91,11 @@ def main() -> int:
         measure.log(f"not a public closed surface: {', '.join(sorted(unknown))}")
         return 2
     sizes = SIZES[:1] if args.quick else SIZES
+    if args.sizes:
+        sizes = [(label, n) for label, n in SIZES if label in args.sizes.split(",")]
+        if len(sizes) != len(args.sizes.split(",")):
+            measure.log(f"unknown size in {args.sizes} (want {', '.join(label for label, _ in SIZES)})")
+            return 2
     loads = [os.getloadavg()[0]]
     results, known_by_surface = [], {}
     for spec in closed:

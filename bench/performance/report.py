@@ -3,6 +3,7 @@ per-surface tables, the large mesh, where isopatch's time goes, and how it was m
 
 import figures as fig
 import machine
+import runs
 from markdown import _table
 from figures import _fmt
 
@@ -12,12 +13,18 @@ QUALITY_SYSTEMS = [("default 2t", "isopatch default"), ("preview", "isopatch pre
                    ("cgal", "CGAL Surface_mesher"), ("fe", "VTK Flying Edges"), ("fe + remesh", "FE + isotropic remeshing")]
 
 
+def _version(tool: str) -> str:
+    code, stdout, _ = runs.run_command([tool, "--version"], 30)
+    return stdout.strip() if code == 0 and stdout.strip() else "version unknown"
+
+
 def tool_lines(args, loads) -> list[str]:
     """Header lines beyond the quality report's: the peers, the load during the run, the binary."""
     fe = f"{machine.debian_version('libvtk9-dev', 'VTK')}, vtkFlyingEdges3D" if args.vtk else "not built (VTK not found): FE rows say so"
     remesh = "CGAL Polygon_mesh_processing::isotropic_remeshing, 5 rounds" if args.remesh else "not built"
     return [f"- Flying Edges: {fe}; remeshing: {remesh}",
-            f"- isopatch binary: `{args.tool}`; timed runs per system: {args.repeats} (minimum kept)",
+            f"- isopatch binary: `{args.tool}` ({_version(args.tool)}); timed runs per system: {args.repeats} "
+            "(minimum kept)",
             f"- load average (1 min) sampled between surfaces: {min(loads):.2f} to {max(loads):.2f}"]
 
 

@@ -184,12 +184,21 @@ def remesh(remesher: str, fe: Timed, edge: float | None, vertices: int, out: str
     return run
 
 
+COUNT_TOLERANCE = 0.02  # a repetition whose count differs by less (CGAL's random start) is scaled to it
+
+
 def add_timing(run: Timed, other: Timed) -> None:
-    """Adds a repetition's time to run (same configuration, same vertex count); keeps the minimum."""
-    if not (run.ok and other.ok and other.vertices == run.vertices):
+    """Adds a repetition's time to run (same configuration); keeps the minimum. A repetition with a
+    slightly different vertex count (CGAL's Surface_mesher starts from random points) counts with its
+    time scaled to run's count; one further off is left out, with a note."""
+    if not (run.ok and other.ok and other.vertices):
         return
-    run.timings.extend(other.timings)
-    run.cpu_ms.extend(other.cpu_ms)
+    scale = run.vertices / other.vertices
+    if abs(scale - 1.0) > COUNT_TOLERANCE:
+        run.notes.append(f"a repetition gave {other.vertices} vertices: left out")
+        return
+    run.timings.extend(t * scale for t in other.timings)
+    run.cpu_ms.extend(t * scale for t in other.cpu_ms)
     if run.system == "fe + remesh":
         run.ms = min(run.timings) + min(run.input_ms)
     else:
