@@ -148,7 +148,9 @@ METHOD = """## How it is measured
 - Timing: the wall time each tool reports for meshing alone (no file output): isopatch's `--stats-json`
   `mesh.seconds`, the peers' own clocks. After the fitting, every system runs again in interleaved
   rounds (each round runs each system once), and the minimum over all timed runs is kept, so a burst of
-  load from other work on the shared machine hits one repetition, not one system.
+  load from other work on the shared machine hits one repetition, not one system. The load average
+  in the header tells how busy the machine was; under load a process gets less than a core, and the
+  `CPU ms` column (user + system time of the whole process) shows how much of a wall time is waiting.
 - Threads: isopatch `--threads 2` (and 1 for the speed-up, 4 only for the byte comparison); Flying
   Edges samples f on 2 threads (isopatch's batch evaluation, `Surface::values`, one z-slice at a time)
   and runs VTK's SMP back end on 2 threads; CGAL's Surface_mesher and isotropic remeshing are

@@ -63,15 +63,21 @@ def digest(path: str | None) -> str | None:
 
 
 def _stage_times(stats: dict) -> dict:
-    """{stage/name: ms} for every entry of a --stats-json that reads as a time (seconds or ms)."""
+    """{stage/name: ms} for every entry of a --stats-json that reads as a time: any entry of a stage
+    whose name speaks of times ("times", "stage_seconds", ...; seconds unless it ends in "ms"), and
+    elsewhere an entry named seconds, *_seconds, *_s (seconds) or *_ms (milliseconds)."""
     out = {}
     for stage, entries in stats.items():
         if not isinstance(entries, dict):
             continue
+        timing_stage = any(word in stage for word in ("time", "second", "stage"))
         for name, value in entries.items():
             if not isinstance(value, (int, float)) or (stage == "mesh" and name == "seconds"):
                 continue
-            if name == "seconds" or name.endswith("_seconds") or name.endswith("_s"):
+            if timing_stage:
+                in_ms = stage.endswith("ms") or name.endswith("_ms")
+                out[f"{stage}/{name}"] = float(value) * (1.0 if in_ms else 1e3)
+            elif name == "seconds" or name.endswith("_seconds") or name.endswith("_s"):
                 out[f"{stage}/{name}"] = 1e3 * float(value)
             elif name.endswith("_ms") or name == "ms":
                 out[f"{stage}/{name}"] = float(value)
