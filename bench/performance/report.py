@@ -34,7 +34,7 @@ def _ratio_table(results, labels, large) -> str:
             for name, a, b, target in fig.RATIOS]
     time_ratio, bytes_per_v = fig.large_figures(results, large, labels[0])
     blank = [""] * (len(labels) - 1)
-    rows.append(["1M-vertex mesh: time per vertex ÷ the 20k case's (sphere)", f"<= {fig.TARGET_LARGE_TIME:g}",
+    rows.append([f"1M-vertex mesh: time per vertex ÷ the {labels[0]} case's (sphere)", f"<= {fig.TARGET_LARGE_TIME:g}",
                  _fmt(time_ratio, ".2f", "×"), *blank])
     rows.append(["1M-vertex mesh: peak memory per output vertex", f"<= {fig.TARGET_BYTES:g} B",
                  _fmt(bytes_per_v, ".0f", " B"), *blank])
@@ -44,7 +44,8 @@ def _ratio_table(results, labels, large) -> str:
             row.append(_fmt(fig.gmean(fig.per_vertex(getattr(g.runs.get("default 2t"), key, None), g.runs.get("default 2t"))
                                       for _, _, gs in results for g in gs if g.label == label), ".3g"))
         rows.append(row)
-    header = ["ratio of vertices per second (geometric mean over the surfaces)", "target"] + labels
+    header = ["figure (a ratio: vertices per second of the first over the second, geometric mean over the surfaces)",
+              "target"] + labels
     return _table(header, ["l", "l"] + ["r"] * len(labels), rows)
 
 
