@@ -18,6 +18,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <exception>
+#include <mutex>
 #include <span>
 #include <string>
 #include <thread>
@@ -50,7 +52,9 @@ std::size_t sample(const Surface& surface, const Box& box, double spacing, const
   const std::size_t slice = static_cast<std::size_t>(n[0]) * static_cast<std::size_t>(n[1]);
   std::atomic<int> next{0};
   std::atomic<std::size_t> non_finite{0};
-  auto worker = [&] {
+  std::mutex failure_mutex;
+  std::exception_ptr failure;  // the first exception of a thread, rethrown once all have joined
+  auto slices = [&] {
     std::vector<Vec3> points(slice);
     std::size_t bad = 0;
     for (int k = next++; k < n[2]; k = next++) {
@@ -67,10 +71,21 @@ std::size_t sample(const Surface& surface, const Box& box, double spacing, const
     }
     non_finite += bad;
   };
-  std::vector<std::jthread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  pool.clear();  // joins
+  auto worker = [&] {
+    try {
+      slices();
+    } catch (...) {
+      const std::lock_guard lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+      next = n[2];  // the others stop at their next slice
+    }
+  };
+  {
+    std::vector<std::jthread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+  }  // joins
+  if (failure) std::rethrow_exception(failure);
   return non_finite;
 }
 

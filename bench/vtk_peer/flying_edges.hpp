@@ -37,7 +37,7 @@ struct FlyingEdgesResult {
 
 /// Samples f at the grid points of `box` (cubic cells, options.grid along the longest side, the
 /// grid anchored at box.lo and reaching at least box.hi) and runs Flying Edges at f = 0.
-/// \throw InputError for an invalid box, grid < 2 or threads < 1
+/// \throw InputError for an invalid box, grid < 2 or threads < 1; whatever evaluating f throws
 FlyingEdgesResult flying_edges(const Surface& surface, const Box& box, const FlyingEdgesOptions& options);
 
 }  // namespace isopatch::bench
