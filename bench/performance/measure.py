@@ -91,11 +91,12 @@ def _fit_all(tools, name, surface, side, label, target, known) -> dict:
         r[quality] = _fit(tools, surface, count, side, tag(quality), known, quality)
     if tools.vtk:
         fe_make = lambda g, out: systems.flying_edges(tools.vtk, surface, g, 2, out)  # noqa: E731
-        start = known.get("fe_grid", 64)
+        # V ~ c g^2: an earlier size's Flying Edges run gives the first grid
+        start = max(2, round(math.sqrt(count / known["fe_c"]))) if "fe_c" in known else 64
         fe = matching.match_mc("", surface, count, tools.work, tag("fe"), make=fe_make, grid=start)
         r["fe"] = fe
         if fe.ok:
-            known["fe_grid"] = max(2, round(fe.value * math.sqrt(count / fe.vertices) * 1.0))
+            known["fe_c"] = fe.vertices / fe.value**2
             r["fe + remesh"] = _fit_remesh(tools, fe, count, tag("remesh")) if tools.remesh else _missing(
                 "fe + remesh", "isopatch_cgal_remesh not built (CGAL not found)")
         else:
