@@ -6,66 +6,33 @@
 // surface, 5 parse, 6 file, 8 no surface in the box, 1 internal).
 #include <isopatch/error.hpp>
 #include <isopatch/mesh_io.hpp>
-#include <isopatch/resolve_surface.hpp>
 
 #include <CLI/CLI.hpp>
 
-#include <charconv>
-#include <cmath>
 #include <cstdio>
-#include <exception>
-#include <map>
-#include <optional>
 #include <string>
-#include <vector>
 
 #include "cgal_peer/peer_mesher.hpp"
+#include "peer_support/peer_support.hpp"
 #include "tool_errors.hpp"
 
 namespace {
 
-// "name=value" items -> map, as `isopatch mesh --param`. \throw InputError for a malformed item.
-std::map<std::string, double> parse_params(const std::vector<std::string>& items) {
-  std::map<std::string, double> params;
-  for (const std::string& item : items) {
-    const auto eq = item.find('=');
-    double value = 0.0;
-    const char* end = item.data() + item.size();
-    const bool ok = eq != std::string::npos && eq > 0 && eq + 1 < item.size();
-    const auto parsed = ok ? std::from_chars(item.data() + eq + 1, end, value) : std::from_chars_result{};
-    if (!ok || parsed.ec != std::errc() || parsed.ptr != end || !std::isfinite(value))
-      throw isopatch::InputError("bad --param '" + item + "' (want name=value with a finite number)");
-    if (!params.emplace(item.substr(0, eq), value).second)
-      throw isopatch::InputError("--param " + item.substr(0, eq) + " is given twice");
-  }
-  return params;
-}
-
-struct Arguments {
-  std::string surface;
-  std::string output;
-  std::string box;
-  std::vector<std::string> params;
-  isopatch::bench::PeerOptions peer;
-  bool json = false;
-};
+using Arguments = isopatch::bench::SurfacePeerArguments<isopatch::bench::PeerOptions>;
 
 int run(const Arguments& a) {
   using namespace isopatch;
-  isopatch::format_from_path(a.output);  // unknown extension: IoError before any work
-  const std::optional<Box> box = a.box.empty() ? std::nullopt : std::optional<Box>(parse_box(a.box));
-  const SurfacePtr surface = resolve_surface(a.surface, box, parse_params(a.params));
-  const bench::PeerResult r = bench::cgal_surface_mesh(*surface, surface->box(), a.peer);
-  write_mesh(r.mesh, a.output);
+  const auto [surface, r] = bench::mesh_and_write(
+      a, [&a](const Surface& s) { return bench::cgal_surface_mesh(s, s.box(), a.options); });
   const double ms = 1e3 * r.seconds;
-  if (a.json) {
+  if (a.output.json) {
     std::printf(
         "{\"system\":\"cgal\",\"surface\":\"%s\",\"vertices\":%zu,\"triangles\":%zu,\"ms\":%.6f,"
         "\"radius_bound\":%.17g,\"distance_bound\":%.17g,\"angle_bound\":%.17g,\"box_facets_removed\":%zu,"
         "\"non_finite_values\":%zu,\"output\":\"%s\"}\n",
-        surface->name().c_str(), r.mesh.vertex_count(), r.mesh.triangle_count(), ms, a.peer.radius_bound,
-        a.peer.distance_bound > 0 ? a.peer.distance_bound : a.peer.radius_bound / 10, a.peer.angle_bound,
-        r.box_facets_removed, r.non_finite_values, a.output.c_str());
+        surface->name().c_str(), r.mesh.vertex_count(), r.mesh.triangle_count(), ms, a.options.radius_bound,
+        a.options.distance_bound > 0 ? a.options.distance_bound : a.options.radius_bound / 10,
+        a.options.angle_bound, r.box_facets_removed, r.non_finite_values, a.output.path.c_str());
   } else {
     std::printf("surface    %s (CGAL Surface_mesher)\n", surface->name().c_str());
     std::printf("vertices   %zu\ntriangles  %zu\n", r.mesh.vertex_count(), r.mesh.triangle_count());
@@ -74,7 +41,7 @@ int run(const Arguments& a) {
     if (r.box_facets_removed > 0) std::printf("box facets %zu removed\n", r.box_facets_removed);
     if (r.non_finite_values > 0)
       std::printf("non-finite %zu values of f counted positive\n", r.non_finite_values);
-    std::printf("time       %.3f ms\nwrote      %s\n", ms, a.output.c_str());
+    std::printf("time       %.3f ms\nwrote      %s\n", ms, a.output.path.c_str());
   }
   return 0;
 }
@@ -84,21 +51,17 @@ int run(const Arguments& a) {
 int main(int argc, char** argv) {
   CLI::App app{"CGAL Surface_mesher on an isopatch surface (the peer of the quality report)"};
   Arguments a;
-  app.add_option("surface", a.surface, "Catalogue name, formula or @file")->required();
-  app.add_option("-o,--output", a.output, "Output mesh: .ply, .obj, .off or .stl")->required();
-  app.add_option("--box", a.box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
-  app.add_option("--param", a.params, "Override a definition of the formula: name=value (repeatable)");
-  app.add_option("--radius", a.peer.radius_bound, "Radius bound of the surface Delaunay balls (size)")
+  a.add_to(app);
+  app.add_option("--radius", a.options.radius_bound, "Radius bound of the surface Delaunay balls (size)")
       ->capture_default_str();
-  app.add_option("--distance", a.peer.distance_bound, "Distance bound (default: radius / 10)");
-  app.add_option("--angle", a.peer.angle_bound, "Angle bound in degrees")->capture_default_str();
-  app.add_option("--error-bound", a.peer.error_bound,
+  app.add_option("--distance", a.options.distance_bound, "Distance bound (default: radius / 10)");
+  app.add_option("--angle", a.options.angle_bound, "Angle bound in degrees")->capture_default_str();
+  app.add_option("--error-bound", a.options.error_bound,
                  "Oracle bisection precision, relative to the sphere radius")
       ->capture_default_str();
-  app.add_option("--initial-points", a.peer.initial_points, "Initial points on the surface")
+  app.add_option("--initial-points", a.options.initial_points, "Initial points on the surface")
       ->capture_default_str();
-  app.add_flag("--keep-box-faces", a.peer.keep_box_faces,
+  app.add_flag("--keep-box-faces", a.options.keep_box_faces,
                "Keep the facets closing an open surface on the box");
-  app.add_flag("--json", a.json, "Print one JSON line instead of a summary");
   return isopatch::bench::run_tool("isopatch_cgal_peer", app, argc, argv, [&] { return run(a); });
 }

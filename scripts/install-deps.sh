@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Installs, with apt-get, whatever isopatch needs that this Debian 12 machine does not have yet.
-# Usage: scripts/install-deps.sh   (as root, or with sudo available)
+# Usage: scripts/install-deps.sh [--bench]   (as root, or with sudo available)
+#   --bench  also what only the performance report's peers need (scripts/performance_report.sh):
+#            VTK for the Flying Edges peer and GNU time for the peak memory; never the library's
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libcli11-dev libgtest-dev libgmock-dev
           libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3)
+[ "${1:-}" = "--bench" ] && packages+=(libvtk9-dev time)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "interior_seed.hpp"
+#include "peer_support/orient.hpp"
+#include "to_mesh.hpp"
 
 namespace isopatch::bench {
 namespace {
@@ -73,43 +75,6 @@ std::size_t remove_box_facets(Mesh& mesh, const Surface& surface, const Box& box
   mesh.positions = std::move(positions);
   mesh.triangles = std::move(kept);
   return removed;
-}
-
-// Flips every triangle when most of the area faces against grad f (CGAL orients by its own rule).
-void orient_along_gradient(Mesh& mesh, const Surface& surface) {
-  double vote = 0.0;
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3& a = mesh.positions[t[0]];
-    const Vec3& b = mesh.positions[t[1]];
-    const Vec3& c = mesh.positions[t[2]];
-    const Vec3 g = surface.value_gradient((a + b + c) / 3.0).gradient;
-    const double d = (b - a).cross(c - a).dot(g);
-    if (std::isfinite(d)) vote += d;
-  }
-  if (vote < 0.0)
-    for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
-}
-
-Mesh to_mesh(const CgalMesh& cgal) {
-  Mesh mesh;
-  mesh.positions.reserve(cgal.number_of_vertices());
-  std::vector<std::uint32_t> index(cgal.num_vertices());
-  for (const auto v : cgal.vertices()) {
-    const Point_3& p = cgal.point(v);
-    index[v.idx()] = static_cast<std::uint32_t>(mesh.positions.size());
-    mesh.positions.emplace_back(p.x(), p.y(), p.z());
-  }
-  mesh.triangles.reserve(cgal.number_of_faces());
-  for (const auto f : cgal.faces()) {
-    Triangle t{};
-    int i = 0;
-    for (const auto v : CGAL::vertices_around_face(cgal.halfedge(f), cgal)) {
-      if (i < 3) t[static_cast<std::size_t>(i)] = index[v.idx()];
-      ++i;
-    }
-    if (i == 3) mesh.triangles.push_back(t);
-  }
-  return mesh;
 }
 
 }  // namespace

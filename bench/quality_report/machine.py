@@ -18,18 +18,23 @@ def cpu_model() -> str:
 
 def commit(repo: str) -> str:
     """HEAD's commit, read from the .git folder's files (no git command is run)."""
-    git = os.path.join(repo, ".git")
+    git = common = os.path.join(repo, ".git")
     try:
+        if os.path.isfile(git):  # a linked worktree: "gitdir: PATH", refs in that folder's commondir
+            with open(git, encoding="utf-8") as f:
+                git = f.read().split(":", 1)[1].strip()
+            with open(os.path.join(git, "commondir"), encoding="utf-8") as f:
+                common = os.path.normpath(os.path.join(git, f.read().strip()))
         with open(os.path.join(git, "HEAD"), encoding="utf-8") as f:
             head = f.read().strip()
         if not head.startswith("ref: "):
             return head[:10]
         ref = head[5:]
-        path = os.path.join(git, ref)
+        path = os.path.join(common, ref)
         if os.path.exists(path):
             with open(path, encoding="utf-8") as f:
                 return f.read().strip()[:10] + f" ({ref.rsplit('/', 1)[-1]})"
-        with open(os.path.join(git, "packed-refs"), encoding="utf-8") as f:
+        with open(os.path.join(common, "packed-refs"), encoding="utf-8") as f:
             for line in f:
                 if line.strip().endswith(" " + ref):
                     return line.split()[0][:10] + f" ({ref.rsplit('/', 1)[-1]})"
@@ -38,15 +43,20 @@ def commit(repo: str) -> str:
     return "unknown"
 
 
-def cgal_version() -> str:
+def debian_version(package: str, name: str) -> str:
+    """"NAME VERSION (Debian PACKAGE)" from dpkg, or "NAME (version unknown)"."""
     try:
-        p = subprocess.run(["dpkg-query", "-W", "-f=${Version}", "libcgal-dev"], capture_output=True, text=True,
+        p = subprocess.run(["dpkg-query", "-W", "-f=${Version}", package], capture_output=True, text=True,
                            timeout=10, check=False)
         if p.returncode == 0 and p.stdout.strip():
-            return f"CGAL {p.stdout.strip()} (Debian libcgal-dev)"
+            return f"{name} {p.stdout.strip()} (Debian {package})"
     except (OSError, subprocess.TimeoutExpired):
         pass
-    return "CGAL (version unknown)"
+    return f"{name} (version unknown)"
+
+
+def cgal_version() -> str:
+    return debian_version("libcgal-dev", "CGAL")
 
 
 def header(repo: str, command: str, seconds: float, peer_built: bool, quick: bool) -> list[str]:

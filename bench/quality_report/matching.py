@@ -42,13 +42,14 @@ def _next_size(tried: list[runs.Run], target: float) -> float:
     return best.value * math.sqrt(best.vertices / target)
 
 
-def match_projection(tool, surface, target, longest_side, work, tag, known: list[runs.Run]) -> runs.Run:
+def match_projection(tool, surface, target, longest_side, work, tag, known: list[runs.Run], make=None) -> runs.Run:
     """Projection mesh with about `target` vertices; the failed last attempt when none succeeds.
     `known` holds the successful runs of earlier sizes of the surface (used for the fit only) and
-    receives this size's."""
+    receives this size's. `make(h, out)` makes one run (default: runs.projection with `--edge-length h`)."""
+    make = make or (lambda h, out: runs.projection(tool, surface, h, out))
     tried = []
     if not any(r.ok for r in known):
-        tried.append(runs.projection(tool, surface, longest_side / 64.0, os.path.join(work, f"{tag}-trial.ply")))
+        tried.append(make(longest_side / 64.0, os.path.join(work, f"{tag}-trial.ply")))
         runs.log_attempt(tried[-1])
     for attempt in range(MAX_ATTEMPTS + 1):
         if tried and not tried[-1].ok and len(tried) > 1:
@@ -60,20 +61,22 @@ def match_projection(tool, surface, target, longest_side, work, tag, known: list
         h = _next_size(pool, target) if pool else longest_side / 32.0
         if any(abs(h / r.value - 1) < 1e-3 for r in tried):
             break  # the bracket cannot narrow any more
-        tried.append(runs.projection(tool, surface, h, os.path.join(work, f"{tag}-{attempt}.ply")))
+        tried.append(make(h, os.path.join(work, f"{tag}-{attempt}.ply")))
         runs.log_attempt(tried[-1])
     known.extend(r for r in tried if r.ok)
     best = _closest(tried, target)
     return best if best is not None else tried[-1]
 
 
-def match_mc(tool, surface, target, work, tag) -> runs.Run:
-    """Marching cubes with the grid whose vertex count is closest to `target`."""
-    grid, tried = 64, {}
+def match_mc(tool, surface, target, work, tag, make=None, grid=64) -> runs.Run:
+    """Marching cubes with the grid whose vertex count is closest to `target`, starting at `grid`.
+    `make(grid, out)` makes one run (default: runs.marching_cubes; any grid mesher with V ~ c g^2)."""
+    make = make or (lambda g, out: runs.marching_cubes(tool, surface, g, out))
+    tried = {}
     for attempt in range(MAX_ATTEMPTS + 1):
         if grid in tried:
             break
-        run = runs.marching_cubes(tool, surface, grid, os.path.join(work, f"{tag}-{attempt}.ply"))
+        run = make(grid, os.path.join(work, f"{tag}-{attempt}.ply"))
         runs.log_attempt(run)
         tried[grid] = run
         if not run.ok or (attempt > 0 and not _off(run, target, MC_TOLERANCE)):
