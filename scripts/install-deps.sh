@@ -3,7 +3,8 @@
 # Usage: scripts/install-deps.sh   (as root, or with sudo available)
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3)
+          libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3 zlib1g-dev
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-meshio python3-skimage)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -34,6 +34,17 @@ class Mesh:
         pyvista.PolyData(m.vertices, np.hstack([np.full((len(m.faces), 1), 3), m.faces]))
     """
 
+    @staticmethod
+    def from_arrays(vertices: np.ndarray, faces: np.ndarray, surface: str, box: Any = None) -> "Mesh":
+        """Any triangle mesh (e.g. scikit-image's marching_cubes output) with the surface it stands for
+        (a formula or catalogue name, as :func:`isopatch.mesh` takes them), so that :meth:`analyze`,
+        :attr:`fields` and :meth:`render` measure it the same way as isopatch's own meshes. ``normals``
+        are the surface's unit gradients at the vertices. Raises InputError for malformed arrays."""
+        from . import _isopatch
+        from ._api import _box
+
+        return Mesh(_isopatch.mesh_from_arrays(vertices, faces, surface, _box(box)))
+
     def __init__(self, result: Any) -> None:
         self._result = result
         self._vertices: Optional[np.ndarray] = None

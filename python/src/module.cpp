@@ -141,6 +141,34 @@ MeshResult mesh_volume(const py::array_t<double, py::array::c_style | py::array:
   return mesh_released(std::move(surface), std::move(settings));
 }
 
+MeshResult mesh_from_arrays(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
+                            const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& faces,
+                            const std::string& spec, const BoxArg& box) {
+  if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw InputError("vertices must be an (V, 3) array", "vertices");
+  if (faces.ndim() != 2 || faces.shape(1) != 3) throw InputError("faces must be an (F, 3) array", "faces");
+  MeshResult r;
+  const double* v = vertices.data();
+  for (py::ssize_t i = 0; i < vertices.shape(0); ++i) r.mesh.positions.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+  const std::int64_t* f = faces.data();
+  const auto count = static_cast<std::int64_t>(r.mesh.positions.size());
+  for (py::ssize_t t = 0; t < faces.shape(0); ++t) {
+    Triangle tri;
+    for (int c = 0; c < 3; ++c) {
+      const std::int64_t index = f[3 * t + c];
+      if (index < 0 || index >= count)
+        throw InputError("face " + std::to_string(t) + " refers to vertex " + std::to_string(index) + " but there are " +
+                             std::to_string(count) + " vertices",
+                         "faces");
+      tri[static_cast<std::size_t>(c)] = static_cast<std::uint32_t>(index);
+    }
+    r.mesh.triangles.push_back(tri);
+  }
+  r.mesh.validate();
+  r.surface = resolve_surface(spec, to_box(box));
+  r.normals_from_surface();
+  return r;
+}
+
 py::tuple read_volume_file(const std::string& path) {
   Volume v = run_released([&](const std::atomic<bool>*) { return read_volume(path); });
   py::array_t<double> a({static_cast<py::ssize_t>(v.shape[0]), static_cast<py::ssize_t>(v.shape[1]),
@@ -165,6 +193,7 @@ PYBIND11_MODULE(_isopatch, m) {
   m.def("mesh_volume", &mesh_volume, py::arg("volume"), py::arg("level"), py::arg("spacing"), py::arg("origin"),
         py::arg("box"), py::arg("options"));
   m.def("read_volume", &read_volume_file, py::arg("path"));
+  m.def("mesh_from_arrays", &mesh_from_arrays, py::arg("vertices"), py::arg("faces"), py::arg("spec"), py::arg("box"));
   m.def("catalogue", [] {
     py::list names;
     for (const auto& entry : isopatch::catalogue()) names.append(std::string(entry.name));

@@ -59,9 +59,10 @@ py::dict fields(const MeshResult& r) {
 py::dict stats(const MeshResult& r) {
   py::dict d;
   visit_stats(r.stats, [&d](std::string_view stage, std::string_view name, double value) {
-    const py::str key(std::string(stage));
+    const py::str key{std::string(stage)};
     if (!d.contains(key)) d[key] = py::dict();
-    py::dict(d[key])[py::str(std::string(name))] = value;
+    py::dict of_stage = d[key];
+    of_stage[py::str{std::string(name)}] = value;
   });
   if (!r.extra.empty()) {
     py::dict python;
