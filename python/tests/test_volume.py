@@ -7,18 +7,20 @@ import isopatch
 
 from conftest import angle_degrees, sampled, sphere, sphere_normal, torus, torus_normal
 
-# The distance to the analytic surface of the vertices (on the samples' interpolant), for volumes of
-# n^3 samples over [-1, 1]^3: the interpolation error, which falls like h^4 (h = 2 / (n - 1)).
+# The largest distance to the analytic surface of the vertices (which lie on the samples' interpolant)
+# for volumes of n^3 samples over [-1, 1]^3, and the largest angle between the returned normals and the
+# analytic ones: the interpolation error, which falls like h^4 (h = 2 / (n - 1)). Measured (bench and
+# docs/python.md): sphere 5e-6 and 7e-8, torus 8e-4 and 2e-5; normals within 0.7 degrees.
 CASES = [
-    (sphere, sphere_normal, 32, 0, 2e-3),
-    (sphere, sphere_normal, 64, 0, 2e-4),
-    (torus, torus_normal, 32, 1, 6e-3),
-    (torus, torus_normal, 64, 1, 6e-4),
+    (sphere, sphere_normal, 32, 0, 2e-5, 0.05),
+    (sphere, sphere_normal, 64, 0, 5e-7, 0.01),
+    (torus, torus_normal, 32, 1, 2e-3, 1.5),
+    (torus, torus_normal, 64, 1, 1e-4, 0.1),
 ]
 
 
-@pytest.mark.parametrize("f, normal, n, genus, distance", CASES)
-def test_sampled_surfaces(f, normal, n, genus, distance):
+@pytest.mark.parametrize("f, normal, n, genus, distance, normal_degrees", CASES)
+def test_sampled_surfaces(f, normal, n, genus, distance, normal_degrees):
     volume, spacing, origin = sampled(f, n)
     m = isopatch.mesh_volume(volume, level=0.0, spacing=spacing, origin=origin)
     report = m.analyze()
@@ -30,11 +32,12 @@ def test_sampled_surfaces(f, normal, n, genus, distance):
 
     # Normals against the analytic ones, and against scikit-image's on the same volume.
     ours = angle_degrees(m.normals, normal(m.vertices))
+    assert ours.max() < normal_degrees
     measure = pytest.importorskip("skimage.measure")
     verts, faces, normals, _ = measure.marching_cubes(volume, 0.0, spacing=spacing)
     verts = verts + np.asarray(origin)
     theirs = angle_degrees(-normals, normal(verts))  # their normals point down the gradient
-    assert ours.mean() < theirs.mean() and np.percentile(ours, 99) < np.percentile(theirs, 99)
+    assert ours.mean() < 0.1 * theirs.mean() and ours.max() < theirs.max()
 
 
 def test_axis_order_matches_scikit_image():

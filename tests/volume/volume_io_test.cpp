@@ -133,7 +133,7 @@ std::string nrrd_header(const std::string& encoding, const std::string& extra = 
 TEST(Nrrd, RawAndGzipFastestAxisIsX) {
   const auto values = ramp(24);
   const std::string extra = "space directions: (0.5,0,0) (0,2,0) (0,0,1.5)\nspace origin: (1,-2,3)\nkey:=value\n";
-  for (const std::string& encoding : {"raw", "gzip"}) {
+  for (const std::string encoding : {"raw", "gzip"}) {
     const std::string data = encoding == "raw" ? bytes_of(values) : gzip(bytes_of(values));
     const Volume v = decode_volume(nrrd_header(encoding, extra) + data, VolumeFormat::Nrrd);
     ASSERT_EQ(v.shape, (std::array<std::size_t, 3>{4, 3, 2})) << encoding;
