@@ -50,11 +50,13 @@ def sample(f, n):
 
 
 def row(label, method, seconds, vertices, faces, normals, formula, exact_normal):
+    """One table row, and the mesh's median edge length."""
     report = isopatch.Mesh.from_arrays(vertices, faces, formula, box=((-1,) * 3, (1,) * 3)).analyze()
     err = angles(normals, exact_normal(vertices))
-    return (f"| {label} | {method} | {seconds * 1000:.0f} | {len(vertices)} | "
+    text = (f"| {label} | {method} | {seconds * 1000:.0f} | {len(vertices)} | "
             f"{100 * report['valence']['share_6']:.1f} | {report['shape']['min_angle_degrees']['min']:.1f} | "
-            f"{err.mean():.3f} / {err.max():.3f} | {report['accuracy']['mean_curvature']['nrms']:.3f} |")
+            f"{err.mean():.2g} / {err.max():.2g} | {report['accuracy']['mean_curvature']['nrms']:.3f} |")
+    return text, report["shape"]["edge_length"]["median"]
 
 
 def main():
@@ -72,16 +74,17 @@ def main():
             start = time.perf_counter()
             verts, faces, normals, _ = measure.marching_cubes(volume, 0.0, spacing=(h, h, h))
             seconds = time.perf_counter() - start
-            print(row(label, "skimage marching_cubes", seconds, verts - 1.0, faces, -normals, formula, normal))
+            text, edge = row(label, "skimage marching_cubes", seconds, verts - 1.0, faces, -normals, formula, normal)
+            print(text)
             start = time.perf_counter()
             m = isopatch.mesh_volume(volume, spacing=(h, h, h), origin=(-1, -1, -1))
             seconds = time.perf_counter() - start
-            print(row(label, "isopatch mesh_volume", seconds, m.vertices, m.faces, m.normals, formula, normal))
+            print(row(label, "isopatch mesh_volume", seconds, m.vertices, m.faces, m.normals, formula, normal)[0])
             start = time.perf_counter()
-            m = isopatch.mesh_volume(volume, spacing=(h, h, h), origin=(-1, -1, -1), quality="preview")
+            m = isopatch.mesh_volume(volume, spacing=(h, h, h), origin=(-1, -1, -1), edge_length=edge)
             seconds = time.perf_counter() - start
-            print(row(label, "isopatch mesh_volume preview", seconds, m.vertices, m.faces, m.normals, formula,
-                      normal))
+            print(row(label, "isopatch, skimage's median edge", seconds, m.vertices, m.faces, m.normals, formula,
+                      normal)[0])
         # The function itself: isopatch calls it in batches; skimage needs it sampled first (128^3).
         box = ((-1.0,) * 3, (1.0,) * 3)
         start = time.perf_counter()
@@ -89,17 +92,17 @@ def main():
         verts, faces, normals, _ = measure.marching_cubes(volume, 0.0, spacing=(h, h, h))
         seconds = time.perf_counter() - start
         print(row(f"{name} function", "sample 129^3 + skimage", seconds, verts - 1.0, faces, -normals, formula,
-                  normal))
+                  normal)[0])
         start = time.perf_counter()
         m = isopatch.mesh(f, box=box)
         seconds = time.perf_counter() - start
         print(row(f"{name} function", "isopatch mesh(callable)", seconds, m.vertices, m.faces, m.normals, formula,
-                  normal))
+                  normal)[0])
         start = time.perf_counter()
         m = isopatch.mesh(formula, box=box)
         seconds = time.perf_counter() - start
         print(row(f"{name} function", "isopatch mesh(formula)", seconds, m.vertices, m.faces, m.normals, formula,
-                  normal))
+                  normal)[0])
 
 
 if __name__ == "__main__":
