@@ -13,7 +13,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  const isopatch::VolumeFormat format = data[0] % 2 == 0 ? isopatch::VolumeFormat::Npy : isopatch::VolumeFormat::Nrrd;
+  const isopatch::VolumeFormat format =
+      data[0] % 2 == 0 ? isopatch::VolumeFormat::Npy : isopatch::VolumeFormat::Nrrd;
   const std::string_view bytes(reinterpret_cast<const char*>(data + 1), size - 1);
   try {
     const isopatch::Volume volume = isopatch::decode_volume(bytes, format, "fuzz.input");

@@ -103,8 +103,10 @@ int run_mesh(const MeshOptions& o) {
   check_output_path(o.output);
   if (!o.stats_json.empty()) check_writable_location(o.stats_json);
   if (o.volume.given() && !is_volume_path(o.surface))
-    throw InputError("--level, --spacing and --origin are for volumes (.npy, .nrrd), not '" + o.surface + "'");
-  if (is_volume_path(o.surface) && !o.params.empty()) throw InputError("--param is for formulas, not volumes");
+    throw InputError("--level, --spacing and --origin are for volumes (.npy, .nrrd), not '" + o.surface +
+                     "'");
+  if (is_volume_path(o.surface) && !o.params.empty())
+    throw InputError("--param is for formulas, not volumes");
   const SurfacePtr surface = is_volume_path(o.surface)
                                  ? volume_input(o.surface, o.volume)
                                  : resolve_surface(o.surface, settings.box, parse_params(o.params));
@@ -130,8 +132,9 @@ int run_mesh(const MeshOptions& o) {
 Runner add_mesh_command(CLI::App& app) {
   auto o = std::make_shared<MeshOptions>();
   CLI::App* cmd = app.add_subcommand("mesh", "Mesh an implicit surface f(x,y,z) = 0 and write the mesh");
-  cmd->add_option("surface", o->surface,
-                  "Catalogue name (see 'isopatch surfaces'), a formula, @file, or a sampled volume (.npy, .nrrd)")
+  cmd->add_option(
+         "surface", o->surface,
+         "Catalogue name (see 'isopatch surfaces'), a formula, @file, or a sampled volume (.npy, .nrrd)")
       ->required();
   cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off or .stl")->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();

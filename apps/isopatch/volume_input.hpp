@@ -10,9 +10,9 @@
 namespace isopatch::cli {
 
 struct VolumeOptions {
-  std::optional<double> level;   ///< default 0
-  std::string spacing;           ///< "sx,sy,sz" (or one number for all three); empty: from the file
-  std::string origin;            ///< "ox,oy,oz"; empty: from the file
+  std::optional<double> level;  ///< default 0
+  std::string spacing;          ///< "sx,sy,sz" (or one number for all three); empty: from the file
+  std::string origin;           ///< "ox,oy,oz"; empty: from the file
   bool given() const { return level || !spacing.empty() || !origin.empty(); }
 };
 

@@ -1,8 +1,8 @@
 // Batched calls into a Python function: sampling and vertex projection (callable_sampling.hpp).
 #include "callable_sampling.hpp"
 
-#include <isopatch/error.hpp>
 #include <pybind11/numpy.h>
+#include <isopatch/error.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -33,12 +33,14 @@ py::array_t<double> point_array(const std::vector<Vec3>& points, std::size_t fir
 }
 
 /// The callable's result as `rows` x `columns` doubles (columns 1: a vector of n values).
-py::array_t<double> checked_result(const py::object& result, std::size_t rows, int columns, const char* what) {
+py::array_t<double> checked_result(const py::object& result, std::size_t rows, int columns,
+                                   const char* what) {
   auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(result);
   if (!a) throw InputError(std::string(what) + " must return a numeric array");
-  const bool ok = columns == 1 ? (a.ndim() == 1 && static_cast<std::size_t>(a.shape(0)) == rows) ||
-                                     (a.ndim() == 2 && static_cast<std::size_t>(a.shape(0)) == rows && a.shape(1) == 1)
-                               : a.ndim() == 2 && static_cast<std::size_t>(a.shape(0)) == rows && a.shape(1) == columns;
+  const bool ok =
+      columns == 1 ? (a.ndim() == 1 && static_cast<std::size_t>(a.shape(0)) == rows) ||
+                         (a.ndim() == 2 && static_cast<std::size_t>(a.shape(0)) == rows && a.shape(1) == 1)
+                   : a.ndim() == 2 && static_cast<std::size_t>(a.shape(0)) == rows && a.shape(1) == columns;
   if (!ok) {
     std::string shape;
     for (py::ssize_t d = 0; d < a.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(a.shape(d));
@@ -153,7 +155,8 @@ ProjectionOutcome project_vertices(BatchFunction& f, Mesh& mesh, const Box& box,
       Vec3& p = mesh.positions[active[n]];
       Vec3 g = gv[n];
       for (int a = 0; a < 3; ++a)  // on a face of the box: stay in it
-        if (std::abs(p[a] - box.lo[a]) <= face_tolerance || std::abs(p[a] - box.hi[a]) <= face_tolerance) g[a] = 0.0;
+        if (std::abs(p[a] - box.lo[a]) <= face_tolerance || std::abs(p[a] - box.hi[a]) <= face_tolerance)
+          g[a] = 0.0;
       const double g2 = g.squaredNorm();
       const Vec3 move = -fv[n] / g2 * g;
       if (!(g2 > 0.0) || !std::isfinite(g2) || !(move.norm() <= max_step)) {

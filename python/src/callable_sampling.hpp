@@ -5,10 +5,10 @@
 // B-spline interpolant (volume_surface.hpp) is meshed without the GIL, and the vertices are then moved
 // onto f = 0 itself by batched Newton steps (one call per step for all vertices still moving).
 
+#include <pybind11/pybind11.h>
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh.hpp>
 #include <isopatch/volume.hpp>
-#include <pybind11/pybind11.h>
 
 #include <cstddef>
 #include <vector>
@@ -21,7 +21,7 @@ struct BatchFunction {
   pybind11::object value;
   pybind11::object gradient;  ///< None: central differences (see evaluate)
   std::size_t batch = 1 << 18;
-  std::size_t calls = 0;  ///< calls made into Python so far
+  std::size_t calls = 0;   ///< calls made into Python so far
   std::size_t points = 0;  ///< points passed in those calls
 
   /// f at every point, in calls of at most `batch` points.

@@ -1,9 +1,9 @@
 // The mapping of isopatch::Error to the exception classes of isopatch/_errors.py (errors.hpp).
 #include "errors.hpp"
 
+#include <pybind11/pybind11.h>
 #include <isopatch/error.hpp>
 #include <isopatch/expression.hpp>
-#include <pybind11/pybind11.h>
 
 namespace py = pybind11;
 

@@ -1,12 +1,12 @@
 // isopatch._isopatch: the compiled half of the Python package (the other half, isopatch/*.py, gives
 // the documented API). Every long call runs without the GIL (run_released.hpp).
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/resolve_surface.hpp>
 #include <isopatch/volume_io.hpp>
 #include <isopatch/volume_surface.hpp>
-#include <pybind11/numpy.h>
-#include <pybind11/pybind11.h>
-#include <pybind11/stl.h>
 
 #include <cmath>
 #include <map>
@@ -41,18 +41,30 @@ Settings to_settings(const py::dict& options) {
   Settings s;
   for (const auto& [key_handle, value] : options) {
     const auto key = key_handle.cast<std::string>();
-    if (key == "method") s.method = parse_method(value.cast<std::string>());
-    else if (key == "edge_length") s.edge_length = value.cast<double>();
-    else if (key == "max_error") s.max_error = value.cast<double>();
-    else if (key == "quality") s.quality = parse_quality(value.cast<std::string>());
-    else if (key == "threads") s.threads = value.cast<int>();
-    else if (key == "remesh") s.remesh_iterations = value.cast<int>();
-    else if (key == "resolution") s.resolution = value.cast<int>();
-    else if (key == "grid") s.grid = value.cast<int>();
-    else if (key == "max_vertices") s.max_vertices = value.cast<std::size_t>();
-    else if (key == "max_evaluations") s.max_evaluations = value.cast<std::uint64_t>();
-    else if (key == "time_limit") s.time_limit = value.cast<double>();
-    else throw InputError("unknown setting '" + key + "'", key);
+    if (key == "method")
+      s.method = parse_method(value.cast<std::string>());
+    else if (key == "edge_length")
+      s.edge_length = value.cast<double>();
+    else if (key == "max_error")
+      s.max_error = value.cast<double>();
+    else if (key == "quality")
+      s.quality = parse_quality(value.cast<std::string>());
+    else if (key == "threads")
+      s.threads = value.cast<int>();
+    else if (key == "remesh")
+      s.remesh_iterations = value.cast<int>();
+    else if (key == "resolution")
+      s.resolution = value.cast<int>();
+    else if (key == "grid")
+      s.grid = value.cast<int>();
+    else if (key == "max_vertices")
+      s.max_vertices = value.cast<std::size_t>();
+    else if (key == "max_evaluations")
+      s.max_evaluations = value.cast<std::uint64_t>();
+    else if (key == "time_limit")
+      s.time_limit = value.cast<double>();
+    else
+      throw InputError("unknown setting '" + key + "'", key);
   }
   return s;
 }
@@ -104,7 +116,8 @@ MeshResult mesh_callable(const py::object& f, const py::object& gradient, const 
   const std::size_t sampling_calls = fn.calls;
   MeshResult r = mesh_released(std::move(surface), std::move(settings));
   std::vector<double> distance;
-  const ProjectionOutcome p = project_vertices(fn, r.mesh, *box, 0.5 * spacing.minCoeff(), r.normals, distance);
+  const ProjectionOutcome p =
+      project_vertices(fn, r.mesh, *box, 0.5 * spacing.minCoeff(), r.normals, distance);
   r.distance = std::move(distance);
   r.extra = {{"calls", static_cast<double>(fn.calls)},
              {"sampling_calls", static_cast<double>(sampling_calls)},
@@ -118,9 +131,9 @@ MeshResult mesh_callable(const py::object& f, const py::object& gradient, const 
 Volume to_volume(const py::array_t<double, py::array::c_style | py::array::forcecast>& array,
                  const std::array<double, 3>& spacing, const std::array<double, 3>& origin) {
   if (array.ndim() != 3)
-    throw InputError("the volume must be a 3-dimensional array, not " + std::to_string(array.ndim()) +
-                         "-dimensional",
-                     "volume");
+    throw InputError(
+        "the volume must be a 3-dimensional array, not " + std::to_string(array.ndim()) + "-dimensional",
+        "volume");
   Volume v;
   for (int a = 0; a < 3; ++a) {
     v.shape[static_cast<std::size_t>(a)] = static_cast<std::size_t>(array.shape(a));
@@ -131,24 +144,27 @@ Volume to_volume(const py::array_t<double, py::array::c_style | py::array::force
   return v;
 }
 
-MeshResult mesh_volume(const py::array_t<double, py::array::c_style | py::array::forcecast>& array, double level,
-                       const std::array<double, 3>& spacing, const std::array<double, 3>& origin,
-                       const BoxArg& box, const py::dict& options) {
+MeshResult mesh_volume(const py::array_t<double, py::array::c_style | py::array::forcecast>& array,
+                       double level, const std::array<double, 3>& spacing,
+                       const std::array<double, 3>& origin, const BoxArg& box, const py::dict& options) {
   Settings settings = to_settings(options);
   settings.box = to_box(box);
   Volume volume = to_volume(array, spacing, origin);
-  SurfacePtr surface = run_released([&](const std::atomic<bool>*) { return volume_surface(std::move(volume), level); });
+  SurfacePtr surface =
+      run_released([&](const std::atomic<bool>*) { return volume_surface(std::move(volume), level); });
   return mesh_released(std::move(surface), std::move(settings));
 }
 
 MeshResult mesh_from_arrays(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
                             const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& faces,
                             const std::string& spec, const BoxArg& box) {
-  if (vertices.ndim() != 2 || vertices.shape(1) != 3) throw InputError("vertices must be an (V, 3) array", "vertices");
+  if (vertices.ndim() != 2 || vertices.shape(1) != 3)
+    throw InputError("vertices must be an (V, 3) array", "vertices");
   if (faces.ndim() != 2 || faces.shape(1) != 3) throw InputError("faces must be an (F, 3) array", "faces");
   MeshResult r;
   const double* v = vertices.data();
-  for (py::ssize_t i = 0; i < vertices.shape(0); ++i) r.mesh.positions.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+  for (py::ssize_t i = 0; i < vertices.shape(0); ++i)
+    r.mesh.positions.emplace_back(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
   const std::int64_t* f = faces.data();
   const auto count = static_cast<std::int64_t>(r.mesh.positions.size());
   for (py::ssize_t t = 0; t < faces.shape(0); ++t) {
@@ -156,8 +172,8 @@ MeshResult mesh_from_arrays(const py::array_t<double, py::array::c_style | py::a
     for (int c = 0; c < 3; ++c) {
       const std::int64_t index = f[3 * t + c];
       if (index < 0 || index >= count)
-        throw InputError("face " + std::to_string(t) + " refers to vertex " + std::to_string(index) + " but there are " +
-                             std::to_string(count) + " vertices",
+        throw InputError("face " + std::to_string(t) + " refers to vertex " + std::to_string(index) +
+                             " but there are " + std::to_string(count) + " vertices",
                          "faces");
       tri[static_cast<std::size_t>(c)] = static_cast<std::uint32_t>(index);
     }
@@ -188,12 +204,13 @@ PYBIND11_MODULE(_isopatch, m) {
   register_error_translator();
   bind_result(m);
   m.def("mesh_spec", &mesh_spec, py::arg("spec"), py::arg("box"), py::arg("params"), py::arg("options"));
-  m.def("mesh_callable", &mesh_callable, py::arg("f"), py::arg("gradient"), py::arg("box"), py::arg("samples"),
-        py::arg("batch"), py::arg("options"));
-  m.def("mesh_volume", &mesh_volume, py::arg("volume"), py::arg("level"), py::arg("spacing"), py::arg("origin"),
-        py::arg("box"), py::arg("options"));
+  m.def("mesh_callable", &mesh_callable, py::arg("f"), py::arg("gradient"), py::arg("box"),
+        py::arg("samples"), py::arg("batch"), py::arg("options"));
+  m.def("mesh_volume", &mesh_volume, py::arg("volume"), py::arg("level"), py::arg("spacing"),
+        py::arg("origin"), py::arg("box"), py::arg("options"));
   m.def("read_volume", &read_volume_file, py::arg("path"));
-  m.def("mesh_from_arrays", &mesh_from_arrays, py::arg("vertices"), py::arg("faces"), py::arg("spec"), py::arg("box"));
+  m.def("mesh_from_arrays", &mesh_from_arrays, py::arg("vertices"), py::arg("faces"), py::arg("spec"),
+        py::arg("box"));
   m.def("catalogue", [] {
     py::list names;
     for (const auto& entry : isopatch::catalogue()) names.append(std::string(entry.name));

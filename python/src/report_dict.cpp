@@ -11,9 +11,9 @@ namespace {
 
 py::dict distribution(const Distribution& d) {
   py::dict r;
-  const std::pair<const char*, double> entries[] = {{"min", d.min}, {"p1", d.p1},         {"p5", d.p5},
-                                                    {"median", d.median}, {"p95", d.p95}, {"p99", d.p99},
-                                                    {"max", d.max}, {"mean", d.mean},     {"rms", d.rms}};
+  const std::pair<const char*, double> entries[] = {{"min", d.min},       {"p1", d.p1},     {"p5", d.p5},
+                                                    {"median", d.median}, {"p95", d.p95},   {"p99", d.p99},
+                                                    {"max", d.max},       {"mean", d.mean}, {"rms", d.rms}};
   r["count"] = d.count;
   for (const auto& [key, value] : entries) r[key] = value;
   return r;

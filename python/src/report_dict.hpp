@@ -2,8 +2,8 @@
 // analyze_quality()'s report (metrics.hpp) as nested Python dicts, under the keys of the command
 // line's `isopatch analyze --json` (undefined statistics are NaN).
 
-#include <isopatch/metrics.hpp>
 #include <pybind11/pybind11.h>
+#include <isopatch/metrics.hpp>
 
 namespace isopatch::python {
 

@@ -2,10 +2,10 @@
 // (isopatch/_mesh.py) caches them.
 #include "result.hpp"
 
+#include <pybind11/stl.h>
 #include <isopatch/curvature.hpp>
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/render.hpp>
-#include <pybind11/stl.h>
 
 #include "report_dict.hpp"
 
@@ -109,8 +109,8 @@ py::array_t<std::uint8_t> render(const MeshResult& r, int mode, const std::strin
     image = render_mesh(field_mode && values.empty() ? mesh_with_fields(r) : r.mesh, o);
     if (!path.empty()) write_png(image, path);
   }
-  py::array_t<std::uint8_t> a({static_cast<py::ssize_t>(image.height()), static_cast<py::ssize_t>(image.width()),
-                               py::ssize_t{3}});
+  py::array_t<std::uint8_t> a(
+      {static_cast<py::ssize_t>(image.height()), static_cast<py::ssize_t>(image.width()), py::ssize_t{3}});
   std::copy(image.bytes().begin(), image.bytes().end(), a.mutable_data());
   return a;
 }

@@ -170,8 +170,8 @@ SurfacePtr volume_surface(Volume volume, double level, std::string name) {
   if (!std::isfinite(level)) throw InputError("the level must be finite", "level");
   const auto [lo, hi] = std::minmax_element(volume.samples.begin(), volume.samples.end());
   if (!(*lo < level) || !(*hi >= level))
-    throw NoSurfaceError("no sample of the volume crosses level " + number(level) + " (the samples range over [" +
-                         number(*lo) + ", " + number(*hi) + "])");
+    throw NoSurfaceError("no sample of the volume crosses level " + number(level) +
+                         " (the samples range over [" + number(*lo) + ", " + number(*hi) + "])");
   return std::make_shared<VolumeSurface>(std::move(volume), level, std::move(name));
 }
 

@@ -31,7 +31,8 @@ std::string gunzip_exactly(std::string_view compressed, std::size_t expected, co
     const std::size_t written = out_chunk - z.avail_out;
     if (full && written > 0) {
       inflateEnd(&z);
-      io::fail(name, "the gzip data holds more than the " + std::to_string(expected) + " bytes the header declares");
+      io::fail(name, "the gzip data holds more than the " + std::to_string(expected) +
+                         " bytes the header declares");
     }
     out_pos += written;
     if (status == Z_BUF_ERROR && in_pos == compressed.size()) break;  // input exhausted

@@ -36,7 +36,8 @@ class HeaderParser {
       expect(':');
       skip_space();
       if (key == "descr") {
-        if (peek() != '\'' && peek() != '"') fail("dtype " + rest() + " is not a plain scalar type (want e.g. '<f8')");
+        if (peek() != '\'' && peek() != '"')
+          fail("dtype " + rest() + " is not a plain scalar type (want e.g. '<f8')");
         f.descr = string_literal();
         f.has_descr = true;
       } else if (key == "fortran_order") {
@@ -103,8 +104,10 @@ class HeaderParser {
       if (values.size() == 8) fail("more than 8 dimensions");
       values.push_back(v);
       skip_space();
-      if (peek() == ',') ++pos_;
-      else if (peek() != ')') fail("expected ',' or ')' at " + rest());
+      if (peek() == ',')
+        ++pos_;
+      else if (peek() != ')')
+        fail("expected ',' or ')' at " + rest());
     }
     ++pos_;
     return values;
@@ -119,7 +122,8 @@ class HeaderParser {
 
 Volume decode_npy(std::string_view bytes, const std::string& name) {
   static constexpr std::string_view kMagic = "\x93NUMPY";
-  if (bytes.size() < 10 || bytes.substr(0, 6) != kMagic) io::fail(name, "not a .npy file (no \\x93NUMPY magic)");
+  if (bytes.size() < 10 || bytes.substr(0, 6) != kMagic)
+    io::fail(name, "not a .npy file (no \\x93NUMPY magic)");
   const int major = static_cast<unsigned char>(bytes[6]);
   std::size_t header_len = 0, offset = 0;
   if (major == 1) {
@@ -158,8 +162,8 @@ Volume decode_npy(std::string_view bytes, const std::string& name) {
   const std::string shape_text =
       std::to_string(shape[0]) + " x " + std::to_string(shape[1]) + " x " + std::to_string(shape[2]);
   if (count == 0)
-    io::fail(name, "the array is " + shape_text + ": empty, or more than " + std::to_string(kMaxVolumeSamples) +
-                       " samples");
+    io::fail(name, "the array is " + shape_text + ": empty, or more than " +
+                       std::to_string(kMaxVolumeSamples) + " samples");
   const std::size_t need = count * scalar_size(*type);
   if (bytes.size() - data_offset != need)
     io::fail(name, "the array is " + shape_text + " of '" + d + "' (" + std::to_string(need) +

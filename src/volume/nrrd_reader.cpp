@@ -72,7 +72,8 @@ void read_field(Header& h, std::string_view field, std::string_view value, const
     io::Tokens tokens(value);
     for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next()) {
       std::uint64_t n = 0;
-      if (!io::parse_uint(t, n) || h.sizes.size() == 16) io::fail(name, "bad NRRD sizes " + io::quoted(value));
+      if (!io::parse_uint(t, n) || h.sizes.size() == 16)
+        io::fail(name, "bad NRRD sizes " + io::quoted(value));
       h.sizes.push_back(n);
     }
   } else if (field == "encoding") {
@@ -91,10 +92,12 @@ void read_field(Header& h, std::string_view field, std::string_view value, const
       if (!d) io::fail(name, "NRRD space directions must be three vectors (a,b,c), not " + io::quoted(value));
       for (int b = 0; b < 3; ++b)
         if (b != a && (*d)[b] != 0.0)
-          io::fail(name, "NRRD space directions must be axis-aligned (a diagonal matrix), not " + io::quoted(value));
+          io::fail(name, "NRRD space directions must be axis-aligned (a diagonal matrix), not " +
+                             io::quoted(value));
       diagonal[a] = (*d)[a];
     }
-    if (!trim(value.substr(pos)).empty()) io::fail(name, "NRRD space directions: extra text in " + io::quoted(value));
+    if (!trim(value.substr(pos)).empty())
+      io::fail(name, "NRRD space directions: extra text in " + io::quoted(value));
     h.directions = diagonal;
   } else if (field == "space origin") {
     std::size_t pos = 0;
@@ -121,7 +124,8 @@ Volume decode_nrrd(std::string_view bytes, const std::string& name) {
   std::size_t line_number = 1;
   while (true) {
     const std::size_t end = bytes.find('\n', pos);
-    if (end == std::string_view::npos) io::fail(name, "the NRRD header has no end (an empty line before the data)");
+    if (end == std::string_view::npos)
+      io::fail(name, "the NRRD header has no end (an empty line before the data)");
     ++line_number;
     const std::string_view line = trim(bytes.substr(pos, end - pos));
     pos = end + 1;
@@ -129,11 +133,13 @@ Volume decode_nrrd(std::string_view bytes, const std::string& name) {
     if (line.front() == '#') continue;
     if (line.find(":=") != std::string_view::npos) continue;  // key/value pair
     const std::size_t colon = line.find(": ");
-    if (colon == std::string_view::npos) io::fail_at(name, line_number, "not a NRRD field: " + io::quoted(line));
+    if (colon == std::string_view::npos)
+      io::fail_at(name, line_number, "not a NRRD field: " + io::quoted(line));
     read_field(h, line.substr(0, colon), trim(line.substr(colon + 2)), name);
   }
   if (!h.type) io::fail(name, "the NRRD header has no type");
-  if (h.dimension != 3) io::fail(name, "the NRRD volume has dimension " + std::to_string(h.dimension) + "; a volume needs 3");
+  if (h.dimension != 3)
+    io::fail(name, "the NRRD volume has dimension " + std::to_string(h.dimension) + "; a volume needs 3");
   if (h.sizes.size() != 3) io::fail(name, "the NRRD sizes must be 3 numbers");
   std::array<std::size_t, 3> shape{};
   for (int a = 0; a < 3; ++a) {
@@ -143,17 +149,18 @@ Volume decode_nrrd(std::string_view bytes, const std::string& name) {
   }
   const std::size_t count = checked_sample_count(shape);
   if (count == 0)
-    io::fail(name, "the NRRD volume is empty or has more than " + std::to_string(kMaxVolumeSamples) + " samples");
+    io::fail(name,
+             "the NRRD volume is empty or has more than " + std::to_string(kMaxVolumeSamples) + " samples");
   const std::size_t need = count * scalar_size(*h.type);
   const std::string_view data = bytes.substr(pos);
   std::string inflated;
   const char* raw = nullptr;
   if (h.encoding == "raw") {
     if (data.size() != need)
-      io::fail(name, "the NRRD header declares " + std::to_string(shape[0]) + " x " + std::to_string(shape[1]) +
-                         " x " + std::to_string(shape[2]) + " " + h.type_name + " samples (" +
-                         std::to_string(need) + " bytes) but the file holds " + std::to_string(data.size()) +
-                         " bytes of data");
+      io::fail(name, "the NRRD header declares " + std::to_string(shape[0]) + " x " +
+                         std::to_string(shape[1]) + " x " + std::to_string(shape[2]) + " " + h.type_name +
+                         " samples (" + std::to_string(need) + " bytes) but the file holds " +
+                         std::to_string(data.size()) + " bytes of data");
     raw = data.data();
   } else if (h.encoding == "gzip" || h.encoding == "gz") {
     inflated = gunzip_exactly(data, need, name);

@@ -29,16 +29,17 @@ void Volume::validate() const {
     return std::to_string(shape[0]) + " x " + std::to_string(shape[1]) + " x " + std::to_string(shape[2]);
   };
   for (const std::size_t n : shape)
-    if (n < 2) throw InputError("the volume is " + shape_text() + ": every side needs at least 2 samples", "volume");
+    if (n < 2)
+      throw InputError("the volume is " + shape_text() + ": every side needs at least 2 samples", "volume");
   const std::size_t count = checked_sample_count(shape);
   if (count == 0)
-    throw InputError("the volume is " + shape_text() + ": more than " + std::to_string(kMaxVolumeSamples) +
-                         " samples",
-                     "volume");
+    throw InputError(
+        "the volume is " + shape_text() + ": more than " + std::to_string(kMaxVolumeSamples) + " samples",
+        "volume");
   if (samples.size() != count)
-    throw InputError("the volume is " + shape_text() + " but holds " + std::to_string(samples.size()) +
-                         " samples",
-                     "volume");
+    throw InputError(
+        "the volume is " + shape_text() + " but holds " + std::to_string(samples.size()) + " samples",
+        "volume");
   for (int a = 0; a < 3; ++a) {
     if (!std::isfinite(spacing[a]) || spacing[a] <= 0.0)
       throw InputError("the spacing must be finite and > 0 on every axis", "spacing");

@@ -37,7 +37,8 @@ Volume read_volume(const std::string& path) {
 }
 
 Volume decode_volume(std::string_view bytes, VolumeFormat format, const std::string& name) {
-  Volume v = format == VolumeFormat::Npy ? volume_io::decode_npy(bytes, name) : volume_io::decode_nrrd(bytes, name);
+  Volume v =
+      format == VolumeFormat::Npy ? volume_io::decode_npy(bytes, name) : volume_io::decode_nrrd(bytes, name);
   try {
     v.validate();
   } catch (const InputError& e) {

@@ -1,8 +1,8 @@
 // The .npy and NRRD readers: round trips of hand-built files, and every kind of bad file.
 #include <gtest/gtest.h>
+#include <zlib.h>
 #include <isopatch/error.hpp>
 #include <isopatch/volume_io.hpp>
-#include <zlib.h>
 
 #include <cstdint>
 #include <cstring>
@@ -55,8 +55,9 @@ std::string error_of(std::string_view bytes, VolumeFormat format) {
 
 TEST(Npy, COrderFloat32) {
   const auto values = ramp(2 * 3 * 4);
-  const Volume v = decode_volume(
-      npy("{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3, 4), }", bytes_of(values)), VolumeFormat::Npy);
+  const Volume v =
+      decode_volume(npy("{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3, 4), }", bytes_of(values)),
+                    VolumeFormat::Npy);
   ASSERT_EQ(v.shape, (std::array<std::size_t, 3>{2, 3, 4}));
   for (std::size_t i = 0; i < 2; ++i)
     for (std::size_t j = 0; j < 3; ++j)
@@ -84,9 +85,11 @@ TEST(Npy, BadFilesNameTheProblem) {
   EXPECT_NE(error_of("not numpy at all", VolumeFormat::Npy).find("not a .npy file"), std::string::npos);
   EXPECT_NE(error_of(npy(head("<c8", "(2, 3, 4)"), data), VolumeFormat::Npy).find("unsupported dtype '<c8'"),
             std::string::npos);
-  EXPECT_NE(error_of(npy(head("<f4", "(6, 4)"), data), VolumeFormat::Npy).find("2 dimensions"), std::string::npos);
-  EXPECT_NE(error_of(npy(head("<f4", "(2, 3, 4)"), data.substr(0, 50)), VolumeFormat::Npy).find("holds 50 bytes"),
+  EXPECT_NE(error_of(npy(head("<f4", "(6, 4)"), data), VolumeFormat::Npy).find("2 dimensions"),
             std::string::npos);
+  EXPECT_NE(
+      error_of(npy(head("<f4", "(2, 3, 4)"), data.substr(0, 50)), VolumeFormat::Npy).find("holds 50 bytes"),
+      std::string::npos);
   EXPECT_NE(error_of(npy(head("<f4", "(2, 3, 4)"), data + "x"), VolumeFormat::Npy).find("holds 97 bytes"),
             std::string::npos);
   EXPECT_NE(error_of(npy(head("<f4", "(4000000000, 4000000000, 4000000000)"), data), VolumeFormat::Npy)
@@ -132,7 +135,8 @@ std::string nrrd_header(const std::string& encoding, const std::string& extra = 
 
 TEST(Nrrd, RawAndGzipFastestAxisIsX) {
   const auto values = ramp(24);
-  const std::string extra = "space directions: (0.5,0,0) (0,2,0) (0,0,1.5)\nspace origin: (1,-2,3)\nkey:=value\n";
+  const std::string extra =
+      "space directions: (0.5,0,0) (0,2,0) (0,0,1.5)\nspace origin: (1,-2,3)\nkey:=value\n";
   for (const std::string encoding : {"raw", "gzip"}) {
     const std::string data = encoding == "raw" ? bytes_of(values) : gzip(bytes_of(values));
     const Volume v = decode_volume(nrrd_header(encoding, extra) + data, VolumeFormat::Nrrd);
@@ -143,7 +147,8 @@ TEST(Nrrd, RawAndGzipFastestAxisIsX) {
     EXPECT_EQ(v.spacing, Vec3(0.5, 2, 1.5));
     EXPECT_EQ(v.origin, Vec3(1, -2, 3));
   }
-  const Volume s = decode_volume(nrrd_header("raw", "spacings: 2 3 4\n") + bytes_of(values), VolumeFormat::Nrrd);
+  const Volume s =
+      decode_volume(nrrd_header("raw", "spacings: 2 3 4\n") + bytes_of(values), VolumeFormat::Nrrd);
   EXPECT_EQ(s.spacing, Vec3(2, 3, 4));
 }
 
@@ -157,14 +162,16 @@ TEST(Nrrd, BadFilesNameTheProblem) {
   EXPECT_NE(err(nrrd_header("gzip") + gzip(data + "more")).find("more than"), std::string::npos);
   EXPECT_NE(err(nrrd_header("gzip") + "garbage that is not gzip").find("corrupt"), std::string::npos);
   EXPECT_NE(err(nrrd_header("ascii") + "1 2 3").find("encoding 'ascii' is not supported"), std::string::npos);
-  EXPECT_NE(err(nrrd_header("raw", "space directions: (1,1,0) (0,1,0) (0,0,1)\n") + data).find("axis-aligned"),
-            std::string::npos);
+  EXPECT_NE(
+      err(nrrd_header("raw", "space directions: (1,1,0) (0,1,0) (0,0,1)\n") + data).find("axis-aligned"),
+      std::string::npos);
   EXPECT_NE(err(nrrd_header("raw", "data file: other.raw\n")).find("detached"), std::string::npos);
   EXPECT_NE(err(nrrd_header("raw", "", "4 3 2 1") + data).find("3 numbers"), std::string::npos);
   EXPECT_NE(err("NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\n").find("no end"), std::string::npos);
   EXPECT_NE(err("NRRD0004\ntype: complex\n\n").find("unsupported NRRD type 'complex'"), std::string::npos);
   EXPECT_NE(err(nrrd_header("raw", "spacings: 1 0 1\n") + data).find("spacing"), std::string::npos);
-  EXPECT_NE(err(nrrd_header("raw", "", "99999999999 99999999999 2") + data).find("too large"), std::string::npos);
+  EXPECT_NE(err(nrrd_header("raw", "", "99999999999 99999999999 2") + data).find("too large"),
+            std::string::npos);
 }
 
 TEST(VolumeFiles, FormatFromExtension) {

@@ -25,7 +25,9 @@ Volume sampled(F f, std::size_t n) {
   return v;
 }
 
-double sphere(const Vec3& p) { return p.norm() - 0.6; }
+double sphere(const Vec3& p) {
+  return p.norm() - 0.6;
+}
 double torus(const Vec3& p) {
   const double q = std::hypot(p.x(), p.y()) - 0.6;
   return std::hypot(q, p.z()) - 0.25;
@@ -92,7 +94,8 @@ TEST(VolumeSurface, BoundsHoldEverySampledValue) {
       const Vec3 p = box.lo + box.size().cwiseProduct(Vec3(t(rng), t(rng), t(rng)));
       const ValueGradient vg = s->value_gradient(p);
       EXPECT_TRUE(bound->value.contains(vg.value));
-      for (int c = 0; c < 3; ++c) EXPECT_TRUE(bound->gradient[static_cast<std::size_t>(c)].contains(vg.gradient[c]));
+      for (int c = 0; c < 3; ++c)
+        EXPECT_TRUE(bound->gradient[static_cast<std::size_t>(c)].contains(vg.gradient[c]));
     }
   }
 }
