@@ -40,8 +40,13 @@ def _triple(value: Sequence[float], name: str) -> Point:
     return t  # type: ignore[return-value]
 
 
-def _options(**kwargs: object) -> Dict[str, object]:
-    return {k: v for k, v in kwargs.items() if v is not None}
+# The library settings both entry points take (the command line's flags of the same names).
+_SETTINGS = ("method", "edge_length", "max_error", "quality", "threads", "remesh", "max_vertices", "time_limit")
+
+
+def _options(arguments: Dict[str, object], names: Sequence[str]) -> Dict[str, object]:
+    """The settings among `arguments` (a call's locals()) named in `names`, without those left None."""
+    return {name: arguments[name] for name in names if arguments[name] is not None}
 
 
 def mesh(
@@ -86,19 +91,7 @@ def mesh(
     Ctrl-C stops it with KeyboardInterrupt. Raises the isopatch exceptions (isopatch.Error and its
     subclasses) with the library's messages; an exception raised by the function propagates unchanged.
     """
-    options = _options(
-        method=method,
-        edge_length=edge_length,
-        max_error=max_error,
-        quality=quality,
-        threads=threads,
-        remesh=remesh,
-        resolution=resolution,
-        grid=grid,
-        max_vertices=max_vertices,
-        max_evaluations=max_evaluations,
-        time_limit=time_limit,
-    )
+    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations"))
     if isinstance(surface, str):
         if gradient is not None or samples is not None:
             raise InputError("gradient and samples are for Python functions, not formulas", "gradient")
@@ -140,17 +133,8 @@ def mesh_volume(
     Raises InputError for an array that is not 3D, has a side below 2 samples, or holds NaN or
     infinity (the message names the index), NoSurfaceError when no sample crosses ``level``.
     """
+    options = _options(locals(), _SETTINGS)
     array = np.ascontiguousarray(volume, dtype=np.float64)
-    options = _options(
-        method=method,
-        edge_length=edge_length,
-        max_error=max_error,
-        quality=quality,
-        threads=threads,
-        remesh=remesh,
-        max_vertices=max_vertices,
-        time_limit=time_limit,
-    )
     result = _isopatch.mesh_volume(
         array, float(level), _triple(spacing, "spacing"), _triple(origin, "origin"), _box(box), options
     )

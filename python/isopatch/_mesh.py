@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from functools import cached_property
 from typing import Any, Dict, Optional, Sequence
 
 import numpy as np
@@ -47,38 +48,26 @@ class Mesh:
 
     def __init__(self, result: Any) -> None:
         self._result = result
-        self._vertices: Optional[np.ndarray] = None
-        self._faces: Optional[np.ndarray] = None
-        self._normals: Optional[np.ndarray] = None
-        self._fields: Optional[Dict[str, np.ndarray]] = None
 
-    @property
+    @cached_property
     def vertices(self) -> np.ndarray:
-        if self._vertices is None:
-            self._vertices = self._result.vertices()
-        return self._vertices
+        return self._result.vertices()
 
-    @property
+    @cached_property
     def faces(self) -> np.ndarray:
-        if self._faces is None:
-            self._faces = self._result.faces()
-        return self._faces
+        return self._result.faces()
 
-    @property
+    @cached_property
     def normals(self) -> np.ndarray:
-        if self._normals is None:
-            self._normals = self._result.normals()
-        return self._normals
+        return self._result.normals()
 
-    @property
+    @cached_property
     def fields(self) -> Dict[str, np.ndarray]:
         """Per-vertex float64 arrays: mean_curvature and gaussian_curvature (discrete, from the mesh;
         NaN on boundary vertices), mean_curvature_exact and gaussian_curvature_exact (of the level set
         through the vertex, from f's derivatives; for a Python function, from its samples'
         interpolant), distance (f / |grad f|, signed, > 0 outside; of the function itself)."""
-        if self._fields is None:
-            self._fields = self._result.fields()
-        return self._fields
+        return self._result.fields()
 
     @property
     def stats(self) -> Dict[str, Dict[str, float]]:
