@@ -46,6 +46,9 @@ def test_setting_errors_name_the_setting(unit_box):
     assert info.value.setting == "box"
     with pytest.raises(isopatch.InputError, match="needs a box"):
         isopatch.mesh("x^2+y^2+z^2-1")
+    with pytest.raises(isopatch.SettingError, match="edge_length has the wrong type") as info:
+        isopatch.mesh("x^2+y^2+z^2-1", box=unit_box, edge_length="fine")
+    assert info.value.setting == "edge_length"
 
 
 def test_no_surface_and_limits(unit_box):

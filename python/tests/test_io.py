@@ -65,6 +65,30 @@ def test_analyze_and_render(sphere_mesh, tmp_path):
         sphere_mesh.render(show="sketch")
 
 
+def test_nrrd_gzip_with_spacing_and_origin(tmp_path):
+    import gzip
+
+    volume, spacing, origin = sampled(sphere, 20)
+    # NRRD lists the fastest axis first: x fastest is numpy's Fortran order of volume[x, y, z].
+    data = gzip.compress(np.asfortranarray(volume).astype("<f8").tobytes(order="F"))
+    header = (
+        "NRRD0004\ntype: double\ndimension: 3\nsizes: 20 20 20\nencoding: gzip\nendian: little\n"
+        f"space directions: ({spacing[0]},0,0) (0,{spacing[1]},0) (0,0,{spacing[2]})\n"
+        f"space origin: ({origin[0]},{origin[1]},{origin[2]})\n\n"
+    )
+    path = tmp_path / "sphere.nrrd"
+    path.write_bytes(header.encode() + data)
+    back, s, o = isopatch.read_volume(str(path))
+    np.testing.assert_array_equal(back, volume)
+    np.testing.assert_allclose(s, spacing)
+    np.testing.assert_allclose(o, origin)
+    m = isopatch.mesh_volume(back, spacing=s, origin=o)
+    np.testing.assert_allclose(np.linalg.norm(m.vertices, axis=1), 0.6, atol=2e-3)
+    path.write_bytes(header.encode() + data[: len(data) // 2])
+    with pytest.raises(isopatch.IoError, match="truncated"):
+        isopatch.read_volume(str(path))
+
+
 def test_volume_files_and_the_command_line(tmp_path):
     volume, spacing, origin = sampled(sphere, 24)
     path = tmp_path / "sphere.npy"
