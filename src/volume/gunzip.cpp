@@ -11,6 +11,11 @@
 namespace isopatch::volume_io {
 
 std::string gunzip_exactly(std::string_view compressed, std::size_t expected, const std::string& name) {
+  // Deflate expands at most 1032-fold (a 258-byte match per 2 bits): a header asking for more than that
+  // is refused before anything is allocated.
+  if (expected / 1032 > compressed.size() + 64)
+    io::fail(name, "the gzip data (" + std::to_string(compressed.size()) + " bytes) cannot hold the " +
+                       std::to_string(expected) + " bytes the header declares");
   z_stream z{};
   // 15 + 32: the largest window, and the header (gzip or zlib) detected from the stream.
   if (inflateInit2(&z, 15 + 32) != Z_OK) io::fail(name, "cannot start gzip decompression");

@@ -1,6 +1,7 @@
 #pragma once
 // gzip (and zlib) decompression for the NRRD reader, by zlib, bounded: never more than the caller
-// expects is inflated, so a small file cannot expand into gigabytes.
+// expects is inflated, and nothing is allocated for more than the stream could possibly expand to, so a
+// small file cannot make the reader allocate or inflate gigabytes.
 
 #include <cstddef>
 #include <string>

@@ -47,7 +47,7 @@ class HeaderParser {
         f.shape = tuple();
         f.has_shape = true;
       } else {
-        fail("unknown header key '" + key + "'");
+        fail("unknown header key " + io::quoted(key));
       }
       skip_space();
       if (peek() == ',') ++pos_;
@@ -142,14 +142,14 @@ Volume decode_npy(std::string_view bytes, const std::string& name) {
 
   const std::string& d = f.descr;
   if (d.size() < 3 || (d[0] != '<' && d[0] != '>' && d[0] != '|' && d[0] != '='))
-    io::fail(name, "unsupported dtype '" + d + "' (want a scalar type such as '<f8')");
+    io::fail(name, "unsupported dtype " + io::quoted(d) + " (want a scalar type such as '<f8')");
   std::uint64_t size = 0;
   const auto type = io::parse_uint(std::string_view(d).substr(2), size) && size <= 16
                         ? numpy_scalar_type(d[1], static_cast<std::size_t>(size))
                         : std::nullopt;
   if (!type)
-    io::fail(name, "unsupported dtype '" + d +
-                       "' (want bool, a signed or unsigned integer of 1 to 8 bytes, float32 or float64)");
+    io::fail(name, "unsupported dtype " + io::quoted(d) +
+                       " (want bool, a signed or unsigned integer of 1 to 8 bytes, float32 or float64)");
   if (f.shape.size() != 3)
     io::fail(name, "the array has " + std::to_string(f.shape.size()) + " dimensions; a volume needs 3");
   std::array<std::size_t, 3> shape{};
@@ -166,7 +166,7 @@ Volume decode_npy(std::string_view bytes, const std::string& name) {
                        std::to_string(kMaxVolumeSamples) + " samples");
   const std::size_t need = count * scalar_size(*type);
   if (bytes.size() - data_offset != need)
-    io::fail(name, "the array is " + shape_text + " of '" + d + "' (" + std::to_string(need) +
+    io::fail(name, "the array is " + shape_text + " of " + io::quoted(d) + " (" + std::to_string(need) +
                        " bytes) but the file holds " + std::to_string(bytes.size() - data_offset) +
                        " bytes of data");
   Volume v;

@@ -62,8 +62,8 @@ void read_field(Header& h, std::string_view field, std::string_view value, const
     h.type_name = std::string(value);
     h.type = nrrd_scalar_type(value);
     if (!h.type)
-      io::fail(name, "unsupported NRRD type '" + h.type_name +
-                         "' (want a signed or unsigned integer of 1 to 8 bytes, float or double)");
+      io::fail(name, "unsupported NRRD type " + io::quoted(h.type_name) +
+                         " (want a signed or unsigned integer of 1 to 8 bytes, float or double)");
   } else if (field == "dimension") {
     std::int64_t d = 0;
     if (!io::parse_int(value, d)) io::fail(name, "bad NRRD dimension " + io::quoted(value));
@@ -107,7 +107,7 @@ void read_field(Header& h, std::string_view field, std::string_view value, const
   } else if (field == "data file" || field == "datafile") {
     io::fail(name, "detached NRRD data (\"data file\") is not supported: attach the data to the header");
   } else if (field == "line skip" || field == "lineskip" || field == "byte skip" || field == "byteskip") {
-    if (value != "0") io::fail(name, "NRRD " + std::string(field) + " is not supported");
+    if (value != "0") io::fail(name, "NRRD " + io::quoted(field) + " is not supported");
   }
   // Every other field (space, kinds, units, centers, labels, content, ...) does not change the samples.
 }
@@ -168,7 +168,7 @@ Volume decode_nrrd(std::string_view bytes, const std::string& name) {
   } else if (h.encoding.empty()) {
     io::fail(name, "the NRRD header has no encoding");
   } else {
-    io::fail(name, "NRRD encoding '" + h.encoding + "' is not supported (want raw or gzip)");
+    io::fail(name, "NRRD encoding " + io::quoted(h.encoding) + " is not supported (want raw or gzip)");
   }
   Volume v;
   v.shape = shape;
