@@ -161,6 +161,9 @@ TEST(Nrrd, BadFilesNameTheProblem) {
   EXPECT_NE(err(nrrd_header("gzip") + gzip(data.substr(0, 60))).find("60 bytes"), std::string::npos);
   EXPECT_NE(err(nrrd_header("gzip") + gzip(data + "more")).find("more than"), std::string::npos);
   EXPECT_NE(err(nrrd_header("gzip") + "garbage that is not gzip").find("corrupt"), std::string::npos);
+  // 4 GB declared, 30 bytes given: refused before anything is allocated or inflated.
+  EXPECT_NE(err(nrrd_header("gzip", "", "1000 1000 1000") + gzip(data.substr(0, 8))).find("cannot hold"),
+            std::string::npos);
   EXPECT_NE(err(nrrd_header("ascii") + "1 2 3").find("encoding 'ascii' is not supported"), std::string::npos);
   EXPECT_NE(
       err(nrrd_header("raw", "space directions: (1,1,0) (0,1,0) (0,0,1)\n") + data).find("axis-aligned"),
