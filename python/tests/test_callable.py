@@ -100,12 +100,16 @@ def test_meshing_releases_the_gil(unit_box):
     t = threading.Thread(target=count)
     t.start()
     start = time.perf_counter()
-    isopatch.mesh("x^2+y^2+z^2-1", box=unit_box, edge_length=0.04)
+    meshing = 0.0
+    while meshing < 0.5:  # however fast the machine, at least half a second inside the library
+        before = time.perf_counter()
+        isopatch.mesh("x^2+y^2+z^2-1", box=unit_box, edge_length=0.04)
+        meshing += time.perf_counter() - before
     elapsed = time.perf_counter() - start
     stop.set()
     t.join()
-    # A thread sleeping 1 ms per tick gets at least a few ticks per 10 ms only if the GIL is free.
-    assert elapsed > 0.2
+    # A thread sleeping 1 ms per tick ticks hundreds of times in half a second only if the GIL is free
+    # while the library meshes (holding it, the library would leave it a tick per call at most).
     assert ticks > 0.1 * elapsed / 0.001
 
 
