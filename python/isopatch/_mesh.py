@@ -83,7 +83,9 @@ class Mesh:
 
     def analyze(self, surface: bool = True) -> Dict[str, Any]:
         """Topology, self-intersections, element shape, valence and (surface=True) accuracy against
-        the surface meshed, as ``isopatch analyze --json`` reports them (nested dicts)."""
+        the surface meshed, as ``isopatch analyze --json`` reports them (nested dicts). For a Python
+        function the accuracy is measured against the interpolant of its samples (``fields['distance']``
+        is the distance to f = 0 of the function itself)."""
         return self._result.analyze(bool(surface))
 
     def render(
