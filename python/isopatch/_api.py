@@ -113,6 +113,7 @@ def mesh_volume(
     spacing: Sequence[float] = (1.0, 1.0, 1.0),
     origin: Sequence[float] = (0.0, 0.0, 0.0),
     *,
+    inside: str = "below",
     box: Optional[BoxLike] = None,
     edge_length: Optional[float] = None,
     max_error: Optional[float] = None,
@@ -128,13 +129,19 @@ def mesh_volume(
     Axis order as in scikit-image's marching_cubes: ``volume[i, j, k]`` is the sample at
     ``origin + (i * spacing[0], j * spacing[1], k * spacing[2])``, so vertex column 0 is along array
     axis 0. The mesh lies on the tricubic B-spline that interpolates the samples (C2, so gradients and
-    curvatures exist); samples below ``level`` are inside, so normals point towards higher values.
+    curvatures exist). ``inside='below'`` (signed distances): samples below ``level`` are inside, normals
+    point towards higher values; ``inside='above'`` (densities, CT, masks): samples above are inside,
+    normals point towards lower values.
     The region is the samples' extent unless ``box`` is given. Other settings as :func:`mesh`.
     Raises InputError for an array that is not 3D, has a side below 2 samples, or holds NaN or
     infinity (the message names the index), NoSurfaceError when no sample crosses ``level``.
     """
     options = _options(locals(), _SETTINGS)
     array = np.ascontiguousarray(volume, dtype=np.float64)
+    if inside not in ("below", "above"):
+        raise InputError(f"inside must be 'below' or 'above', not {inside!r}", "inside")
+    if inside == "above":  # the same surface with f's sign turned: outward normals for densities
+        array, level = -array, -level
     result = _isopatch.mesh_volume(
         array, float(level), _triple(spacing, "spacing"), _triple(origin, "origin"), _box(box), options
     )

@@ -55,6 +55,21 @@ def test_axis_order_matches_scikit_image():
     np.testing.assert_allclose(e2 / np.array([1, 2, 3]), extent / (2 / (n - 1)), rtol=0.05)
 
 
+def test_inside_above_for_densities():
+    # A mask (1 inside): with inside='above' the normals point out of the ball.
+    n = 32
+    a = np.linspace(-1, 1, n)
+    x, y, z = np.meshgrid(a, a, a, indexing="ij")
+    mask = (x * x + y * y + z * z < 0.5).astype(np.uint8)
+    h = 2 / (n - 1)
+    m = isopatch.mesh_volume(mask, level=0.5, spacing=(h, h, h), origin=(-1, -1, -1), inside="above")
+    assert np.mean(np.sum(m.normals * m.vertices, axis=1) > 0) > 0.99
+    below = isopatch.mesh_volume(mask, level=0.5, spacing=(h, h, h), origin=(-1, -1, -1))
+    assert np.mean(np.sum(below.normals * below.vertices, axis=1) < 0) > 0.99
+    with pytest.raises(isopatch.InputError, match="inside"):
+        isopatch.mesh_volume(mask, level=0.5, inside="outside")
+
+
 def test_level_and_errors():
     volume, spacing, origin = sampled(sphere, 24)
     inner = isopatch.mesh_volume(volume, level=-0.2, spacing=spacing, origin=origin)
