@@ -113,3 +113,22 @@ def test_volume_files_and_the_command_line(tmp_path):
     assert r.returncode == 6 and "2 dimensions" in r.stderr
     r = subprocess.run([CLI, "mesh", str(path), "--level", "9", "-o", str(out)], capture_output=True, text=True)
     assert r.returncode == 8 and "no sample of the volume crosses level 9" in r.stderr
+
+
+def test_from_arrays_measures_any_mesh():
+    measure = pytest.importorskip("skimage.measure")
+    volume, spacing, origin = sampled(sphere, 32)
+    verts, faces, _, _ = measure.marching_cubes(volume, 0.0, spacing=spacing)
+    theirs = isopatch.Mesh.from_arrays(verts + np.asarray(origin), faces, "sqrt(x^2+y^2+z^2) - 0.6",
+                                       box=((-1,) * 3, (1,) * 3))
+    ours = isopatch.mesh_volume(volume, spacing=spacing, origin=origin)
+    a, b = theirs.analyze(), ours.analyze()
+    assert a["topology"]["triangles"] == len(faces)
+    assert a["shape"]["min_angle_degrees"]["min"] < b["shape"]["min_angle_degrees"]["min"]
+    assert a["valence"]["share_6"] < b["valence"]["share_6"]
+    np.testing.assert_allclose(np.linalg.norm(theirs.normals, axis=1), 1.0)
+    with pytest.raises(isopatch.InputError, match="refers to vertex 99"):
+        isopatch.Mesh.from_arrays(verts[:10], np.array([[0, 1, 99]]), "sqrt(x^2+y^2+z^2) - 0.6",
+                                  box=((-1,) * 3, (1,) * 3))
+    with pytest.raises(isopatch.InputError, match=r"\(V, 3\)"):
+        isopatch.Mesh.from_arrays(verts[:, :2], faces, "torus")
