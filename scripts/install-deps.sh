@@ -5,7 +5,8 @@
 #            VTK for the Flying Edges peer and GNU time for the peak memory; never the library's
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3)
+          libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3 zlib1g-dev
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-meshio python3-skimage)
 [ "${1:-}" = "--bench" ] && packages+=(libvtk9-dev time)
 missing=()
 for p in "${packages[@]}"; do

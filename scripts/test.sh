@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Quick start, command 2: install what is missing, build with warnings as errors, run the whole test
 # suite; then build again with the address and undefined-behaviour sanitizers and run it once more
-# (without the installed-package test and the two heaviest geometric sweeps, labels "adaptive" and
+# (without the installed-package test, the Python package (label "python": a module built with ASan
+# would need the sanitizer runtime preloaded into the interpreter) and the two heaviest geometric
+# sweeps, labels "adaptive" and
 # "validation": every catalogue surface through the whole pipeline, 2.5 CPU minutes under the
 # sanitizers; the unit and robustness labels still run the whole pipeline on many surfaces). The
 # sanitizer build is a unity build (16 sources per translation unit): half the compile time; the first
@@ -11,18 +13,19 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 jobs="$(nproc)"
-cmake -S . -B build-test -G Ninja -DCMAKE_BUILD_TYPE=Release -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=ON -DISOPATCH_BUILD_CGAL_PEER=OFF >/dev/null
+cmake -S . -B build-test -G Ninja -DCMAKE_BUILD_TYPE=Release -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=ON -DISOPATCH_BUILD_CGAL_PEER=OFF \
+      -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
 cmake --build build-test -j"$jobs"
 ctest --test-dir build-test --output-on-failure -j"$jobs"
 if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
   echo "isopatch: the same suite under AddressSanitizer and UndefinedBehaviorSanitizer"
   # -O1 as the sanitizers recommend (and half the compile time of -O3).
   cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
-        -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=OFF -DISOPATCH_SANITIZE=address,undefined \
+        -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=OFF -DISOPATCH_BUILD_PYTHON=OFF -DISOPATCH_SANITIZE=address,undefined \
         -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 >/dev/null
   cmake --build build-sanitize -j"$jobs"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive|validation"
+    ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive|validation|python"
 fi
 # Fuzz targets (fuzz/, libFuzzer with clang++, ASan + UBSan): every committed corpus input (including
 # the regressions the fuzzers found) and then a seeded search of up to a minute per target, so a run

@@ -39,7 +39,7 @@ std::string flag_for_setting(const std::string& setting) {
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
   }};
-  static constexpr std::array<std::string_view, 22> kSameName{"box",
+  static constexpr std::array<std::string_view, 25> kSameName{"box",
                                                               "method",
                                                               "edge_length",
                                                               "max_error",
@@ -60,7 +60,10 @@ std::string flag_for_setting(const std::string& setting) {
                                                               "time_limit",
                                                               "threads",
                                                               "quality",
-                                                              "max_vertices"};
+                                                              "max_vertices",
+                                                              "level",
+                                                              "spacing",
+                                                              "origin"};
   for (const auto& [name, flag] : kRenamed)
     if (setting == name) return std::string(flag);
   for (const std::string_view name : kSameName)

@@ -3,6 +3,7 @@
 #include <isopatch/isopatch.hpp>
 #include <isopatch/remesh.hpp>
 #include <isopatch/resolve_surface.hpp>
+#include <isopatch/volume_io.hpp>
 
 #include <cstdint>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include "mesh_warnings.hpp"
 #include "progress_line.hpp"
 #include "stats_output.hpp"
+#include "volume_input.hpp"
 
 namespace isopatch::cli {
 namespace {
@@ -53,6 +55,7 @@ struct MeshOptions {
   std::optional<double> max_error;
   std::string quality = "default";
   int threads = 0;
+  VolumeOptions volume;
 };
 
 int run_mesh(const MeshOptions& o) {
@@ -99,7 +102,14 @@ int run_mesh(const MeshOptions& o) {
 
   check_output_path(o.output);
   if (!o.stats_json.empty()) check_writable_location(o.stats_json);
-  const SurfacePtr surface = resolve_surface(o.surface, settings.box, parse_params(o.params));
+  if (o.volume.given() && !is_volume_path(o.surface))
+    throw InputError("--level, --spacing and --origin are for volumes (.npy, .nrrd), not '" + o.surface +
+                     "'");
+  if (is_volume_path(o.surface) && !o.params.empty())
+    throw InputError("--param is for formulas, not volumes");
+  const SurfacePtr surface = is_volume_path(o.surface)
+                                 ? volume_input(o.surface, o.volume)
+                                 : resolve_surface(o.surface, settings.box, parse_params(o.params));
   MeshStats stats;
   std::optional<ProgressLine> line;  // ended (newline) before anything else is printed, also on errors
   if (progress_wanted(o.progress, o.quiet)) {
@@ -122,12 +132,19 @@ int run_mesh(const MeshOptions& o) {
 Runner add_mesh_command(CLI::App& app) {
   auto o = std::make_shared<MeshOptions>();
   CLI::App* cmd = app.add_subcommand("mesh", "Mesh an implicit surface f(x,y,z) = 0 and write the mesh");
-  cmd->add_option("surface", o->surface, "Catalogue name (see 'isopatch surfaces'), a formula, or @file")
+  cmd->add_option(
+         "surface", o->surface,
+         "Catalogue name (see 'isopatch surfaces'), a formula, @file, or a sampled volume (.npy, .nrrd)")
       ->required();
   cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off or .stl")->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
+  cmd->add_option("--level", o->volume.level, "Volume: the level of the samples to mesh (default 0)");
+  cmd->add_option("--spacing", o->volume.spacing,
+                  "Volume: sample spacing sx,sy,sz (default: the NRRD header's, or 1 for .npy)");
+  cmd->add_option("--origin", o->volume.origin,
+                  "Volume: position of sample (0,0,0) as ox,oy,oz (default: the NRRD header's, or 0)");
   cmd->add_option("--edge-length", o->edge_length,
                   "Projection: target edge length (default: longest box side / 64)");
   cmd->add_option("--resolution", o->resolution,

@@ -1,0 +1,160 @@
+"""The entry points: mesh() for formulas, catalogue names and Python functions, mesh_volume() for
+sampled 3D arrays, read_volume() for .npy and .nrrd files."""
+
+from __future__ import annotations
+
+from typing import Callable, Dict, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _isopatch
+from ._errors import InputError
+from ._mesh import Mesh
+
+Point = Tuple[float, float, float]
+BoxLike = Tuple[Sequence[float], Sequence[float]]
+Function = Callable[[np.ndarray], np.ndarray]
+
+
+def _box(box: Optional[BoxLike]) -> Optional[Tuple[Point, Point]]:
+    if box is None:
+        return None
+    try:
+        lo, hi = box
+        lo = tuple(float(v) for v in lo)
+        hi = tuple(float(v) for v in hi)
+    except (TypeError, ValueError):
+        raise InputError("box must be ((x0, y0, z0), (x1, y1, z1))", "box") from None
+    if len(lo) != 3 or len(hi) != 3:
+        raise InputError("box must be ((x0, y0, z0), (x1, y1, z1))", "box")
+    return lo, hi  # type: ignore[return-value]
+
+
+def _triple(value: Sequence[float], name: str) -> Point:
+    try:
+        t = tuple(float(v) for v in value)
+    except TypeError:
+        t = (float(value),) * 3  # type: ignore[arg-type]
+    if len(t) != 3:
+        raise InputError(f"{name} must be three numbers", name)
+    return t  # type: ignore[return-value]
+
+
+# The library settings both entry points take (the command line's flags of the same names).
+_SETTINGS = ("method", "edge_length", "max_error", "quality", "threads", "remesh", "max_vertices", "time_limit")
+
+
+def _options(arguments: Dict[str, object], names: Sequence[str]) -> Dict[str, object]:
+    """The settings among `arguments` (a call's locals()) named in `names`, without those left None."""
+    return {name: arguments[name] for name in names if arguments[name] is not None}
+
+
+def mesh(
+    surface: Union[str, Function],
+    box: Optional[BoxLike] = None,
+    *,
+    gradient: Optional[Function] = None,
+    params: Optional[Dict[str, float]] = None,
+    edge_length: Optional[float] = None,
+    max_error: Optional[float] = None,
+    quality: str = "default",
+    threads: int = 0,
+    method: str = "projection",
+    remesh: Optional[int] = None,
+    resolution: Optional[int] = None,
+    grid: Optional[int] = None,
+    max_vertices: int = 0,
+    max_evaluations: int = 0,
+    time_limit: float = 0.0,
+    samples: Optional[int] = None,
+    batch: int = 1 << 18,
+) -> Mesh:
+    """Meshes the surface f = 0 (f < 0 inside) inside ``box``.
+
+    surface: a formula of the expression language (``'x^2+y^2+z^2-1'``; ``^`` is a power), a catalogue
+        name (``'torus'``, see :func:`catalogue`) or a Python function taking an (N, 3) float64 array of
+        points and returning N values (f < 0 inside).
+    box: ((x0, y0, z0), (x1, y1, z1)); required for formulas and functions, optional for catalogue
+        names (their own box by default).
+    gradient: with a Python function, an optional second function returning the (N, 3) gradients;
+        without it, gradients come from central differences (step 6e-6 of the box diagonal).
+    params: values overriding a formula's definitions (``{'r': 0.3}``).
+    edge_length, max_error, quality ('preview' | 'default' | 'fine'), threads (0: every core), method
+        ('projection' | 'mc'), remesh, resolution, grid, max_vertices, max_evaluations, time_limit: the
+        library's settings, as the command line's flags of the same names.
+    samples, batch: Python functions only. The function is called in batches of at most ``batch``
+        points: first on a grid of ``samples`` cells along the box's longest side (default: two per
+        target edge, 64..256), whose tricubic B-spline interpolant is meshed, then for a few batched
+        Newton steps that move every vertex onto f = 0 itself (``stats['python']`` counts the calls).
+
+    Meshing releases the GIL (a Python function is only called, with the GIL, before and after it);
+    Ctrl-C stops it with KeyboardInterrupt. Raises the isopatch exceptions (isopatch.Error and its
+    subclasses) with the library's messages; an exception raised by the function propagates unchanged.
+    """
+    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations"))
+    if isinstance(surface, str):
+        if gradient is not None or samples is not None:
+            raise InputError("gradient and samples are for Python functions, not formulas", "gradient")
+        result = _isopatch.mesh_spec(surface, _box(box), dict(params or {}), options)
+    elif callable(surface):
+        if params:
+            raise InputError("params are for formulas, not Python functions", "params")
+        if gradient is not None and not callable(gradient):
+            raise InputError("gradient must be a function of an (N, 3) array", "gradient")
+        result = _isopatch.mesh_callable(surface, gradient, _box(box), samples, int(batch), options)
+    else:
+        raise InputError("surface must be a formula, a catalogue name or a function", "surface")
+    return Mesh(result)
+
+
+def mesh_volume(
+    volume: np.ndarray,
+    level: float = 0.0,
+    spacing: Sequence[float] = (1.0, 1.0, 1.0),
+    origin: Sequence[float] = (0.0, 0.0, 0.0),
+    *,
+    inside: str = "below",
+    box: Optional[BoxLike] = None,
+    edge_length: Optional[float] = None,
+    max_error: Optional[float] = None,
+    quality: str = "default",
+    threads: int = 0,
+    method: str = "projection",
+    remesh: Optional[int] = None,
+    max_vertices: int = 0,
+    time_limit: float = 0.0,
+) -> Mesh:
+    """Meshes the level set ``volume == level`` of a 3D array of samples.
+
+    Axis order as in scikit-image's marching_cubes: ``volume[i, j, k]`` is the sample at
+    ``origin + (i * spacing[0], j * spacing[1], k * spacing[2])``, so vertex column 0 is along array
+    axis 0. The mesh lies on the tricubic B-spline that interpolates the samples (C2, so gradients and
+    curvatures exist). ``inside='below'`` (signed distances): samples below ``level`` are inside, normals
+    point towards higher values; ``inside='above'`` (densities, CT, masks): samples above are inside,
+    normals point towards lower values.
+    The region is the samples' extent unless ``box`` is given. Other settings as :func:`mesh`.
+    Raises InputError for an array that is not 3D, has a side below 2 samples, or holds NaN or
+    infinity (the message names the index), NoSurfaceError when no sample crosses ``level``.
+    """
+    options = _options(locals(), _SETTINGS)
+    array = np.ascontiguousarray(volume, dtype=np.float64)
+    if inside not in ("below", "above"):
+        raise InputError(f"inside must be 'below' or 'above', not {inside!r}", "inside")
+    if inside == "above":  # the same surface with f's sign turned: outward normals for densities
+        array, level = -array, -level
+    result = _isopatch.mesh_volume(
+        array, float(level), _triple(spacing, "spacing"), _triple(origin, "origin"), _box(box), options
+    )
+    return Mesh(result)
+
+
+def read_volume(path: str) -> Tuple[np.ndarray, Point, Point]:
+    """Reads a .npy or .nrrd volume: (samples as a float64 3D array, spacing, origin), in the axis
+    order of :func:`mesh_volume` (a NRRD file's fastest axis is axis 0). Raises IoError for an
+    unreadable, malformed, truncated or unsupported file (the message names it)."""
+    return _isopatch.read_volume(str(path))
+
+
+def catalogue() -> list:
+    """The names of the built-in surfaces (``isopatch surfaces`` on the command line)."""
+    return list(_isopatch.catalogue())

@@ -1,0 +1,49 @@
+"""Shared helpers of the pytest suite: sampled analytic volumes and their exact normals."""
+
+import numpy as np
+import pytest
+
+SPHERE_RADIUS = 0.6
+TORUS_RADII = (0.6, 0.25)
+
+
+def sphere(p: np.ndarray) -> np.ndarray:
+    return np.linalg.norm(p, axis=1) - SPHERE_RADIUS
+
+
+def sphere_normal(p: np.ndarray) -> np.ndarray:
+    return p / np.linalg.norm(p, axis=1, keepdims=True)
+
+
+def torus(p: np.ndarray) -> np.ndarray:
+    big, small = TORUS_RADII
+    q = np.hypot(p[:, 0], p[:, 1]) - big
+    return np.hypot(q, p[:, 2]) - small
+
+
+def torus_normal(p: np.ndarray) -> np.ndarray:
+    big, _ = TORUS_RADII
+    rho = np.hypot(p[:, 0], p[:, 1])
+    centre = np.stack([p[:, 0] / rho * big, p[:, 1] / rho * big, np.zeros(len(p))], axis=1)
+    d = p - centre
+    return d / np.linalg.norm(d, axis=1, keepdims=True)
+
+
+def sampled(f, n: int):
+    """f on an n^3 grid over [-1, 1]^3: (volume, spacing, origin), volume[i, j, k] at origin + spacing * (i, j, k)."""
+    axis = np.linspace(-1.0, 1.0, n)
+    x, y, z = np.meshgrid(axis, axis, axis, indexing="ij")
+    values = f(np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1)).reshape(n, n, n)
+    step = 2.0 / (n - 1)
+    return values, (step, step, step), (-1.0, -1.0, -1.0)
+
+
+def angle_degrees(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    a = a / np.linalg.norm(a, axis=1, keepdims=True)
+    b = b / np.linalg.norm(b, axis=1, keepdims=True)
+    return np.degrees(np.arccos(np.clip(np.sum(a * b, axis=1), -1.0, 1.0)))
+
+
+@pytest.fixture
+def unit_box():
+    return ((-1.2, -1.2, -1.2), (1.2, 1.2, 1.2))

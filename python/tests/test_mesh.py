@@ -1,0 +1,57 @@
+"""isopatch.mesh with formulas and catalogue names: arrays, fields, statistics, determinism."""
+
+import numpy as np
+
+import isopatch
+
+
+def test_formula_sphere_arrays(unit_box):
+    m = isopatch.mesh("x^2+y^2+z^2-1", box=unit_box)
+    v, f, n = m.vertices, m.faces, m.normals
+    assert v.dtype == np.float64 and v.ndim == 2 and v.shape[1] == 3 and len(v) > 1000
+    assert f.dtype == np.int64 and f.shape[1] == 3 and f.min() >= 0 and f.max() < len(v)
+    assert n.shape == v.shape
+    np.testing.assert_allclose(np.linalg.norm(v, axis=1), 1.0, atol=1e-9)
+    np.testing.assert_allclose(np.linalg.norm(n, axis=1), 1.0, atol=1e-12)
+    assert np.all(np.sum(n * v, axis=1) > 0.999)  # outward, along grad f
+    # Faces counter-clockwise seen from outside: face normals along the vertex normals.
+    a, b, c = v[f[:, 0]], v[f[:, 1]], v[f[:, 2]]
+    assert np.all(np.sum(np.cross(b - a, c - a) * (a + b + c), axis=1) > 0)
+
+
+def test_catalogue_name_uses_its_own_box():
+    assert "torus" in isopatch.catalogue()
+    m = isopatch.mesh("torus", quality="preview")
+    report = m.analyze()
+    assert report["topology"]["watertight"] and report["topology"]["genus"] == 1
+
+
+def test_fields_and_stats(unit_box):
+    m = isopatch.mesh("x^2+y^2+z^2-1", box=unit_box, edge_length=0.1)
+    fields = m.fields
+    for name in ("mean_curvature", "mean_curvature_exact", "gaussian_curvature", "gaussian_curvature_exact",
+                 "distance"):
+        assert fields[name].shape == (len(m.vertices),) and fields[name].dtype == np.float64
+    np.testing.assert_allclose(fields["mean_curvature_exact"], 1.0, rtol=1e-9)
+    np.testing.assert_allclose(fields["mean_curvature"], 1.0, atol=0.05)
+    assert np.abs(fields["distance"]).max() < 1e-9
+    stats = m.stats
+    assert stats["mesh"]["vertices"] == len(m.vertices)
+    assert stats["mesh"]["triangles"] == len(m.faces)
+    assert stats["mesh"]["seconds"] > 0
+
+
+def test_settings_pass_through(unit_box):
+    coarse = isopatch.mesh("x^2+y^2+z^2-1", box=unit_box, edge_length=0.2)
+    fine = isopatch.mesh("x^2+y^2+z^2-1", box=unit_box, edge_length=0.1)
+    assert 3 < len(fine.vertices) / len(coarse.vertices) < 5  # about (0.2 / 0.1)^2
+    mc = isopatch.mesh("x^2+y^2+z^2-1", box=unit_box, method="mc", grid=20)
+    assert mc.stats["marching_cubes"]["cells"] > 0
+    params = isopatch.mesh("r = 0.5; x^2+y^2+z^2-r^2", box=unit_box, params={"r": 0.8}, edge_length=0.1)
+    np.testing.assert_allclose(np.linalg.norm(params.vertices, axis=1), 0.8, atol=1e-9)
+
+
+def test_same_input_same_arrays(unit_box):
+    a = isopatch.mesh("x^4+y^4+z^4-1", box=unit_box, edge_length=0.1, threads=1)
+    b = isopatch.mesh("x^4+y^4+z^4-1", box=unit_box, edge_length=0.1, threads=2)
+    assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces)
