@@ -1,20 +1,37 @@
 #!/usr/bin/env bash
-# Installs, with apt-get, whatever isopatch needs that this Debian 12 machine does not have yet.
+# Installs, with apt-get, whatever isopatch needs that this Debian 12 machine does not have yet, then
+# the viewer's npm packages (web/package-lock.json: three for the page of 'isopatch view',
+# playwright-core and gltf-validator for its tests) with npm ci when web/node_modules is not current.
 # Usage: scripts/install-deps.sh   (as root, or with sudo available)
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libcli11-dev libgtest-dev libgmock-dev
-          libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3)
+          libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3
+          libtinygltf-dev libcpp-httplib-dev nodejs npm chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# nodejs and npm: any installed node with npm will do (a machine may have node from elsewhere).
+if command -v node >/dev/null && command -v npm >/dev/null; then
+  filtered=()
+  for p in "${missing[@]}"; do [ "$p" = nodejs ] || [ "$p" = npm ] || filtered+=("$p"); done
+  missing=("${filtered[@]}")
+fi
 if [ ${#missing[@]} -eq 0 ]; then
   echo "isopatch: all build dependencies are installed"
-  exit 0
+else
+  echo "isopatch: installing ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  export DEBIAN_FRONTEND=noninteractive
+  $SUDO apt-get update -qq
+  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-echo "isopatch: installing ${missing[*]}"
-SUDO=""
-[ "$(id -u)" -eq 0 ] || SUDO="sudo"
-export DEBIAN_FRONTEND=noninteractive
-$SUDO apt-get update -qq
-$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# The viewer's JavaScript packages, exactly as locked; skipped when the last npm ci here installed this
+# very lock file (a copy of it is kept in node_modules as the stamp).
+web="$(cd "$(dirname "$0")/../web" && pwd)"
+if ! cmp -s "$web/package-lock.json" "$web/node_modules/.isopatch-installed-lock.json"; then
+  echo "isopatch: installing the viewer's npm packages (web/package-lock.json)"
+  (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
+  cp "$web/package-lock.json" "$web/node_modules/.isopatch-installed-lock.json"
+fi

@@ -39,7 +39,8 @@ std::string flag_for_setting(const std::string& setting) {
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
   }};
-  static constexpr std::array<std::string_view, 22> kSameName{"box",
+  static constexpr std::array<std::string_view, 23> kSameName{"box",
+                                                              "colour",
                                                               "method",
                                                               "edge_length",
                                                               "max_error",
