@@ -250,7 +250,8 @@ Runner add_analyze_command(CLI::App& app) {
       app.add_subcommand("analyze", "Measure a mesh: topology, element shape, valence, accuracy against f");
   cmd->add_option("mesh", o->mesh, "Mesh file: .ply, .obj, .off or .stl")->required();
   cmd->add_option("--surface", o->surface, "The surface it approximates: catalogue name, formula or @file");
-  cmd->add_option("--box", o->box, "Box x0,y0,z0,x1,y1,z1 for a formula surface (default: the mesh's bounds)");
+  cmd->add_option("--box", o->box,
+                  "Box x0,y0,z0,x1,y1,z1 for a formula surface (default: the mesh's bounds)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
   cmd->add_flag("--json", o->json, "Print the report as JSON");
   cmd->add_option("--write", o->write,

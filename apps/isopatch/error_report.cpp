@@ -39,7 +39,7 @@ std::string flag_for_setting(const std::string& setting) {
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
   }};
-  static constexpr std::array<std::string_view, 23> kSameName{"box",
+  static constexpr std::array<std::string_view, 24> kSameName{"box",
                                                               "colour",
                                                               "method",
                                                               "edge_length",
@@ -61,7 +61,8 @@ std::string flag_for_setting(const std::string& setting) {
                                                               "time_limit",
                                                               "threads",
                                                               "quality",
-                                                              "max_vertices"};
+                                                              "max_vertices",
+                                                              "port"};
   for (const auto& [name, flag] : kRenamed)
     if (setting == name) return std::string(flag);
   for (const std::string_view name : kSameName)

@@ -11,9 +11,8 @@ namespace isopatch::cli {
 namespace {
 
 bool known_field(const std::string& field) {
-  static constexpr std::array<std::string_view, 5> kFields{"mean_curvature", "mean_curvature_exact",
-                                                           "gaussian_curvature", "gaussian_curvature_exact",
-                                                           "distance"};
+  static constexpr std::array<std::string_view, 5> kFields{
+      "mean_curvature", "mean_curvature_exact", "gaussian_curvature", "gaussian_curvature_exact", "distance"};
   for (const std::string_view name : kFields)
     if (field == name) return true;
   return false;

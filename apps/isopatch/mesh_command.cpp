@@ -1,7 +1,7 @@
 // `isopatch mesh`: SURFACE (catalogue name, formula or @file) -> Settings -> mesh_surface -> file.
 #include <isopatch/curvature.hpp>
-#include <isopatch/mesh_io.hpp>
 #include <isopatch/isopatch.hpp>
+#include <isopatch/mesh_io.hpp>
 #include <isopatch/remesh.hpp>
 #include <isopatch/resolve_surface.hpp>
 
@@ -129,7 +129,8 @@ Runner add_mesh_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("mesh", "Mesh an implicit surface f(x,y,z) = 0 and write the mesh");
   cmd->add_option("surface", o->surface, "Catalogue name (see 'isopatch surfaces'), a formula, or @file")
       ->required();
-  cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off, .stl or .glb (glTF 2.0 binary)")->required();
+  cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off, .stl or .glb (glTF 2.0 binary)")
+      ->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");

@@ -179,7 +179,8 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option(
       "--surface", o->surface,
       "Surface to compute curvature and distance fields against (else they are read from the mesh)");
-  cmd->add_option("--box", o->box, "Box of a --surface formula: x0,y0,z0,x1,y1,z1 (default: the mesh's bounds)");
+  cmd->add_option("--box", o->box,
+                  "Box of a --surface formula: x0,y0,z0,x1,y1,z1 (default: the mesh's bounds)");
   cmd->add_option("--param", o->params,
                   "Override a definition of the --surface formula: name=value (repeatable)");
   cmd->add_option("--field", o->field, "Vertex attribute to colour by (e.g. mean_curvature_exact)");

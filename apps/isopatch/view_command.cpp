@@ -92,17 +92,21 @@ Runner add_view_command(CLI::App& app) {
   auto o = std::make_shared<ViewOptions>();
   CLI::App* cmd = app.add_subcommand(
       "view", "Live viewer in the browser: type a formula, see the mesh, its curvature and isophotes");
-  cmd->add_option("input", o->input,
-                  "A mesh file (.ply, .obj, .off, .stl), shown as it is, or a surface: catalogue name, formula")
+  cmd->add_option(
+         "input", o->input,
+         "A mesh file (.ply, .obj, .off, .stl), shown as it is, or a surface: catalogue name, formula")
       ->capture_default_str();
-  cmd->add_option("--surface", o->surface,
-                  "With a mesh file: the surface for exact curvature and distance (catalogue name or formula)");
+  cmd->add_option(
+      "--surface", o->surface,
+      "With a mesh file: the surface for exact curvature and distance (catalogue name or formula)");
   cmd->add_option("--box", o->box, "Box x0,y0,z0,x1,y1,z1 of a formula (a mesh file: default its bounds)");
-  cmd->add_option("--quality", o->quality, "preview | default | fine (of the first mesh; the page can change it)")
+  cmd->add_option("--quality", o->quality,
+                  "preview | default | fine (of the first mesh; the page can change it)")
       ->capture_default_str();
   cmd->add_option("--port", o->port, "Port on 127.0.0.1 (0: a free one)")->capture_default_str();
-  cmd->add_option("--web-root", o->web_root,
-                  "Folder with src/ and node_modules/three/ (default: the repository's web/, or $ISOPATCH_WEB_ROOT)");
+  cmd->add_option(
+      "--web-root", o->web_root,
+      "Folder with src/ and node_modules/three/ (default: the repository's web/, or $ISOPATCH_WEB_ROOT)");
   return [o] { return run_view(*o); };
 }
 

@@ -67,7 +67,8 @@ std::vector<float> flatten(const std::vector<Vec3>& points) {
 // "mean_curvature" -> "_MEAN_CURVATURE" (glTF: application-specific attributes start with '_').
 std::string attribute_semantic(const std::string& name) {
   std::string semantic = "_";
-  for (const char c : name) semantic.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+  for (const char c : name)
+    semantic.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
   return semantic;
 }
 
@@ -130,9 +131,9 @@ std::string encode_glb(const Mesh& mesh, const std::vector<Vec3>& colours) {
     std::vector<float> values = attribute.values;
     for (float& v : values)
       if (!std::isfinite(v)) v = kGlbUndefined;  // glTF forbids NaN and infinity in accessors
-    primitive.attributes[semantic] = buffer.add(values.data(), values.size() * sizeof(float), kArrayBuffer,
-                                                TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_SCALAR,
-                                                values.size());
+    primitive.attributes[semantic] =
+        buffer.add(values.data(), values.size() * sizeof(float), kArrayBuffer, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                   TINYGLTF_TYPE_SCALAR, values.size());
   }
 
   std::vector<std::uint32_t> indices;

@@ -52,8 +52,9 @@ Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& n
     case MeshFormat::Stl:
       return io::decode_stl(bytes, name);
     case MeshFormat::Glb:
-      throw IoError(name + ": reading glTF is not supported (isopatch writes .glb; read .ply, .obj, .off "
-                           "or .stl)");
+      throw IoError(name +
+                    ": reading glTF is not supported (isopatch writes .glb; read .ply, .obj, .off "
+                    "or .stl)");
   }
   throw InputError("unknown mesh format");
 }

@@ -15,8 +15,8 @@
 #include "render/colour_map.hpp"
 #include "render/font.hpp"
 #include "render/legend.hpp"
-#include "render/render_options.hpp"
 #include "render/rasterizer.hpp"
+#include "render/render_options.hpp"
 #include "render/shading.hpp"
 
 namespace isopatch {

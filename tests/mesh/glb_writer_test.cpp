@@ -34,7 +34,8 @@ std::vector<T> read(const tinygltf::Model& model, int accessor_index) {
   const tinygltf::BufferView& v = model.bufferViews.at(static_cast<std::size_t>(a.bufferView));
   const std::size_t components = a.type == TINYGLTF_TYPE_VEC3 ? 3 : 1;
   std::vector<T> out(a.count * components);
-  std::memcpy(out.data(), model.buffers.at(0).data.data() + v.byteOffset + a.byteOffset, out.size() * sizeof(T));
+  std::memcpy(out.data(), model.buffers.at(0).data.data() + v.byteOffset + a.byteOffset,
+              out.size() * sizeof(T));
   return out;
 }
 
@@ -45,7 +46,8 @@ TEST(GlbWriter, HoldsPositionsNormalsIndicesColoursAndAttributes) {
   with_nan[4] = std::numeric_limits<float>::infinity();
   mesh.set_attribute("mean_curvature", with_nan);
   std::vector<Vec3> colours;
-  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) colours.emplace_back(0.05 * static_cast<double>(v), 0.5, 2.0);
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+    colours.emplace_back(0.05 * static_cast<double>(v), 0.5, 2.0);
 
   const tinygltf::Model model = load(encode_mesh(mesh, MeshFormat::Glb, colours));
   ASSERT_EQ(model.meshes.size(), 1u);
@@ -57,11 +59,14 @@ TEST(GlbWriter, HoldsPositionsNormalsIndicesColoursAndAttributes) {
   const Box box = bounding_box(mesh);
   const tinygltf::Accessor& position = model.accessors[static_cast<std::size_t>(p.attributes.at("POSITION"))];
   for (int k = 0; k < 3; ++k) {
-    EXPECT_FLOAT_EQ(static_cast<float>(position.minValues.at(static_cast<std::size_t>(k))), static_cast<float>(box.lo[k]));
-    EXPECT_FLOAT_EQ(static_cast<float>(position.maxValues.at(static_cast<std::size_t>(k))), static_cast<float>(box.hi[k]));
+    EXPECT_FLOAT_EQ(static_cast<float>(position.minValues.at(static_cast<std::size_t>(k))),
+                    static_cast<float>(box.lo[k]));
+    EXPECT_FLOAT_EQ(static_cast<float>(position.maxValues.at(static_cast<std::size_t>(k))),
+                    static_cast<float>(box.hi[k]));
   }
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-    for (int k = 0; k < 3; ++k) EXPECT_EQ(xyz[3 * v + static_cast<std::size_t>(k)], static_cast<float>(mesh.positions[v][k]));
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(xyz[3 * v + static_cast<std::size_t>(k)], static_cast<float>(mesh.positions[v][k]));
 
   const std::vector<float> normals = read<float>(model, p.attributes.at("NORMAL"));
   const std::vector<Vec3> expected = vertex_normals(mesh);
@@ -97,7 +102,8 @@ TEST(GlbWriter, HoldsPositionsNormalsIndicesColoursAndAttributes) {
         EXPECT_EQ(values[v], kGlbUndefined) << semantic << " " << v;
     }
   }
-  EXPECT_EQ(model.meshes[0].extras.Get("undefined_value").GetNumberAsDouble(), static_cast<double>(kGlbUndefined));
+  EXPECT_EQ(model.meshes[0].extras.Get("undefined_value").GetNumberAsDouble(),
+            static_cast<double>(kGlbUndefined));
   ASSERT_EQ(model.nodes.size(), 1u);
   EXPECT_EQ(model.nodes[0].rotation.size(), 4u) << "z up turned to y up";
   EXPECT_TRUE(model.materials.at(0).doubleSided);

@@ -21,8 +21,8 @@ TEST(StaticFiles, SafePaths) {
   EXPECT_TRUE(is_safe_url_path("/main.js"));
   EXPECT_TRUE(is_safe_url_path("/three/build/three.module.js"));
   EXPECT_TRUE(is_safe_url_path("/a/b/"));
-  for (const char* bad : {"", "main.js", "/../x", "/a/../../x", "/a/./b", "/.", "/a/..", "//etc/passwd", "/a//b",
-                          "/a\\..\\b", "/a\nb", "/a\x7f"})
+  for (const char* bad : {"", "main.js", "/../x", "/a/../../x", "/a/./b", "/.", "/a/..", "//etc/passwd",
+                          "/a//b", "/a\\..\\b", "/a\nb", "/a\x7f"})
     EXPECT_FALSE(is_safe_url_path(bad)) << bad;
   EXPECT_FALSE(is_safe_url_path(std::string("/a\0b", 4)));
   EXPECT_FALSE(is_safe_url_path("/" + std::string(2000, 'a')));
@@ -42,7 +42,7 @@ TEST(StaticFiles, ResolvesInsideMountsOnly) {
   EXPECT_EQ(resolve_static(mounts, "/"), fs::canonical(page / "index.html"));
   EXPECT_EQ(resolve_static(mounts, "/js/main.js"), fs::canonical(page / "js" / "main.js"));
   EXPECT_EQ(resolve_static(mounts, "/lib/three.js"), fs::canonical(lib / "three.js"));
-  EXPECT_FALSE(resolve_static(mounts, "/js"));  // a folder
+  EXPECT_FALSE(resolve_static(mounts, "/js"));   // a folder
   EXPECT_FALSE(resolve_static(mounts, "/js/"));  // a folder without index.html
   EXPECT_FALSE(resolve_static(mounts, "/missing.js"));
   EXPECT_FALSE(resolve_static(mounts, "/../secret.txt"));

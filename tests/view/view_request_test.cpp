@@ -40,7 +40,8 @@ TEST(ViewRequest, DefaultsToPreviewWithinTheServerBudget) {
   limits.max_vertices = 5000;
   limits.time_limit = 3.0;
   const MeshRequest r = parse_mesh_request(R"({"surface": "torus", "box": null, "time_limit": 100,
-                                               "max_vertices": 9999999})", limits);
+                                               "max_vertices": 9999999})",
+                                           limits);
   EXPECT_EQ(r.settings.quality, Quality::Preview);
   EXPECT_FALSE(r.settings.box.has_value());
   EXPECT_EQ(r.settings.time_limit, 3.0) << "a request cannot raise the time limit";

@@ -1,10 +1,15 @@
 // The viewer's server on a free loopback port, spoken to over HTTP: pages, downloads, re-meshing,
 // errors as JSON, hostile requests (path traversal, huge bodies, bad JSON, absurd sizes), superseding.
+// Eigen (through the library's headers) before httplib.h: glibc's <resolv.h>, which httplib.h
+// includes, defines a macro `_res` that breaks Eigen's headers.
+#include "view/view_server.hpp"
+#include "../mesh/mesh_fixtures.hpp"
+
 #include <isopatch/error.hpp>
 
+#include <gtest/gtest.h>
 #include <httplib.h>
 #include <nlohmann/json.hpp>
-#include <gtest/gtest.h>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -14,9 +19,6 @@
 #include <chrono>
 #include <fstream>
 #include <future>
-
-#include "../mesh/mesh_fixtures.hpp"
-#include "view/view_server.hpp"
 
 namespace isopatch::view {
 namespace {
@@ -50,7 +52,8 @@ std::string raw_get(int port, const std::string& target) {
   EXPECT_EQ(::send(s, request.data(), request.size(), 0), static_cast<ssize_t>(request.size()));
   std::string answer;
   char buffer[4096];
-  for (ssize_t n; (n = ::recv(s, buffer, sizeof buffer, 0)) > 0;) answer.append(buffer, static_cast<std::size_t>(n));
+  for (ssize_t n; (n = ::recv(s, buffer, sizeof buffer, 0)) > 0;)
+    answer.append(buffer, static_cast<std::size_t>(n));
   ::close(s);
   return answer;
 }
@@ -101,11 +104,13 @@ TEST_F(ViewServerTest, ServesThePageAndThreeOnLoopback) {
 
 TEST_F(ViewServerTest, RefusesPathsOutsideWhatItServes) {
   EXPECT_EQ(raw_get(port, "/").rfind("HTTP/1.1 200", 0), 0u);
-  for (const char* target : {"/../secret.txt", "/%2e%2e/secret.txt", "/%2E%2E%2Fsecret.txt", "/three/build/../../package.json",
-                             "/three/build/..%2f..%2fpackage.json", "/..\\secret.txt", "//etc/passwd",
-                             "/three/package.json", "/node_modules/three/package.json", "/src/index.html/.."}) {
+  for (const char* target :
+       {"/../secret.txt", "/%2e%2e/secret.txt", "/%2E%2E%2Fsecret.txt", "/three/build/../../package.json",
+        "/three/build/..%2f..%2fpackage.json", "/..\\secret.txt", "//etc/passwd", "/three/package.json",
+        "/node_modules/three/package.json", "/src/index.html/.."}) {
     const std::string answer = raw_get(port, target);
-    EXPECT_TRUE(answer.rfind("HTTP/1.1 404", 0) == 0 || answer.rfind("HTTP/1.1 400", 0) == 0) << target << ": " << answer;
+    EXPECT_TRUE(answer.rfind("HTTP/1.1 404", 0) == 0 || answer.rfind("HTTP/1.1 400", 0) == 0)
+        << target << ": " << answer;
     EXPECT_EQ(answer.find("secret"), std::string::npos) << target;
     EXPECT_EQ(answer.find("\"three\""), std::string::npos) << target;
   }
@@ -137,8 +142,10 @@ TEST_F(ViewServerTest, ShowsAMeshFileAndDownloadsIt) {
 }
 
 TEST_F(ViewServerTest, RemeshesAFormula) {
-  const json answer = post({{"surface", "x^2 + y^2 + z^2 - 1"}, {"box", {-1.2, -1.2, -1.2, 1.2, 1.2, 1.2}},
-                            {"edge_length", 0.2}, {"threads", 1}},
+  const json answer = post({{"surface", "x^2 + y^2 + z^2 - 1"},
+                            {"box", {-1.2, -1.2, -1.2, 1.2, 1.2, 1.2}},
+                            {"edge_length", 0.2},
+                            {"threads", 1}},
                            200);
   EXPECT_EQ(answer["id"], 2);
   const json& s = answer["summary"];
@@ -186,10 +193,10 @@ TEST_F(ViewServerTest, BadRequestsAreJsonErrors) {
 
 TEST_F(ViewServerTest, AbsurdSizesRunIntoTheBudget) {
   const auto start = std::chrono::steady_clock::now();
-  const json e = post({{"surface", "torus"}, {"edge_length", 1e-9}, {"time_limit", 10}}, 400);
+  const json e = post({{"surface", "torus"}, {"edge_length", 1e-9}, {"time_limit", 3}}, 400);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(e["kind"], "limit") << e.dump();
-  EXPECT_LT(seconds, 30.0);
+  EXPECT_LT(seconds, 15.0);
   auto r = client->Get("/");
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 200) << "the server lives on";
@@ -200,8 +207,9 @@ TEST_F(ViewServerTest, ANewerRequestSupersedesARunningOne) {
   auto slow = std::async(std::launch::async, [this] {
     httplib::Client other("127.0.0.1", port);
     other.set_read_timeout(60, 0);
-    const auto r = other.Post("/api/mesh", json({{"surface", "torus"}, {"edge_length", 0.004}, {"threads", 1}}).dump(),
-                              "application/json");
+    const auto r =
+        other.Post("/api/mesh", json({{"surface", "torus"}, {"edge_length", 0.004}, {"threads", 1}}).dump(),
+                   "application/json");
     return r ? r->status : -1;
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(300));

@@ -20,7 +20,7 @@ before(async () => {
     executablePath: process.env.ISOPATCH_CHROMIUM || '/usr/bin/chromium',
     args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
   });
-  page = await browser.newPage({ viewport: { width: 1100, height: 720 } });
+  page = await browser.newPage({ viewport: { width: 1280, height: 860 } });
   page.on('pageerror', (e) => pageErrors.push(String(e)));
   await page.goto(viewer.url);
   await page.waitForFunction(() => window.isopatch && window.isopatch.ready, null, { timeout: 60000 });
@@ -157,7 +157,7 @@ test('the page downloads the mesh as GLB and PLY', async () => {
 // One raw request line, so that nothing normalizes the path on the way.
 function rawGet(port, target) {
   return new Promise((resolve, reject) => {
-    const socket = net.connect(port, '127.0.0.1', () => socket.end(`GET ${target} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n`));
+    const socket = net.connect(port, '127.0.0.1', () => socket.write(`GET ${target} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n`));
     let data = '';
     socket.on('data', (d) => { data += d; });
     socket.on('end', () => resolve(data));

@@ -25,7 +25,8 @@ std::optional<std::filesystem::path> resolve_static(const std::vector<Mount>& mo
   if (!is_safe_url_path(path)) return std::nullopt;
   const Mount* best = nullptr;
   for (const Mount& m : mounts)
-    if (path.substr(0, m.prefix.size()) == m.prefix && (best == nullptr || m.prefix.size() > best->prefix.size()))
+    if (path.substr(0, m.prefix.size()) == m.prefix &&
+        (best == nullptr || m.prefix.size() > best->prefix.size()))
       best = &m;
   if (best == nullptr) return std::nullopt;
   std::string rest(path.substr(best->prefix.size()));

@@ -22,7 +22,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+json number_or_null(double x) {
+  return std::isfinite(x) ? json(x) : json(nullptr);
+}
 
 // Counts, quality and the field names, then the GLB.
 void finish(ViewMesh& view, const Surface* surface) {
@@ -82,9 +84,9 @@ ViewMesh view_mesh_file(Mesh mesh, const std::string& name, const Surface* surfa
 }
 
 json error_json(const Error& error) {
-  static constexpr const char* kKinds[] = {"internal", "invalid_argument", "unknown_surface",
-                                           "parse",    "io",               "evaluation",
-                                           "no_surface", "limit",          "singular_surface"};
+  static constexpr const char* kKinds[] = {
+      "internal",   "invalid_argument", "unknown_surface", "parse",           "io",
+      "evaluation", "no_surface",       "limit",           "singular_surface"};
   json j;
   j["error"] = error.what();
   j["kind"] = kKinds[static_cast<int>(error.kind())];

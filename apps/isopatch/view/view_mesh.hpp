@@ -15,9 +15,9 @@
 namespace isopatch::view {
 
 struct ViewMesh {
-  Mesh mesh;                ///< with the fields as vertex attributes
-  nlohmann::json summary;   ///< what the page prints: name, counts, time, valence-6 share, smallest angle
-  std::string glb;          ///< the mesh as .glb, COLOR_0 = mean curvature (mesh_io.hpp)
+  Mesh mesh;               ///< with the fields as vertex attributes
+  nlohmann::json summary;  ///< what the page prints: name, counts, time, valence-6 share, smallest angle
+  std::string glb;         ///< the mesh as .glb, COLOR_0 = mean curvature (mesh_io.hpp)
 };
 
 /// Meshes `request` through the library (resolve_surface, mesh_surface with request.settings and

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace isopatch::view {
 namespace {
@@ -34,7 +35,8 @@ std::size_t count(const json& value, const std::string& member, std::size_t larg
 }
 
 Box parse_box_member(const json& value) {
-  if (!value.is_array() || value.size() != 6) bad("box", "must be an array of 6 numbers x0, y0, z0, x1, y1, z1");
+  if (!value.is_array() || value.size() != 6)
+    bad("box", "must be an array of 6 numbers x0, y0, z0, x1, y1, z1");
   std::array<double, 6> c{};
   for (std::size_t i = 0; i < 6; ++i) {
     if (!value[i].is_number()) bad("box", "must be an array of 6 numbers x0, y0, z0, x1, y1, z1");
@@ -91,10 +93,14 @@ MeshRequest parse_mesh_request(std::string_view body, const RequestLimits& limit
     } else if (key == "time_limit") {
       s.time_limit = std::min(positive_number(value, key), limits.time_limit);
     } else if (key == "max_vertices") {
-      s.max_vertices = std::max<std::size_t>(1, std::min(count(value, key, limits.max_vertices), limits.max_vertices));
+      // 0 asks for no limit, so it gets the server's; anything else at most the server's.
+      const std::size_t n = count(value, key, std::numeric_limits<std::size_t>::max());
+      s.max_vertices =
+          n == 0 || (limits.max_vertices != 0 && n > limits.max_vertices) ? limits.max_vertices : n;
     } else {
-      bad(key, "unknown member (want surface, box, edge_length, max_error, quality, method, remesh, threads, "
-               "time_limit, max_vertices)");
+      bad(key,
+          "unknown member (want surface, box, edge_length, max_error, quality, method, remesh, threads, "
+          "time_limit, max_vertices)");
     }
   }
   if (!has_surface || request.surface.empty()) bad("surface", "missing: give a catalogue name or a formula");

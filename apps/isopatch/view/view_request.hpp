@@ -31,7 +31,8 @@ struct MeshRequest {
 ///   "surface": string, "box": [x0, y0, z0, x1, y1, z1], "edge_length": number > 0,
 ///   "max_error": number > 0, "quality": "preview" | "default" | "fine" (default preview, for
 ///   liveness), "method": "projection" | "mc", "remesh": integer 0..100 (clean-up rounds; 0: the paper's
-///   method alone), "threads": integer 0..kMaxThreads, "time_limit": seconds > 0, "max_vertices": integer > 0
+///   method alone), "threads": integer 0..kMaxThreads, "time_limit": seconds > 0, "max_vertices": integer >=
+///   0
 /// (null stands for "not given"). The result's settings hold the values, the limits' budgets (the
 /// smaller of the two where a request asks too) and pass Settings::validate().
 /// \throw InputError (setting() names the member) for a body that is too long, is not a JSON object,

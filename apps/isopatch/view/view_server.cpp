@@ -130,8 +130,8 @@ struct ViewServer::Impl {
     const bool glb = req.matches[2] == "glb";
     res.set_header("Cache-Control", "no-store");
     if (req.has_param("download"))
-      res.set_header("Content-Disposition", std::string("attachment; filename=\"isopatch.") +
-                                                (glb ? "glb" : "ply") + "\"");
+      res.set_header("Content-Disposition",
+                     std::string("attachment; filename=\"isopatch.") + (glb ? "glb" : "ply") + "\"");
     if (glb)
       res.set_content(mesh->glb, "model/gltf-binary");
     else
@@ -151,6 +151,12 @@ struct ViewServer::Impl {
   }
 
   void routes() {
+    // httplib's default also sets SO_REUSEPORT, which would let a second server (of any program of
+    // this user) listen on the same port and take some of the connections: address reuse only.
+    server.set_socket_options([](socket_t sock) {
+      const int yes = 1;
+      ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    });
     server.set_payload_max_length(config.limits.max_request_bytes);
     server.set_read_timeout(10, 0);
     server.set_write_timeout(30, 0);
@@ -158,10 +164,12 @@ struct ViewServer::Impl {
       const auto [id, mesh] = current();
       send_json(res, 200, {{"id", id}, {"summary", mesh ? mesh->summary : json::object()}});
     });
-    server.Post("/api/mesh", [this](const httplib::Request& req, httplib::Response& res) { handle_mesh(req, res); });
+    server.Post("/api/mesh",
+                [this](const httplib::Request& req, httplib::Response& res) { handle_mesh(req, res); });
     server.Get(R"(/api/mesh/(\d{1,20})\.(glb|ply))",
                [this](const httplib::Request& req, httplib::Response& res) { handle_download(req, res); });
-    server.Get(".*", [this](const httplib::Request& req, httplib::Response& res) { handle_static(req, res); });
+    server.Get(".*",
+               [this](const httplib::Request& req, httplib::Response& res) { handle_static(req, res); });
     server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
       send_json(res, 500, {{"error", "internal error"}, {"kind", "internal"}});
     });
@@ -171,7 +179,8 @@ struct ViewServer::Impl {
 ViewServer::ViewServer(ViewConfig config) : impl_(std::make_unique<Impl>()) {
   namespace fs = std::filesystem;
   const fs::path& root = config.web_root;
-  for (const fs::path& needed : {root / "src" / "index.html", root / "node_modules/three/build/three.module.js"}) {
+  for (const fs::path& needed :
+       {root / "src" / "index.html", root / "node_modules/three/build/three.module.js"}) {
     std::error_code ec;
     if (!fs::is_regular_file(needed, ec))
       throw IoError("the viewer's page is incomplete: '" + needed.string() +
@@ -184,9 +193,13 @@ ViewServer::ViewServer(ViewConfig config) : impl_(std::make_unique<Impl>()) {
   impl_->routes();
 }
 
-ViewServer::~ViewServer() { stop(); }
+ViewServer::~ViewServer() {
+  stop();
+}
 
-void ViewServer::show(ViewMesh mesh) { impl_->show(std::move(mesh)); }
+void ViewServer::show(ViewMesh mesh) {
+  impl_->show(std::move(mesh));
+}
 
 int ViewServer::start() {
   Impl& s = *impl_;
@@ -204,12 +217,15 @@ int ViewServer::start() {
     done.set_value();
   });
   // stop() can only close a socket the server already listens on: wait until it does.
-  while (!s.server.is_running() && s.listening_done.wait_for(std::chrono::milliseconds(1)) != std::future_status::ready) {
+  while (!s.server.is_running() &&
+         s.listening_done.wait_for(std::chrono::milliseconds(1)) != std::future_status::ready) {
   }
   return s.port;
 }
 
-void ViewServer::wait() { impl_->join_listener(); }
+void ViewServer::wait() {
+  impl_->join_listener();
+}
 
 void ViewServer::stop() {
   Impl& s = *impl_;
@@ -222,6 +238,8 @@ void ViewServer::stop() {
   s.join_listener();
 }
 
-std::string ViewServer::url() const { return "http://127.0.0.1:" + std::to_string(impl_->port) + "/"; }
+std::string ViewServer::url() const {
+  return "http://127.0.0.1:" + std::to_string(impl_->port) + "/";
+}
 
 }  // namespace isopatch::view
