@@ -17,21 +17,26 @@ if command -v node >/dev/null && command -v npm >/dev/null; then
   for p in "${missing[@]}"; do [ "$p" = nodejs ] || [ "$p" = npm ] || filtered+=("$p"); done
   missing=("${filtered[@]}")
 fi
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "isopatch: all build dependencies are installed"
-else
-  echo "isopatch: installing ${missing[*]}"
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  export DEBIAN_FRONTEND=noninteractive
-  $SUDO apt-get update -qq
-  $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
 # The viewer's JavaScript packages, exactly as locked; skipped when the last npm ci here installed this
 # very lock file (a copy of it is kept in node_modules as the stamp).
-web="$(cd "$(dirname "$0")/../web" && pwd)"
-if ! cmp -s "$web/package-lock.json" "$web/node_modules/.isopatch-installed-lock.json"; then
-  echo "isopatch: installing the viewer's npm packages (web/package-lock.json)"
-  (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
-  cp "$web/package-lock.json" "$web/node_modules/.isopatch-installed-lock.json"
+install_web_packages() {
+  local web
+  web="$(cd "$(dirname "$0")/../web" && pwd)"
+  if ! cmp -s "$web/package-lock.json" "$web/node_modules/.isopatch-installed-lock.json"; then
+    echo "isopatch: installing the viewer's npm packages (web/package-lock.json)"
+    (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
+    cp "$web/package-lock.json" "$web/node_modules/.isopatch-installed-lock.json"
+  fi
+}
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "isopatch: all build dependencies are installed"
+  install_web_packages
+  exit 0
 fi
+echo "isopatch: installing ${missing[*]}"
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_web_packages

@@ -62,10 +62,14 @@ async function waitForMesh(previousId) {
     previousId, { timeout: 60000 });
 }
 
-test('the page loads and shows the torus', async () => {
+test('the page loads and shows the torus with its mean curvature', async () => {
   assert.equal(await page.locator('#status').getAttribute('data-state'), 'ready');
+  assert.equal(await page.inputValue('#mode'), 'mean_curvature');
   const p = await pixels();
   assert.ok(p.foreground > 0.05 * p.total, `only ${p.foreground} of ${p.total} pixels show the mesh`);
+  // H > 0 all over a torus of radii 1 and 0.4, largest outside: the diverging map's red half.
+  assert.ok(p.red > 0.02 * p.total, `red pixels: ${p.red}`);
+  assert.ok(!(await page.locator('#colour-bar').isHidden()), 'the colour bar is hidden');
   const vertices = await page.evaluate(() => window.isopatch.summary.vertices);
   assert.ok(vertices > 100);
   const stats = await page.locator('#stats').innerText();
@@ -74,14 +78,14 @@ test('the page loads and shows the torus', async () => {
   assert.deepEqual(pageErrors, []);
 });
 
-test('mean curvature colours the torus both ways, and Gaussian curvature differs', async () => {
+test('toggling curvature changes the picture; Gaussian curvature takes both signs', async () => {
+  await page.selectOption('#mode', 'shaded');
   const shaded = await pixels();
+  assert.ok(await page.locator('#colour-bar').isHidden(), 'a colour bar without a field');
   await page.selectOption('#mode', 'mean_curvature');
   const mean = await pixels();
   assert.notEqual(mean.sum, shaded.sum, 'the picture did not change');
-  // The torus's outer side curves like a sphere (H > 0, red), the inner side less (H near 0 or < 0).
-  assert.ok(mean.red > 0.005 * mean.total, `red pixels: ${mean.red}`);
-  assert.ok(!(await page.locator('#colour-bar').isHidden()), 'the colour bar is hidden');
+  assert.ok(mean.red > shaded.red + 0.01 * mean.total, `red pixels: ${mean.red} against ${shaded.red} shaded`);
   await page.selectOption('#mode', 'gaussian_curvature');
   const gauss = await pixels();
   assert.ok(gauss.blue > 0.005 * gauss.total, `the inner side has K < 0: blue pixels ${gauss.blue}`);
