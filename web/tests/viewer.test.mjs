@@ -4,7 +4,6 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, mkdirSync } from 'node:fs';
 import net from 'node:net';
-import os from 'node:os';
 import path from 'node:path';
 import { chromium } from 'playwright-core';
 import { startViewer } from './server.mjs';
@@ -21,9 +20,12 @@ before(async () => {
     args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
   });
   page = await browser.newPage({ viewport: { width: 1280, height: 860 } });
+  // Generous: the machine may be busy compiling while this runs (SwiftShader renders on the CPU).
+  page.setDefaultTimeout(120000);
+  page.setDefaultNavigationTimeout(120000);
   page.on('pageerror', (e) => pageErrors.push(String(e)));
   await page.goto(viewer.url);
-  await page.waitForFunction(() => window.isopatch && window.isopatch.ready, null, { timeout: 60000 });
+  await page.waitForFunction(() => window.isopatch && window.isopatch.ready, null, { timeout: 120000 });
 });
 
 after(async () => {
@@ -59,7 +61,7 @@ async function pixels() {
 
 async function waitForMesh(previousId) {
   await page.waitForFunction((id) => window.isopatch.meshId > id && document.querySelector('#status').dataset.state === 'ready',
-    previousId, { timeout: 60000 });
+    previousId, { timeout: 120000 });
 }
 
 test('the page loads and shows the torus with its mean curvature', async () => {
@@ -124,7 +126,7 @@ test('a bad formula shows the error with its column, and the page lives on', asy
   const id = await page.evaluate(() => window.isopatch.meshId);
   await page.fill('#surface', 'x^2 + * y');
   await page.click('#mesh-button');
-  await page.waitForSelector('#error:not([hidden])', { timeout: 30000 });
+  await page.waitForSelector('#error:not([hidden])', { timeout: 120000 });
   const text = await page.locator('#error').innerText();
   // The parser stops at the '*' that has no left operand.
   assert.match(text, new RegExp(`column ${'x^2 + * y'.indexOf('*') + 1}\\b`));
@@ -188,14 +190,9 @@ test('the server listens on loopback only', async () => {
     .filter((f) => f.length > 3 && f[3] === '0A' && f[1].endsWith(':' + hexPort)).map((f) => f[1]);
   assert.deepEqual(listening, [`0100007F:${hexPort}`]);
   const tcp6 = readFileSync('/proc/net/tcp6', 'utf8');
-  assert.ok(!tcp6.includes(':' + hexPort + ' 00000000000000000000000000000000:0000 0A'), 'listening on IPv6 too');
-  const others = Object.values(os.networkInterfaces()).flat().filter((a) => a.family === 'IPv4' && !a.internal);
-  for (const a of others) {
-    const refused = await new Promise((resolve) => {
-      const s = net.connect({ port, host: a.address, timeout: 2000 }, () => { s.destroy(); resolve(false); });
-      s.on('error', () => resolve(true));
-      s.on('timeout', () => { s.destroy(); resolve(true); });
-    });
-    assert.ok(refused, `reachable on ${a.address}:${port}`);
-  }
+  // The kernel's table of listening sockets: bound to 127.0.0.1 and nothing else (no packet is sent
+  // to any other address to find out).
+  const tcp6Listening = tcp6.split('\n').slice(1).map((l) => l.trim().split(/\s+/))
+    .filter((f) => f.length > 3 && f[3] === '0A' && f[1].endsWith(':' + hexPort));
+  assert.deepEqual(tcp6Listening, [], 'listening on IPv6 too');
 });
