@@ -1,19 +1,40 @@
 #!/usr/bin/env bash
-# Installs, with apt-get, whatever isopatch needs that this Debian 12 machine does not have yet.
+# Installs, with apt-get, whatever isopatch needs that this Debian 12 machine does not have yet, then
+# the viewer's npm packages (web/package-lock.json: three for the page of 'isopatch view',
+# playwright-core and gltf-validator for its tests) with npm ci when web/node_modules is not current.
 # Usage: scripts/install-deps.sh [--bench]   (as root, or with sudo available)
 #   --bench  also what only the performance report's peers need (scripts/performance_report.sh):
 #            VTK for the Flying Edges peer and GNU time for the peak memory; never the library's
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libcli11-dev libgtest-dev libgmock-dev
           libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3 zlib1g-dev
-          python3-dev pybind11-dev python3-numpy python3-pytest python3-meshio python3-skimage)
+          python3-dev pybind11-dev python3-numpy python3-pytest python3-meshio python3-skimage
+          libtinygltf-dev libcpp-httplib-dev nodejs npm chromium)
 [ "${1:-}" = "--bench" ] && packages+=(libvtk9-dev time)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# nodejs and npm: any installed node with npm will do (a machine may have node from elsewhere).
+if command -v node >/dev/null && command -v npm >/dev/null; then
+  filtered=()
+  for p in "${missing[@]}"; do [ "$p" = nodejs ] || [ "$p" = npm ] || filtered+=("$p"); done
+  missing=("${filtered[@]}")
+fi
+# The viewer's JavaScript packages, exactly as locked; skipped when the last npm ci here installed this
+# very lock file (a copy of it is kept in node_modules as the stamp).
+install_web_packages() {
+  local web
+  web="$(cd "$(dirname "$0")/../web" && pwd)"
+  if ! cmp -s "$web/package-lock.json" "$web/node_modules/.isopatch-installed-lock.json"; then
+    echo "isopatch: installing the viewer's npm packages (web/package-lock.json)"
+    (cd "$web" && npm ci --no-audit --no-fund --loglevel=error)
+    cp "$web/package-lock.json" "$web/node_modules/.isopatch-installed-lock.json"
+  fi
+}
 if [ ${#missing[@]} -eq 0 ]; then
   echo "isopatch: all build dependencies are installed"
+  install_web_packages
   exit 0
 fi
 echo "isopatch: installing ${missing[*]}"
@@ -22,3 +43,4 @@ SUDO=""
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_web_packages

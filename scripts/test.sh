@@ -5,7 +5,8 @@
 # would need the sanitizer runtime preloaded into the interpreter) and the two heaviest geometric
 # sweeps, labels "adaptive" and
 # "validation": every catalogue surface through the whole pipeline, 2.5 CPU minutes under the
-# sanitizers; the unit and robustness labels still run the whole pipeline on many surfaces). The
+# sanitizers; the unit and robustness labels still run the whole pipeline on many surfaces; and the
+# browser tests of the viewer, label "browser", whose server code the unit test test_view runs). The
 # sanitizer build is a unity build (16 sources per translation unit): half the compile time; the first
 # pass compiles every source on its own.
 # Set ISOPATCH_SKIP_SANITIZERS=1 to skip the second pass when iterating locally.
@@ -25,7 +26,7 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
         -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 >/dev/null
   cmake --build build-sanitize -j"$jobs"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive|validation|python"
+    ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive|validation|python|browser"
 fi
 # Fuzz targets (fuzz/, libFuzzer with clang++, ASan + UBSan): every committed corpus input (including
 # the regressions the fuzzers found) and then a seeded search of up to a minute per target, so a run

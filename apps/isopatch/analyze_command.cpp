@@ -206,14 +206,10 @@ int run_analyze(const AnalyzeOptions& o) {
       throw InputError("--write '" + o.write + "': the fields are vertex attributes, which only PLY stores");
     check_output_path(o.write);
   }
-  SurfacePtr surface;
-  if (!o.surface.empty()) {
-    std::optional<Box> box;
-    if (!o.box.empty()) box = parse_box(o.box);
-    surface = resolve_surface(o.surface, box, parse_params(o.params));
-  }
-
   Mesh mesh = read_mesh(o.mesh);
+  SurfacePtr surface;
+  if (!o.surface.empty()) surface = resolve_surface_for_mesh(o.surface, o.box, o.params, mesh);
+
   const QualityReport report = analyze_quality(mesh, surface.get());
 
   if (o.json) {
@@ -254,7 +250,8 @@ Runner add_analyze_command(CLI::App& app) {
       app.add_subcommand("analyze", "Measure a mesh: topology, element shape, valence, accuracy against f");
   cmd->add_option("mesh", o->mesh, "Mesh file: .ply, .obj, .off or .stl")->required();
   cmd->add_option("--surface", o->surface, "The surface it approximates: catalogue name, formula or @file");
-  cmd->add_option("--box", o->box, "Box x0,y0,z0,x1,y1,z1 for a formula surface");
+  cmd->add_option("--box", o->box,
+                  "Box x0,y0,z0,x1,y1,z1 for a formula surface (default: the mesh's bounds)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
   cmd->add_flag("--json", o->json, "Print the report as JSON");
   cmd->add_option("--write", o->write,

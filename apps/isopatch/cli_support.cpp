@@ -2,12 +2,15 @@
 
 #include <isopatch/error.hpp>
 #include <isopatch/mesh_io.hpp>
+#include <isopatch/resolve_surface.hpp>
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 namespace isopatch::cli {
 
@@ -29,6 +32,22 @@ std::map<std::string, double> parse_params(const std::vector<std::string>& items
     if (!params.emplace(name, value).second) throw InputError("--param " + name + " is given twice");
   }
   return params;
+}
+
+SurfacePtr resolve_surface_for_mesh(const std::string& spec, const std::string& box_text,
+                                    const std::vector<std::string>& params, const Mesh& mesh) {
+  const std::map<std::string, double> values = parse_params(params);
+  if (!box_text.empty()) return resolve_surface(spec, parse_box(box_text), values);
+  try {
+    return resolve_surface(spec, std::nullopt, values);
+  } catch (const InputError& e) {
+    if (e.setting() != "box" || mesh.vertex_count() == 0) throw;
+  }
+  Box box = bounding_box(mesh);
+  const Vec3 margin = Vec3::Constant(0.01 * std::max((box.hi - box.lo).norm(), 1e-9));
+  box.lo -= margin;
+  box.hi += margin;
+  return resolve_surface(spec, box, values);
 }
 
 void check_output_path(const std::string& path) {

@@ -1,6 +1,9 @@
 #pragma once
 // Small helpers shared by the subcommands: parameters, output checks, number formatting.
 
+#include <isopatch/mesh.hpp>
+#include <isopatch/surface.hpp>
+
 #include <map>
 #include <string>
 #include <vector>
@@ -9,6 +12,13 @@ namespace isopatch::cli {
 
 /// Parses "name=value" items into a map. \throw InputError for a malformed item or a repeated name.
 std::map<std::string, double> parse_params(const std::vector<std::string>& items);
+
+/// The surface of `--surface spec` for a mesh read from a file (analyze, render): in the box
+/// `box_text` when given; else a catalogue surface in its own box, and a formula in the mesh's
+/// bounding box grown by 1% of its diagonal on every side (so that a flat mesh still has a box).
+/// \throw as resolve_surface and parse_box; InputError for a formula with an empty mesh and no box.
+SurfacePtr resolve_surface_for_mesh(const std::string& spec, const std::string& box_text,
+                                    const std::vector<std::string>& params, const Mesh& mesh);
 
 /// Checks, before any work is done, that `path` has a known mesh extension and that its folder exists
 /// and is writable. \throw IoError otherwise.

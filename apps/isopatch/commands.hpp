@@ -18,6 +18,8 @@ Runner add_analyze_command(CLI::App& app);
 Runner add_render_command(CLI::App& app);
 /// `isopatch surfaces`: list the built-in catalogue.
 Runner add_surfaces_command(CLI::App& app);
+/// `isopatch view [MESH | SURFACE] [--port N]`: the live viewer in the browser (loopback only).
+Runner add_view_command(CLI::App& app);
 /// `isopatch compare SURFACE`: the meshers side by side at matched vertex counts.
 Runner add_compare_command(CLI::App& app);
 

@@ -39,7 +39,8 @@ std::string flag_for_setting(const std::string& setting) {
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
   }};
-  static constexpr std::array<std::string_view, 25> kSameName{"box",
+  static constexpr std::array<std::string_view, 27> kSameName{"box",
+                                                              "colour",
                                                               "method",
                                                               "edge_length",
                                                               "max_error",
@@ -63,7 +64,8 @@ std::string flag_for_setting(const std::string& setting) {
                                                               "max_vertices",
                                                               "level",
                                                               "spacing",
-                                                              "origin"};
+                                                              "origin",
+                                                              "port"};
   for (const auto& [name, flag] : kRenamed)
     if (setting == name) return std::string(flag);
   for (const std::string_view name : kSameName)

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   runners["render"] = cli::add_render_command(app);
   runners["analyze"] = cli::add_analyze_command(app);
   runners["compare"] = cli::add_compare_command(app);
+  runners["view"] = cli::add_view_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,7 @@
 // `isopatch mesh`: SURFACE (catalogue name, formula or @file) -> Settings -> mesh_surface -> file.
 #include <isopatch/curvature.hpp>
 #include <isopatch/isopatch.hpp>
+#include <isopatch/mesh_io.hpp>
 #include <isopatch/remesh.hpp>
 #include <isopatch/resolve_surface.hpp>
 #include <isopatch/volume_io.hpp>
@@ -14,6 +15,7 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "glb_colours.hpp"
 #include "mesh_warnings.hpp"
 #include "progress_line.hpp"
 #include "stats_output.hpp"
@@ -36,6 +38,7 @@ struct MeshOptions {
   bool quiet = false;
   bool progress = false;
   bool fields = false;
+  std::string colour = "mean_curvature";
   std::string stats_json;
   Settings defaults;
   std::optional<double> edge_length;
@@ -101,6 +104,7 @@ int run_mesh(const MeshOptions& o) {
     throw InputError("unknown --base '" + o.base + "' (want barycentric or coons)");
 
   check_output_path(o.output);
+  check_colour_field(o.colour);
   if (!o.stats_json.empty()) check_writable_location(o.stats_json);
   if (o.volume.given() && !is_volume_path(o.surface))
     throw InputError("--level, --spacing and --origin are for volumes (.npy, .nrrd), not '" + o.surface +
@@ -120,7 +124,8 @@ int run_mesh(const MeshOptions& o) {
   Mesh mesh = mesh_surface(*surface, settings, &stats);
   line.reset();
   if (o.fields) attach_fields(mesh, *surface);
-  write_mesh(mesh, o.output);
+  const bool glb = format_from_path(o.output) == MeshFormat::Glb;
+  write_mesh(mesh, o.output, glb ? glb_colours(mesh, surface.get(), o.colour) : std::vector<Vec3>{});
   if (!o.stats_json.empty()) write_stats_json(o.stats_json, surface->name(), settings, stats, o.output);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
   print_mesh_warnings(stats, mesh, stderr);
@@ -136,7 +141,8 @@ Runner add_mesh_command(CLI::App& app) {
          "surface", o->surface,
          "Catalogue name (see 'isopatch surfaces'), a formula, @file, or a sampled volume (.npy, .nrrd)")
       ->required();
-  cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off or .stl")->required();
+  cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off, .stl or .glb (glTF 2.0 binary)")
+      ->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
@@ -206,7 +212,11 @@ Runner add_mesh_command(CLI::App& app) {
                   "Stop with an error beyond this many vertices (0: none)");
   cmd->add_flag(
       "--fields", o->fields,
-      "Store discrete and exact mean and Gaussian curvature and the distance to f = 0 per vertex (PLY)");
+      "Store discrete and exact mean and Gaussian curvature and the distance to f = 0 per vertex (PLY, "
+      "glTF)");
+  cmd->add_option("--colour", o->colour,
+                  std::string(".glb: the field shown as vertex colours (COLOR_0): ") + kGlbColourFields)
+      ->capture_default_str();
   cmd->add_option("--stats-json", o->stats_json,
                   "Also write every statistic of the run to this file as JSON (by stage, by name)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success (and no progress line)");

@@ -140,9 +140,7 @@ int run_render(const RenderCommandOptions& o) {
   const bool field_mode = show.mode == RenderMode::ScalarField || show.mode == RenderMode::Error;
   if (field_mode && !o.surface.empty()) {
     // Fresh fields against the surface replace whatever the file carried under the same names.
-    std::optional<Box> box;
-    if (!o.box.empty()) box = parse_box(o.box);
-    const SurfacePtr surface = resolve_surface(o.surface, box, parse_params(o.params));
+    const SurfacePtr surface = resolve_surface_for_mesh(o.surface, o.box, o.params, mesh);
     attach_fields(mesh, *surface);
   } else if (field_mode && mesh.find_attribute(options.field) == nullptr) {
     throw InputError("mesh '" + o.mesh + "' has no vertex attribute '" + options.field +
@@ -181,7 +179,8 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option(
       "--surface", o->surface,
       "Surface to compute curvature and distance fields against (else they are read from the mesh)");
-  cmd->add_option("--box", o->box, "Box of a --surface formula: x0,y0,z0,x1,y1,z1");
+  cmd->add_option("--box", o->box,
+                  "Box of a --surface formula: x0,y0,z0,x1,y1,z1 (default: the mesh's bounds)");
   cmd->add_option("--param", o->params,
                   "Override a definition of the --surface formula: name=value (repeatable)");
   cmd->add_option("--field", o->field, "Vertex attribute to colour by (e.g. mean_curvature_exact)");

@@ -44,4 +44,9 @@ struct Mesh {
 /// Axis-aligned bounding box of the positions (an invalid Box for an empty mesh).
 Box bounding_box(const Mesh& mesh);
 
+/// Unit area-weighted vertex normals (the sum of the incident triangles' cross products, normalized),
+/// along the mesh's own orientation; the zero vector at a vertex with no non-degenerate incident
+/// triangle. \pre every index is in range.
+std::vector<Vec3> vertex_normals(const Mesh& mesh);
+
 }  // namespace isopatch

@@ -1,11 +1,20 @@
 #pragma once
 /// \file mesh_io.hpp
 /// Reading and writing meshes: OBJ, PLY (ASCII and binary, with per-vertex float attributes), OFF and
-/// STL. The format is chosen by the file extension (case-insensitive).
+/// STL; writing glTF 2.0 binary (.glb). The format is chosen by the file extension (case-insensitive).
 ///
 /// Writers: positions in double precision as the shortest decimal that reads back to the same double
 /// (OBJ, OFF, ASCII PLY; exact like %.17g, but shorter) or as raw doubles (binary little-endian PLY),
-/// as floats in binary STL. Attributes are written in PLY only, one `property float` each.
+/// as floats in binary STL. Attributes are written in PLY, one `property float` each, and in glTF.
+///
+/// glTF 2.0 binary (Khronos glTF 2.0 specification; the container written by TinyGLTF): one mesh of
+/// one indexed triangle primitive, float POSITION (with its bounds), unit area-weighted NORMAL,
+/// uint32 indices, COLOR_0 (float linear RGB) when colours are given, and every vertex attribute as a
+/// float application-specific attribute named `_` + its name in capitals (`mean_curvature` ->
+/// `_MEAN_CURVATURE`); glTF forbids NaN and infinity, so a value that is not finite is stored as
+/// kGlbUndefined. A double-sided, non-metallic white material shows COLOR_0 as it is. The node turns
+/// the mesh from isopatch's z up to glTF's y up; positions stay as they are. Reading glTF is not
+/// supported (IoError).
 ///
 /// Readers: OBJ keeps `v` and `f` (corners `a`, `a/b`, `a//c`, `a/b/c`; negative = relative; a face
 /// may refer only to vertices defined before it) and skips the other statements of the OBJ
@@ -25,23 +34,32 @@
 
 #include <isopatch/mesh.hpp>
 
+#include <limits>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace isopatch {
 
-enum class MeshFormat { Obj, PlyAscii, PlyBinary, Off, Stl };
+enum class MeshFormat { Obj, PlyAscii, PlyBinary, Off, Stl, Glb };
 
-/// The format for a path from its extension (.obj, .ply -> binary PLY, .off, .stl).
+/// What a glTF attribute holds where the mesh's value is NaN or infinite (the lowest float).
+inline constexpr float kGlbUndefined = -std::numeric_limits<float>::max();
+
+/// The format for a path from its extension (.obj, .ply -> binary PLY, .off, .stl, .glb).
 /// \throw IoError for an unknown extension.
 MeshFormat format_from_path(const std::string& path);
 
 /// Writes `mesh` to `path` in `format`. Positions are written in double precision where the format
-/// allows (OBJ, OFF, PLY), float in STL. Attributes are written in PLY only.
-/// \throw IoError if the file cannot be written; InputError if mesh.validate() fails.
-void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format);
+/// allows (OBJ, OFF, PLY), float in STL and glTF. Attributes are written in PLY and glTF only.
+/// `vertex_colours` (linear RGB in [0, 1], one per vertex, or empty for none) are written in glTF only,
+/// as COLOR_0 (render.hpp's field_vertex_colours() makes them from a field).
+/// \throw IoError if the file cannot be written; InputError if mesh.validate() fails, or for glTF a
+///        mesh without triangles or a colour count that is not the vertex count.
+void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
+                const std::vector<Vec3>& vertex_colours = {});
 /// Same, with the format from the extension.
-void write_mesh(const Mesh& mesh, const std::string& path);
+void write_mesh(const Mesh& mesh, const std::string& path, const std::vector<Vec3>& vertex_colours = {});
 
 /// Reads a mesh; polygons with more than 3 vertices are fan-triangulated.
 /// \throw IoError for an unreadable, malformed, truncated or lying file.
@@ -50,11 +68,11 @@ Mesh read_mesh(const std::string& path, MeshFormat format);
 Mesh read_mesh(const std::string& path);
 
 /// The bytes write_mesh would write (for in-memory use, tests and fuzzing).
-/// \throw InputError if mesh.validate() fails.
-std::string encode_mesh(const Mesh& mesh, MeshFormat format);
+/// \throw InputError as write_mesh.
+std::string encode_mesh(const Mesh& mesh, MeshFormat format, const std::vector<Vec3>& vertex_colours = {});
 /// Parses bytes as read_mesh would parse a file; `name` stands for the file in error messages.
 /// PlyAscii and PlyBinary both accept any PLY encoding (ASCII, binary little- or big-endian).
-/// \throw IoError for malformed, truncated or lying bytes.
+/// \throw IoError for malformed, truncated or lying bytes, and for Glb (not read).
 Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& name = "<memory>");
 
 }  // namespace isopatch

@@ -124,6 +124,14 @@ struct RenderInfo {
 ///        is not the vertex count.
 Image render_mesh(const Mesh& mesh, const RenderOptions& options, RenderInfo* info = nullptr);
 
+/// The colours the field modes (ScalarField, Error) of render_mesh give the vertices, before lighting:
+/// the same values, range and colour maps (missing_colour where a value is NaN or infinite), turned
+/// from the renderer's display (sRGB-encoded) values into linear RGB in [0, 1], as glTF's COLOR_0
+/// wants them (write_mesh in mesh_io.hpp). Fills `info` (range, missing values) when given.
+/// \throw InputError as render_mesh for the options and values, and for a mode that is not a field mode.
+std::vector<Colour> field_vertex_colours(const Mesh& mesh, const RenderOptions& options,
+                                         RenderInfo* info = nullptr);
+
 /// Writes `image` as an 8-bit RGB PNG. \throw IoError when the file cannot be written,
 /// InputError for an empty image.
 void write_png(const Image& image, const std::string& path);

@@ -4,8 +4,10 @@
 
 #include <isopatch/mesh.hpp>
 
+#include <limits>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace isopatch::io {
 
@@ -23,5 +25,9 @@ std::string encode_stl(const Mesh& mesh);
 /// Reads binary STL, or ASCII STL when the file starts with "solid" and is not a binary file of
 /// exactly the declared size.
 Mesh decode_stl(std::string_view bytes, const std::string& name);
+
+/// glTF 2.0 binary; `colours` (linear RGB, one per vertex, or empty) become COLOR_0. Throws InputError
+/// for a mesh without triangles or a colour count that is not the vertex count.
+std::string encode_glb(const Mesh& mesh, const std::vector<Vec3>& colours);
 
 }  // namespace isopatch::io

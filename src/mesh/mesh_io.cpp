@@ -17,10 +17,11 @@ MeshFormat format_from_path(const std::string& path) {
   if (ext == ".ply") return MeshFormat::PlyBinary;
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".stl") return MeshFormat::Stl;
-  throw IoError(path + ": unknown mesh file extension '" + ext + "' (use .obj, .ply, .off or .stl)");
+  if (ext == ".glb") return MeshFormat::Glb;
+  throw IoError(path + ": unknown mesh file extension '" + ext + "' (use .obj, .ply, .off, .stl or .glb)");
 }
 
-std::string encode_mesh(const Mesh& mesh, MeshFormat format) {
+std::string encode_mesh(const Mesh& mesh, MeshFormat format, const std::vector<Vec3>& vertex_colours) {
   mesh.validate();
   switch (format) {
     case MeshFormat::Obj:
@@ -33,6 +34,8 @@ std::string encode_mesh(const Mesh& mesh, MeshFormat format) {
       return io::encode_off(mesh);
     case MeshFormat::Stl:
       return io::encode_stl(mesh);
+    case MeshFormat::Glb:
+      return io::encode_glb(mesh, vertex_colours);
   }
   throw InputError("unknown mesh format");
 }
@@ -48,16 +51,21 @@ Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& n
       return io::decode_off(bytes, name);
     case MeshFormat::Stl:
       return io::decode_stl(bytes, name);
+    case MeshFormat::Glb:
+      throw IoError(name +
+                    ": reading glTF is not supported (isopatch writes .glb; read .ply, .obj, .off "
+                    "or .stl)");
   }
   throw InputError("unknown mesh format");
 }
 
-void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format) {
-  io::save_file(path, encode_mesh(mesh, format));
+void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
+                const std::vector<Vec3>& vertex_colours) {
+  io::save_file(path, encode_mesh(mesh, format, vertex_colours));
 }
 
-void write_mesh(const Mesh& mesh, const std::string& path) {
-  write_mesh(mesh, path, format_from_path(path));
+void write_mesh(const Mesh& mesh, const std::string& path, const std::vector<Vec3>& vertex_colours) {
+  write_mesh(mesh, path, format_from_path(path), vertex_colours);
 }
 
 Mesh read_mesh(const std::string& path, MeshFormat format) {

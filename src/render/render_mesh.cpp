@@ -16,6 +16,7 @@
 #include "render/font.hpp"
 #include "render/legend.hpp"
 #include "render/rasterizer.hpp"
+#include "render/render_options.hpp"
 #include "render/shading.hpp"
 
 namespace isopatch {
@@ -28,9 +29,9 @@ constexpr double kMaxSamples = 67108864.0;  // 2^26 samples of the supersampled 
 constexpr double kEdgeWidth = 1.0;          // wireframe lines, in output pixels
 constexpr double kEdgeDepthBias = 0.01;     // in bounding-sphere radii: edges win over their own faces
 
-bool is_field_mode(RenderMode mode) {
-  return mode == RenderMode::ScalarField || mode == RenderMode::Error;
-}
+}  // namespace
+
+namespace render {
 
 void check_options(const RenderOptions& o) {
   auto fail = [](const std::string& message) { throw InputError("render: " + message); };
@@ -50,26 +51,9 @@ void check_options(const RenderOptions& o) {
     fail("the field modes' ambient light must be in [0, 1]");
 }
 
-std::vector<double> field_values(const Mesh& mesh, const RenderOptions& o) {
-  if (!o.values.empty()) {
-    if (o.values.size() != mesh.vertex_count())
-      throw InputError("render: " + std::to_string(o.values.size()) + " values for " +
-                       std::to_string(mesh.vertex_count()) + " vertices");
-    return o.values;
-  }
-  if (o.field.empty())
-    throw InputError("render: this mode needs per-vertex values or the name of an attribute");
-  const std::vector<float>* attribute = mesh.find_attribute(o.field);
-  if (attribute == nullptr) throw InputError("render: the mesh has no vertex attribute '" + o.field + "'");
-  return std::vector<double>(attribute->begin(), attribute->end());
-}
+}  // namespace render
 
-double colour_range(const std::vector<double>& values, const RenderOptions& o) {
-  if (o.range) return *o.range;
-  double m = render::robust_magnitude(values, o.percentile);
-  if (m == 0.0) m = render::robust_magnitude(values, 100.0);
-  return m > 0.0 ? m : 1.0;  // all zero (or no finite value): any range shows them the same
-}
+namespace {
 
 // The largest supersampling factor not above the requested one within the sample budget.
 int supersampling_for(const RenderOptions& o) {
@@ -164,17 +148,17 @@ Image downsample(const Image& canvas, int ss) {
 }  // namespace
 
 Image render_mesh(const Mesh& mesh, const RenderOptions& options, RenderInfo* info) {
-  check_options(options);
+  render::check_options(options);
   mesh.validate();
   if (mesh.triangle_count() == 0) throw InputError("render: the mesh has no triangles");
 
   Scene scene;
   scene.mesh = &mesh;
   RenderInfo summary;
-  const bool field_mode = is_field_mode(options.mode);
+  const bool field_mode = render::is_field_mode(options.mode);
   if (field_mode) {
-    scene.values = field_values(mesh, options);
-    scene.range = colour_range(scene.values, options);
+    scene.values = render::field_values(mesh, options);
+    scene.range = render::colour_range(scene.values, options);
     summary.range = scene.range;
     summary.missing_values = static_cast<std::size_t>(
         std::count_if(scene.values.begin(), scene.values.end(), [](double v) { return !std::isfinite(v); }));
@@ -194,7 +178,7 @@ Image render_mesh(const Mesh& mesh, const RenderOptions& options, RenderInfo* in
   scene.camera = render::fit_camera(mesh.positions, options, viewport);
   scene.screen.reserve(mesh.vertex_count());
   for (const Vec3& p : mesh.positions) scene.screen.push_back(scene.camera.project(p));
-  scene.normals = render::vertex_normals(mesh);
+  scene.normals = vertex_normals(mesh);
   for (Vec3& n : scene.normals) n = scene.camera.to_camera(n);
 
   render::DepthBuffer buffer(options.width * ss, options.height * ss);

@@ -8,21 +8,6 @@
 
 namespace isopatch::render {
 
-std::vector<Vec3> vertex_normals(const Mesh& mesh) {
-  std::vector<Vec3> normals(mesh.vertex_count(), Vec3::Zero());
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3& a = mesh.positions[t[0]];
-    // Twice the area times the unit normal: larger triangles weigh more.
-    const Vec3 n = (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a);
-    for (const std::uint32_t v : t) normals[v] += n;
-  }
-  for (Vec3& n : normals) {
-    const double length = n.norm();
-    n = length > 0.0 ? Vec3(n / length) : Vec3::Zero();
-  }
-  return normals;
-}
-
 Colour shaded_colour(const Colour& base, const Vec3& normal, const Lighting& lighting) {
   const Vec3 l = lighting.direction.normalized();
   const Vec3 h = (l + Vec3::UnitZ()).normalized();

@@ -1,5 +1,5 @@
 #pragma once
-// Surface colour for the renderer: vertex normals, the Blinn-Phong formula of render.hpp and the
+// Surface colour for the renderer: the Blinn-Phong formula of render.hpp and the
 // isophote stripes.
 
 #include <isopatch/mesh.hpp>
@@ -8,10 +8,6 @@
 #include <vector>
 
 namespace isopatch::render {
-
-/// Unit area-weighted vertex normals (the sum of the incident triangles' cross products, normalized);
-/// the zero vector at a vertex with no non-degenerate incident triangle.
-std::vector<Vec3> vertex_normals(const Mesh& mesh);
 
 /// The colour of render.hpp's Lighting formula for the Shaded mode, for a unit normal in camera
 /// coordinates. Not clamped.

@@ -31,6 +31,8 @@ const char* label(MeshFormat format) {
       return "off";
     case MeshFormat::Stl:
       return "stl";
+    case MeshFormat::Glb:
+      return "glb";
   }
   return "?";
 }

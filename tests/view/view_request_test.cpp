@@ -1,0 +1,80 @@
+// parse_mesh_request: the viewer's JSON body -> Settings, within the server's bounds.
+#include <isopatch/error.hpp>
+
+#include <gtest/gtest.h>
+
+#include "view/view_request.hpp"
+
+namespace isopatch::view {
+namespace {
+
+std::string setting_of(const std::string& body) {
+  try {
+    parse_mesh_request(body);
+  } catch (const Error& e) {
+    return e.setting();
+  }
+  return "(accepted)";
+}
+
+TEST(ViewRequest, ReadsEveryMember) {
+  const MeshRequest r = parse_mesh_request(
+      R"({"surface": "x^2+y^2+z^2-1", "box": [-2, -2, -2, 2, 2, 2], "edge_length": 0.1, "max_error": 0.001,
+          "quality": "fine", "method": "mc", "remesh": 0, "threads": 1, "time_limit": 5, "max_vertices": 1000})");
+  EXPECT_EQ(r.surface, "x^2+y^2+z^2-1");
+  ASSERT_TRUE(r.settings.box.has_value());
+  EXPECT_EQ(r.settings.box->lo, Vec3(-2, -2, -2));
+  EXPECT_EQ(r.settings.box->hi, Vec3(2, 2, 2));
+  EXPECT_EQ(r.settings.edge_length, 0.1);
+  EXPECT_EQ(r.settings.max_error, 0.001);
+  EXPECT_EQ(r.settings.quality, Quality::Fine);
+  EXPECT_EQ(r.settings.method, Method::MarchingCubes);
+  EXPECT_EQ(r.settings.remesh_iterations, 0);
+  EXPECT_EQ(r.settings.threads, 1);
+  EXPECT_EQ(r.settings.time_limit, 5.0);
+  EXPECT_EQ(r.settings.max_vertices, 1000u);
+}
+
+TEST(ViewRequest, DefaultsToPreviewWithinTheServerBudget) {
+  RequestLimits limits;
+  limits.max_vertices = 5000;
+  limits.time_limit = 3.0;
+  const MeshRequest r = parse_mesh_request(R"({"surface": "torus", "box": null, "time_limit": 100,
+                                               "max_vertices": 9999999})",
+                                           limits);
+  EXPECT_EQ(r.settings.quality, Quality::Preview);
+  EXPECT_FALSE(r.settings.box.has_value());
+  EXPECT_EQ(r.settings.time_limit, 3.0) << "a request cannot raise the time limit";
+  EXPECT_EQ(r.settings.max_vertices, 5000u) << "nor the vertex budget";
+}
+
+TEST(ViewRequest, RefusesBadBodiesNamingTheMember) {
+  EXPECT_EQ(setting_of("not json"), "request");
+  EXPECT_EQ(setting_of("[1, 2]"), "request");
+  EXPECT_EQ(setting_of("{}"), "surface");
+  EXPECT_EQ(setting_of(R"({"surface": ""})"), "surface");
+  EXPECT_EQ(setting_of(R"({"surface": 3})"), "surface");
+  EXPECT_EQ(setting_of(R"({"surface": "@/etc/passwd"})"), "surface");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "box": [1, 2, 3]})"), "box");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "box": [1, 1, 1, 0, 0, 0]})"), "box");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "edge_length": -1})"), "edge_length");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "edge_length": "small"})"), "edge_length");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "max_error": 0})"), "max_error");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "quality": "best"})"), "quality");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "method": "magic"})"), "method");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "remesh": 101})"), "remesh");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "threads": -1})"), "threads");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "threads": 1.5})"), "threads");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "colour": "red"})"), "colour");
+  EXPECT_EQ(setting_of(R"({"surface": "torus", "edge_length": 1e-9})"), "(accepted)")
+      << "tiny sizes are bounded by the budget, not refused";
+  RequestLimits small;
+  small.max_request_bytes = 10;
+  EXPECT_THROW(parse_mesh_request(R"({"surface": "torus"})", small), InputError);
+  small = {};
+  small.max_surface_chars = 3;
+  EXPECT_THROW(parse_mesh_request(R"({"surface": "torus"})", small), InputError);
+}
+
+}  // namespace
+}  // namespace isopatch::view
