@@ -21,7 +21,7 @@ void print_summary(const std::string& surface_name, const Settings& settings, co
     std::printf("grad evals %s\n", group_digits(stats.gradient_evaluations).c_str());
   visit_stats(stats, [](std::string_view stage, std::string_view name, double value) {
     if (stage == "seconds")
-      std::printf("time of    %-22.*s %.4f s\n", static_cast<int>(name.size()), name.data(), value);
+      std::printf("stage      %-22.*s %.4f s\n", static_cast<int>(name.size()), name.data(), value);
     else if (stage != "mesh")
       std::printf("%-10.*s %g\n", static_cast<int>(name.size()), name.data(), value);
   });
