@@ -15,9 +15,7 @@
 #include <ostream>
 #include <string>
 
-#include "mesh_checks.hpp"
-#include "self_intersection.hpp"
-#include "test_surfaces.hpp"
+#include "surface_mesh_expectations.hpp"
 
 namespace isopatch {
 namespace {
@@ -33,12 +31,8 @@ void PrintTo(const PresetCase& c, std::ostream* out) {
   *out << c.name << " at edge length " << c.edge_length;
 }
 
-SurfacePtr torus() {
-  return test::torus();
-}
-
-Mesh mesh_with(const Surface& s, double edge_length, Quality quality, MeshStats* stats,
-               std::optional<int> remesh = std::nullopt) {
+Mesh mesh_at_quality(const Surface& s, double edge_length, Quality quality, MeshStats* stats,
+                     std::optional<int> remesh = std::nullopt) {
   Settings settings;
   settings.edge_length = edge_length;
   settings.quality = quality;
@@ -52,19 +46,11 @@ TEST_P(QualityPresets, PreviewMeetsItsFloor) {
   const PresetCase c = GetParam();
   const SurfacePtr s = c.make();
   MeshStats stats, raw_stats;
-  const Mesh mesh = mesh_with(*s, c.edge_length, Quality::Preview, &stats);
-  const Mesh raw = mesh_with(*s, c.edge_length, Quality::Default, &raw_stats, 0);
+  const Mesh mesh = mesh_at_quality(*s, c.edge_length, Quality::Preview, &stats);
+  const Mesh raw = mesh_at_quality(*s, c.edge_length, Quality::Default, &raw_stats, 0);
   EXPECT_GE(mesh.vertex_count(), 1000u);
   const QualityReport q = analyze_quality(mesh, s.get());
-  EXPECT_TRUE(q.topology.watertight());
-  EXPECT_TRUE(q.topology.manifold());
-  EXPECT_TRUE(q.topology.consistently_oriented());
-  EXPECT_EQ(q.topology.components.size(), 1u);
-  EXPECT_EQ(q.topology.genus, c.genus);
-  EXPECT_EQ(test::count_self_intersections(mesh), 0u);
-  EXPECT_LT(test::max_vertex_distance(*s, mesh), 1e-9 * s->box().diagonal());
-  EXPECT_GE(q.valence.share_6, 0.90);
-  EXPECT_GE(q.shape.min_angle.min, 20.0);
+  test::expect_floor(mesh, *s, q, c.genus);
   // The raw mesh has slivers; the local repair removes them and lowers the curvature error.
   const QualityReport r = analyze_quality(raw, s.get());
   EXPECT_LT(r.shape.min_angle.min, 20.0);
@@ -79,8 +65,8 @@ TEST_P(QualityPresets, FineHasALowerCurvatureErrorThanDefault) {
   const PresetCase c = GetParam();
   const SurfacePtr s = c.make();
   MeshStats fine_stats, default_stats;
-  const Mesh fine = mesh_with(*s, c.edge_length, Quality::Fine, &fine_stats);
-  const Mesh normal = mesh_with(*s, c.edge_length, Quality::Default, &default_stats);
+  const Mesh fine = mesh_at_quality(*s, c.edge_length, Quality::Fine, &fine_stats);
+  const Mesh normal = mesh_at_quality(*s, c.edge_length, Quality::Default, &default_stats);
   const QualityReport f = analyze_quality(fine, s.get());
   const QualityReport d = analyze_quality(normal, s.get());
   EXPECT_LT(f.accuracy->mean_curvature.nrms, d.accuracy->mean_curvature.nrms);
@@ -90,7 +76,7 @@ TEST_P(QualityPresets, FineHasALowerCurvatureErrorThanDefault) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, QualityPresets,
-                         ::testing::Values(PresetCase{"torus", &torus, 0.05, 1},
+                         ::testing::Values(PresetCase{"torus", &test::default_torus, 0.05, 1},
                                            PresetCase{"tanglecube", &test::tanglecube, 0.12, 5},
                                            PresetCase{"genus2", &test::genus2, 0.03, 2}),
                          [](const ::testing::TestParamInfo<PresetCase>& param) {
@@ -100,8 +86,8 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, QualityPresets,
 TEST(StageStatistics, EveryStageReportsItsTimeAndTheDefectsAddUp) {
   const SurfacePtr s = test::torus();
   MeshStats stats, raw_stats;
-  mesh_with(*s, 0.08, Quality::Default, &stats);
-  const Mesh raw = mesh_with(*s, 0.08, Quality::Default, &raw_stats, 0);
+  mesh_at_quality(*s, 0.08, Quality::Default, &stats);
+  const Mesh raw = mesh_at_quality(*s, 0.08, Quality::Default, &raw_stats, 0);
   for (const char* stage : {"partition", "sides", "patches", "checks", "defects", "cleanup_split",
                             "cleanup_collapse", "cleanup_flip", "cleanup_relax", "cleanup_curvature"}) {
     bool found = false;
