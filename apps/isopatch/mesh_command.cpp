@@ -38,6 +38,7 @@ struct MeshOptions {
   bool quiet = false;
   bool progress = false;
   bool fields = false;
+  bool vertex_roles = false;
   std::string colour = "mean_curvature";
   std::string stats_json;
   Settings defaults;
@@ -89,6 +90,7 @@ int run_mesh(const MeshOptions& o) {
   settings.time_limit = o.time_limit;
   settings.max_error = o.max_error;
   settings.quality = parse_quality(o.quality);
+  settings.vertex_roles = o.vertex_roles;
   settings.threads = o.threads;
   if (o.coordinates == "wachspress")
     settings.coordinates = Settings::Coordinates::Wachspress;
@@ -210,6 +212,9 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--time-limit", o->time_limit, "Stop with an error after this many seconds (0: none)");
   cmd->add_option("--max-vertices", o->max_vertices,
                   "Stop with an error beyond this many vertices (0: none)");
+  cmd->add_flag("--vertex-roles", o->vertex_roles,
+                "Projection: store what made each vertex as the attribute 'role' (0 patch corner, 1 seam, 2 "
+                "patch interior, 3 patch centre, 4 fan centre, 5 made by the clean-up; PLY, GLB)");
   cmd->add_flag(
       "--fields", o->fields,
       "Store discrete and exact mean and Gaussian curvature and the distance to f = 0 per vertex (PLY, "

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "error_report.hpp"
 #include "run_command.hpp"
@@ -47,6 +48,34 @@ TEST(Cli, MeshesFormulaWithBox) {
   const TopologyReport t = analyze_topology(read_mesh(out.string()));
   EXPECT_TRUE(t.watertight());
   EXPECT_EQ(t.genus, 0);
+}
+
+TEST(Cli, StoresVertexRolesAndPrintsStageTimes) {
+  // --vertex-roles keeps what made each vertex (corners, seams, interiors of the raw projection mesh);
+  // the summary names the stages with their times and the thread count.
+  const auto dir = test::scratch_dir("cli_roles");
+  const auto out = dir / "raw.ply";
+  const auto r =
+      test::run_command(kCli + " mesh genus2 --remesh 0 --vertex-roles --threads 2 -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("stage      partition"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stage      patches"), std::string::npos);
+  EXPECT_NE(r.out.find("threads    2"), std::string::npos);
+  EXPECT_NE(r.out.find("defect_seam_under_20"), std::string::npos);
+  const Mesh mesh = read_mesh(out.string());
+  const VertexAttribute* role = nullptr;
+  for (const VertexAttribute& a : mesh.attributes)
+    if (a.name == "role") role = &a;
+  ASSERT_NE(role, nullptr);
+  ASSERT_EQ(role->values.size(), mesh.vertex_count());
+  std::size_t counts[5] = {};
+  for (const float v : role->values) {
+    ASSERT_TRUE(v >= 0.0f && v <= 4.0f && v == std::floor(v)) << v;
+    ++counts[static_cast<int>(v)];
+  }
+  EXPECT_GT(counts[0], 0u);  // corners
+  EXPECT_GT(counts[1], 0u);  // seams
+  EXPECT_GT(counts[2], 0u);  // patch interiors
 }
 
 TEST(Cli, ListsSurfaces) {
