@@ -134,10 +134,8 @@ double CellMesher::side_factor(int level) {
   return factor;
 }
 
-double CellMesher::corner_size(std::uint32_t c) {
-  if (corner_sizes_.empty()) corner_sizes_.assign(part_.corners.size(), -1.0);
-  if (corner_sizes_[c] < 0.0) corner_sizes_[c] = size_at_(part_.corners[c].position);
-  return corner_sizes_[c];
+double CellMesher::corner_size(std::uint32_t c) const {
+  return corner_sizes_[c];  // filled in parallel by compute_sides() before any cell asks
 }
 
 void CellMesher::collect_sides() {
@@ -192,7 +190,7 @@ void CellMesher::compute_sides(CellMesherCounters& counters) {
     add_vertex(c.position, c.gradient, role_value(VertexRole::Corner));
   if (fixed_resolution_ == 0) {
     // The target size at every corner, in parallel (size_at_ evaluates the curvature with max_error).
-    corner_sizes_.assign(part_.corners.size(), -1.0);
+    corner_sizes_.assign(part_.corners.size(), 0.0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, part_.corners.size(), 256), [&](const auto& range) {
       settings_.budget.check_cancel();
       for (std::size_t c = range.begin(); c != range.end(); ++c)

@@ -105,7 +105,7 @@ class CellMesher {
   int cell_resolution(std::size_t c);
   int side_segments(std::size_t i);
   double side_factor(int level);
-  double corner_size(std::uint32_t c);
+  double corner_size(std::uint32_t c) const;
   void collect_sides();
   bool refinable(std::size_t cell) const { return part_.cells[cell].level < refinable_level_; }
   std::size_t side_index(std::uint32_t a, std::uint32_t b) const;
@@ -129,7 +129,7 @@ class CellMesher {
   int refinable_level_;
   std::function<double(const Vec3&)> size_at_;
   bool uniform_sizes_;                     // size_at_ is constant (see side_factor)
-  std::vector<double> corner_sizes_;       // target size at each corner, -1 until asked
+  std::vector<double> corner_sizes_;       // target size at each corner (automatic resolution only)
   std::vector<int> cell_resolutions_;      // per cell, 0 until asked
   std::vector<double> side_factors_;       // per level, 0 until asked (see side_factor)
   std::vector<int> side_segments_;         // per side, in key order

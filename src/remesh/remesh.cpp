@@ -129,6 +129,8 @@ class Remesher {
     timed("cleanup_collapse", [&] { collapse_short_edges(); });
     timed("cleanup_repair", [&] { repair_until_settled(); });
     timed("cleanup_flip", [&] { flip_valences(GlideLimits{.budget = kLocalGlideBudget}); });
+    // The collapses moved and merged vertices: varying sizes are graded again before the work list.
+    timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
     std::vector<std::uint32_t> work;
     timed("cleanup_relax", [&] {
       const DefectThresholds thresholds{.cos_small_angle = std::cos(kLocalAngle * std::numbers::pi / 180.0),
