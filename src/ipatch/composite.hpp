@@ -33,15 +33,8 @@ struct ConicArc {
   Vec3 end = Vec3::Zero();
   double weight = 1.0;  ///< > 0; cos(half the turning angle) for a circular arc
 
-  /// The point at t in [0, 1]; exactly `start` at t = 0 and exactly `end` at t = 1.
-  Vec3 point(double t) const {
-    if (t <= 0.0) return start;
-    if (t >= 1.0) return end;
-    const double a = (1.0 - t) * (1.0 - t);
-    const double b = 2.0 * weight * t * (1.0 - t);
-    const double c = t * t;
-    return (a * start + b * control + c * end) / (a + b + c);
-  }
+  /// The point at t in [0, 1] (clamped); exactly `start` at t = 0 and exactly `end` at t = 1.
+  Vec3 point(double t) const;
 };
 
 /// One side of a patch: a curve of the composite, traversed from its start to its end or reversed.

@@ -1,0 +1,17 @@
+/// \file composite.cpp
+/// Evaluation of the composite's boundary arcs (composite.hpp).
+#include "ipatch/composite.hpp"
+
+namespace isopatch {
+
+Vec3 ConicArc::point(double t) const {
+  if (t <= 0.0) return start;
+  if (t >= 1.0) return end;
+  // Bernstein weights of degree 2 with the middle one scaled by the arc's weight.
+  const double a = (1.0 - t) * (1.0 - t);
+  const double b = 2.0 * weight * t * (1.0 - t);
+  const double c = t * t;
+  return (a * start + b * control + c * end) / (a + b + c);
+}
+
+}  // namespace isopatch
