@@ -5,6 +5,11 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "remesh/flip_blocks.hpp"
+
 namespace isopatch {
 
 int target_valence(const EditableMesh& mesh, std::uint32_t v) {
@@ -124,11 +129,13 @@ class GlideSearch {
   std::vector<std::uint32_t> next_, previous_;  ///< scratch of candidates_around
 };
 
-/// The edges whose flip changes the valence of an irregular vertex: those at it and those of its link
-/// (a neutral flip needs one; with four vertices of target valence a flip costs 4), as (smaller, larger).
-std::vector<VertexPair> edges_near_irregular_vertices(const EditableMesh& mesh) {
+/// The edges whose flip changes the valence of an irregular vertex among `vertices`: those at it and
+/// those of its link (a neutral flip needs one; with four vertices of target valence a flip costs 4), as
+/// (smaller, larger), sorted, each once.
+std::vector<VertexPair> edges_near_irregular_vertices(const EditableMesh& mesh,
+                                                      const std::vector<std::uint32_t>& vertices) {
   std::vector<VertexPair> list;
-  for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v) {
+  for (std::uint32_t v : vertices) {
     if (!mesh.alive(v) || static_cast<int>(mesh.valence(v)) == target_valence(mesh, v)) continue;
     for (std::uint32_t t : mesh.incident[v]) {
       const auto& tri = mesh.triangles[t];
@@ -144,20 +151,103 @@ std::vector<VertexPair> edges_near_irregular_vertices(const EditableMesh& mesh) 
   return list;
 }
 
-}  // namespace
-
-std::size_t flip_towards_valence_six(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits) {
+/// Greedy flips, then glide chains (limits.passes sweeps) from the edges near the irregular vertices
+/// of `vertices`, keeping only the start edges that `keep` accepts; `flip` decides every flip. With
+/// `refused`: `*refused` is set by `flip` when it refused a flip for lying outside the region, and the
+/// start edges whose flip or chain met such a refusal (and found nothing) are appended to `retry`.
+template <class Keep>
+std::size_t flip_region(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits,
+                        const std::vector<std::uint32_t>& vertices, Keep keep, bool* refused,
+                        std::vector<VertexPair>* retry) {
+  const auto starts = [&] {
+    std::vector<VertexPair> list = edges_near_irregular_vertices(mesh, vertices);
+    std::erase_if(list, [&](const VertexPair& edge) { return !keep(edge); });
+    return list;
+  };
+  const auto note = [&](const VertexPair& edge, bool found) {
+    if (refused && *refused && !found) retry->push_back(edge);
+  };
   std::size_t flips = 0;
-  for (const auto& [a, b] : edges_near_irregular_vertices(mesh)) {
+  for (const auto& [a, b] : starts()) {
+    if (refused) *refused = false;
     const auto e = mesh.interior_edge(a, b);
-    if (e && flip_energy_change(mesh, *e) < 0 && flip(*e, false)) ++flips;
+    const bool found = e && flip_energy_change(mesh, *e) < 0 && flip(*e, false);
+    flips += found ? 1 : 0;
+    note({a, b}, found);
   }
   GlideSearch search(mesh, flip, limits);
   for (int pass = 0; pass < limits.passes; ++pass) {
     std::size_t kept = 0;
-    for (const auto& [a, b] : edges_near_irregular_vertices(mesh)) kept += search.start(a, b);
+    for (const auto& [a, b] : starts()) {
+      if (refused) *refused = false;
+      const std::size_t chain = search.start(a, b);
+      kept += chain;
+      note({a, b}, chain > 0);
+    }
     flips += kept;
     if (kept == 0) break;
+  }
+  return flips;
+}
+
+/// One grid of blocks: every cube's flips confined to the cube, the cubes of one colour in parallel.
+/// Only start edges that `keep` accepts; those that met a cube's face and found nothing are returned in
+/// `retry` (sorted, each once).
+template <class Keep>
+std::size_t flip_blocks(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits,
+                        const FlipBlocks& blocks, Keep keep, std::vector<VertexPair>& retry) {
+  std::vector<std::size_t> flips(blocks.members.size(), 0);
+  std::vector<std::vector<VertexPair>> retries(blocks.members.size());
+  for (const std::vector<std::uint32_t>& cubes : blocks.colours)
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cubes.size(), 1), [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const std::uint32_t cube = cubes[i];
+        bool refused = false;
+        const auto inside = [&](std::uint32_t v) { return blocks.block_of[v] == cube; };
+        const FlipIfValid confined = [&](const EditableMesh::Edge& e, bool neutral) {
+          if (!(inside(e.a) && inside(e.b) && inside(e.c) && inside(e.d))) {
+            refused = true;
+            return false;
+          }
+          return flip(e, neutral);
+        };
+        flips[cube] =
+            flip_region(mesh, confined, limits, blocks.members[cube], keep, &refused, &retries[cube]);
+      }
+    });
+  std::size_t total = 0;
+  retry.clear();
+  for (std::size_t cube = 0; cube < flips.size(); ++cube) {
+    total += flips[cube];
+    retry.insert(retry.end(), retries[cube].begin(), retries[cube].end());
+  }
+  std::sort(retry.begin(), retry.end());
+  retry.erase(std::unique(retry.begin(), retry.end()), retry.end());
+  return total;
+}
+
+}  // namespace
+
+std::size_t flip_towards_valence_six(EditableMesh& mesh, const FlipIfValid& flip, const GlideLimits& limits) {
+  const double width = flip_block_width(mesh);
+  const FlipBlocks first = width > 0.0 ? make_flip_blocks(mesh, width, 0.0) : FlipBlocks{};
+  if (first.members.size() <= 1) {  // one cube (or no edge): the whole mesh in one region
+    std::vector<std::uint32_t> all;
+    for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v)
+      if (mesh.alive(v)) all.push_back(v);
+    return flip_region(
+        mesh, flip, limits, all, [](const VertexPair&) { return true; }, nullptr, nullptr);
+  }
+  // The first grid, then the edges that met its faces again in a grid shifted by half a cube (where
+  // they lie well inside a cube).
+  std::vector<VertexPair> retry, unused;
+  std::size_t flips = flip_blocks(
+      mesh, flip, limits, first, [](const VertexPair&) { return true; }, retry);
+  if (!retry.empty()) {
+    const FlipBlocks second = make_flip_blocks(mesh, width, 0.5);
+    flips += flip_blocks(
+        mesh, flip, limits, second,
+        [&](const VertexPair& edge) { return std::binary_search(retry.begin(), retry.end(), edge); }, unused);
   }
   return flips;
 }

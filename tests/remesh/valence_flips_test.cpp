@@ -1,6 +1,8 @@
 // Valence flips with glide chains on a planar grid scrambled by random flips: the chains must lower
 // the valence energy below what greedy flips reach (and chains that may borrow below neutral ones),
-// never raise it, keep the mesh a valid disk, and undo every chain that finds no lowering flip.
+// never raise it, keep the mesh a valid disk, and undo every chain that finds no lowering flip. On a
+// grid large enough for several cubes (flip_blocks.hpp), the blocked flips give one result for any
+// number of threads, and cubes of one colour never share a two-ring.
 #include <isopatch/topology.hpp>
 
 #include <gtest/gtest.h>
@@ -10,7 +12,10 @@
 #include <random>
 #include <vector>
 
+#include <tbb/task_arena.h>
+
 #include "remesh/editable_mesh.hpp"
+#include "remesh/flip_blocks.hpp"
 #include "remesh/valence_flips.hpp"
 
 namespace isopatch {
@@ -158,6 +163,53 @@ TEST(ValenceFlips, ChainsWithoutALoweringFlipAreUndone) {
   EXPECT_GT(neutral_flips, 0);  // chains were tried
   EXPECT_EQ(valence_energy(m), energy);
   EXPECT_EQ(canonical_triangles(m), before);
+}
+
+/// The triangles as vertex triples in slot order: equal lists mean identical meshes (ids included).
+std::vector<std::array<std::uint32_t, 3>> raw_triangles(const EditableMesh& m) {
+  std::vector<std::array<std::uint32_t, 3>> out;
+  for (std::uint32_t t = 0; t < m.triangles.size(); ++t)
+    if (m.triangle_alive[t]) out.push_back(m.triangles[t]);
+  return out;
+}
+
+TEST(ValenceFlips, CubesOfOneColourNeverShareATwoRing) {
+  const EditableMesh m = scrambled_grid(64, 600, 3);
+  const FlipBlocks blocks = make_flip_blocks(m, flip_block_width(m), 0.0);
+  ASSERT_GT(blocks.members.size(), 8u);  // the blocked path, not one region
+  std::vector<int> colour(blocks.members.size(), -1);
+  for (int c = 0; c < 8; ++c)
+    for (std::uint32_t cube : blocks.colours[static_cast<std::size_t>(c)]) colour[cube] = c;
+  for (std::uint32_t v = 0; v < m.vertex_slots(); ++v) {
+    // Every vertex within two edges of v lies in v's cube or in a cube of another colour.
+    for (std::uint32_t t : m.incident[v])
+      for (std::uint32_t w : m.triangles[t])
+        for (std::uint32_t t2 : m.incident[w])
+          for (std::uint32_t x : m.triangles[t2]) {
+            const std::uint32_t a = blocks.block_of[v], b = blocks.block_of[x];
+            EXPECT_TRUE(a == b || colour[a] != colour[b]) << v << " and " << x;
+          }
+  }
+}
+
+TEST(ValenceFlips, BlockedFlipsGiveOneResultForAnyThreadCountAndStillLowerTheEnergy) {
+  for (unsigned seed = 21; seed <= 23; ++seed) {
+    const EditableMesh scrambled = scrambled_grid(64, 600, seed);
+    ASSERT_GT(make_flip_blocks(scrambled, flip_block_width(scrambled), 0.0).members.size(), 8u);
+    std::vector<std::vector<std::array<std::uint32_t, 3>>> results;
+    for (int threads : {1, 2, 4}) {
+      EditableMesh m = scrambled;
+      tbb::task_arena arena(threads);
+      arena.execute([&] { flip_towards_valence_six(m, planar_flip(m), GlideLimits{.max_debt = 2}); });
+      EXPECT_LT(valence_energy(m), valence_energy(scrambled)) << "seed " << seed;
+      const TopologyReport t = analyze_topology(m.to_mesh());
+      EXPECT_TRUE(t.manifold() && t.consistently_oriented());
+      EXPECT_EQ(t.euler_characteristic, 1);
+      results.push_back(raw_triangles(m));
+    }
+    EXPECT_EQ(results[0], results[1]) << "seed " << seed;
+    EXPECT_EQ(results[0], results[2]) << "seed " << seed;
+  }
 }
 
 TEST(ValenceFlips, EnergyChangeOfAFlipCountsTheFourVertices) {
