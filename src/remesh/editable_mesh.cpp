@@ -86,6 +86,7 @@ std::vector<std::uint32_t> EditableMesh::boundary_neighbours(std::uint32_t v) co
 std::vector<std::pair<std::uint32_t, std::uint32_t>> EditableMesh::edges() const {
   // Per vertex a, its larger neighbours b: sorted by (a, b) without sorting the whole list.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> list;
+  list.reserve(triangles.size() * 3 / 2 + 3);  // a closed mesh has 3/2 edges per triangle
   std::vector<std::uint32_t> larger;
   for (std::uint32_t a = 0; a < positions.size(); ++a) {
     larger.clear();
@@ -193,6 +194,16 @@ std::uint32_t EditableMesh::add_triangle(const Triangle& t) {
   return id;
 }
 
+void EditableMesh::reserve_splits(std::size_t splits) {
+  positions.reserve(positions.size() + splits);
+  normals.reserve(normals.size() + splits);
+  locked.reserve(locked.size() + splits);
+  incident.reserve(incident.size() + splits);
+  for (std::vector<float>& values : attributes) values.reserve(values.size() + splits);
+  triangles.reserve(triangles.size() + 2 * splits);
+  triangle_alive.reserve(triangle_alive.size() + 2 * splits);
+}
+
 std::uint32_t EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n) {
   const auto m = static_cast<std::uint32_t>(positions.size());
   positions.push_back(p);
@@ -245,6 +256,44 @@ void EditableMesh::flip(const Edge& e) {
   detach(e.a, e.t_ba);
   incident[e.d].push_back(e.t_ab);
   incident[e.c].push_back(e.t_ba);
+}
+
+std::vector<std::uint32_t> EditableMesh::compact() {
+  std::vector<std::uint32_t> vertex_id(positions.size(), kDeadSlot);
+  std::uint32_t vertices = 0;
+  for (std::uint32_t v = 0; v < positions.size(); ++v)
+    if (alive(v)) vertex_id[v] = vertices++;
+  std::vector<std::uint32_t> triangle_id(triangles.size(), kDeadSlot);
+  std::uint32_t kept = 0;
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    if (!triangle_alive[t]) continue;
+    triangle_id[t] = kept;
+    Triangle& tri = triangles[kept++];
+    tri = triangles[t];
+    for (std::uint32_t& v : tri) v = vertex_id[v];
+  }
+  triangles.resize(kept);
+  triangles.shrink_to_fit();
+  triangle_alive.assign(kept, true);
+  triangle_alive.shrink_to_fit();
+  // Per-vertex arrays moved down in place (a live vertex's new id is never above its old one).
+  const auto squeeze = [&](auto& values) {
+    for (std::uint32_t v = 0; v < values.size(); ++v)
+      if (vertex_id[v] != kDeadSlot && vertex_id[v] != v) values[vertex_id[v]] = std::move(values[v]);
+    values.resize(vertices);
+    values.shrink_to_fit();
+  };
+  for (std::vector<std::uint32_t>& list : incident)
+    for (std::uint32_t& t : list) t = triangle_id[t];
+  squeeze(incident);
+  squeeze(positions);
+  squeeze(normals);
+  for (std::uint32_t v = 0; v < locked.size(); ++v)
+    if (vertex_id[v] != kDeadSlot) locked[vertex_id[v]] = locked[v];
+  locked.resize(vertices);
+  locked.shrink_to_fit();
+  for (std::vector<float>& values : attributes) squeeze(values);
+  return vertex_id;
 }
 
 Mesh EditableMesh::to_mesh() const {

@@ -52,6 +52,8 @@ class EditableMesh {
   std::vector<std::vector<std::uint32_t>> ring_disjoint_classes(
       const std::vector<std::uint32_t>& vertices) const;
 
+  /// Room for `splits` more splits without reallocation (the slot arrays otherwise double).
+  void reserve_splits(std::size_t splits);
   /// Splits the edge at the new vertex (position p, normal n); returns its id. Attributes are copied
   /// from e.a.
   std::uint32_t split(const Edge& e, const Vec3& p, const Vec3& n);
@@ -63,6 +65,13 @@ class EditableMesh {
   void collapse_boundary(const BoundaryEdge& e);
   /// Replaces a-b by c-d.
   void flip(const Edge& e);
+
+  /// Drops the dead vertex and triangle slots, renumbering the live ones in their order (so to_mesh()
+  /// and every order-driven pass see the same mesh as before), keeps each incidence list's order, and
+  /// releases the spare capacity. Returns the new id of every old vertex slot (kDeadSlot for a dead
+  /// one), for the per-vertex data that callers hold.
+  std::vector<std::uint32_t> compact();
+  static constexpr std::uint32_t kDeadSlot = 0xffffffffu;
 
   std::size_t vertex_slots() const { return positions.size(); }
   bool alive(std::uint32_t v) const { return !incident[v].empty(); }

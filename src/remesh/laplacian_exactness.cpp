@@ -25,6 +25,25 @@ struct Frame {
   Frame() = default;
 };
 
+/// A frame kept in single precision for the sweeps' per-vertex cache: any orthonormal pair serves as a
+/// tangent frame, and the rounding only tilts it by 1e-7 (the same frame at every use within a sweep).
+struct CompactFrame {
+  std::array<float, 3> e1{}, e2{};
+  CompactFrame() = default;
+  explicit CompactFrame(const Frame& f) {
+    for (int c = 0; c < 3; ++c) {
+      e1[static_cast<std::size_t>(c)] = static_cast<float>(f.e1[c]);
+      e2[static_cast<std::size_t>(c)] = static_cast<float>(f.e2[c]);
+    }
+  }
+  Frame widen() const {
+    Frame f;
+    f.e1 = Vec3(static_cast<double>(e1[0]), static_cast<double>(e1[1]), static_cast<double>(e1[2]));
+    f.e2 = Vec3(static_cast<double>(e2[0]), static_cast<double>(e2[1]), static_cast<double>(e2[2]));
+    return f;
+  }
+};
+
 /// What one triangle adds at one corner: the cotangent-weighted second moment of the corner's two
 /// edges in the corner's tangent frame (m11, m12, m22) and the corner's mixed Voronoi area.
 struct MomentSums {
@@ -131,17 +150,20 @@ namespace {
 
 /// What one move works with (one per thread).
 struct Scratch {
-  std::vector<std::uint32_t> ring;               ///< u's neighbours and u
-  std::vector<std::size_t> corner_slot;          ///< [3 k + c]: ring index of corner c of u's k-th triangle
-  std::vector<MomentSums> ring_sums;             ///< the ring's sums with u at the trial position
-  std::vector<std::array<MomentSums, 3>> trial;  ///< corner sums of u's triangles at the last trial
+  std::vector<std::uint32_t> ring;                 ///< u's neighbours and u
+  std::vector<std::size_t> corner_slot;            ///< [3 k + c]: ring index of corner c of u's k-th triangle
+  std::vector<MomentSums> ring_sums;               ///< the ring's sums with u at the trial position
+  std::vector<std::array<MomentSums, 3>> trial;    ///< corner sums of u's triangles at the last trial
+  std::vector<std::array<Frame, 3>> frames;        ///< the frames of the corners of u's triangles
+  std::vector<std::array<MomentSums, 3>> current;  ///< corner sums of u's triangles as they are
   Eigen::VectorXd r0, r1;
   Eigen::VectorXd column[2];  ///< the Jacobian's columns (forward differences along e1, e2)
 };
 
-/// Gauss-Seidel sweeps with the moment sums of every vertex and every triangle corner cached: a trial
-/// position of u only recomputes u's triangles, once for all three corners, and adds the change to the
-/// cached sums of u and its neighbours.
+/// Gauss-Seidel sweeps with the moment sums of every vertex cached: a trial position of u only
+/// recomputes u's triangles, once for all three corners, and adds the change to the cached sums of u
+/// and its neighbours. The corners' current sums are recomputed once per move rather than cached per
+/// triangle (the same numbers, so the same result, without 96 bytes per triangle).
 class ExactnessSweeper {
  public:
   ExactnessSweeper(EditableMesh& mesh, const ExactnessMoveRules& rules)
@@ -175,18 +197,19 @@ class ExactnessSweeper {
   void refresh() {
     const std::size_t n = mesh_.vertex_slots();
     frame_.resize(n), sums_.assign(n, MomentSums{}), usable_.assign(n, true);
-    corner_.resize(mesh_.triangles.size());
     for (std::uint32_t v = 0; v < n; ++v)
-      if (mesh_.alive(v)) frame_[v] = Frame(mesh_.normals[v]);
+      if (mesh_.alive(v)) frame_[v] = CompactFrame(Frame(mesh_.normals[v]));
     for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
       if (!mesh_.triangle_alive[t]) continue;
       const Triangle& tri = mesh_.triangles[t];
+      std::array<MomentSums, 3> corner;
+      const Frame frames[3] = {frame_[tri[0]].widen(), frame_[tri[1]].widen(), frame_[tri[2]].widen()};
       if (!triangle_sums({&mesh_.positions[tri[0]], &mesh_.positions[tri[1]], &mesh_.positions[tri[2]]},
-                         {&frame_[tri[0]], &frame_[tri[1]], &frame_[tri[2]]}, corner_[t])) {
+                         {&frames[0], &frames[1], &frames[2]}, corner)) {
         for (std::uint32_t v : tri) usable_[v] = false;
         continue;
       }
-      for (std::size_t c = 0; c < 3; ++c) sums_[tri[c]] += corner_[t][c];
+      for (std::size_t c = 0; c < 3; ++c) sums_[tri[c]] += corner[c];
     }
   }
 
@@ -205,11 +228,11 @@ class ExactnessSweeper {
       const Triangle& tri = mesh_.triangles[t];
       if (!triangle_sums({&position(mesh_, tri[0], u, q), &position(mesh_, tri[1], u, q),
                           &position(mesh_, tri[2], u, q)},
-                         {&frame_[tri[0]], &frame_[tri[1]], &frame_[tri[2]]}, trial[k]))
+                         {&s.frames[k][0], &s.frames[k][1], &s.frames[k][2]}, trial[k]))
         return false;
       for (std::size_t c = 0; c < 3; ++c) {
         MomentSums& sum = ring_sums[corner_slot[3 * k + c]];
-        sum -= corner_[t][c];
+        sum -= s.current[k][c];
         sum += trial[k][c];
       }
     }
@@ -220,27 +243,34 @@ class ExactnessSweeper {
   }
 
   /// ring: u's neighbours and u; corner_slot[3 k + c]: the ring index of corner c of u's k-th
-  /// triangle.
-  void collect_ring(std::uint32_t u, Scratch& s) const {
+  /// triangle; the frames and current corner sums of u's triangles. False when one is degenerate.
+  bool collect_ring(std::uint32_t u, Scratch& s) const {
     std::vector<std::uint32_t>& ring = s.ring;
     std::vector<std::size_t>& corner_slot = s.corner_slot;
     ring.clear();
-    corner_slot.resize(3 * mesh_.incident[u].size());
-    for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) {
+    const std::size_t triangles = mesh_.incident[u].size();
+    corner_slot.resize(3 * triangles);
+    s.frames.resize(triangles);
+    s.current.resize(triangles);
+    for (std::size_t k = 0; k < triangles; ++k) {
       const Triangle& tri = mesh_.triangles[mesh_.incident[u][k]];
       for (std::size_t c = 0; c < 3; ++c) {
+        s.frames[k][c] = frame_[tri[c]].widen();
         const auto found = std::find(ring.begin(), ring.end(), tri[c]);
         corner_slot[3 * k + c] = static_cast<std::size_t>(found - ring.begin());
         if (found == ring.end()) ring.push_back(tri[c]);
       }
+      if (!triangle_sums({&mesh_.positions[tri[0]], &mesh_.positions[tri[1]], &mesh_.positions[tri[2]]},
+                         {&s.frames[k][0], &s.frames[k][1], &s.frames[k][2]}, s.current[k]))
+        return false;
     }
+    return true;
   }
 
   bool move(std::uint32_t u, Scratch& s) {
-    collect_ring(u, s);
+    if (!collect_ring(u, s)) return false;
     const std::vector<std::uint32_t>& ring = s.ring;
     std::vector<MomentSums>& ring_sums = s.ring_sums;
-    const std::vector<std::array<MomentSums, 3>>& trial = s.trial;
     Eigen::VectorXd &r0 = s.r0, &r1 = s.r1;
     Eigen::VectorXd* column = s.column;
     ring_sums.resize(ring.size());
@@ -252,7 +282,7 @@ class ExactnessSweeper {
     const double before = r0.squaredNorm();
     const Vec3 p = mesh_.positions[u];
     const Vec3 n = mesh_.normals[u];
-    const Frame& f = frame_[u];
+    const Frame f = frame_[u].widen();
     const double h = rules_.size(u);
     const double delta = 1e-4 * h;
     for (int k = 0; k < 2; ++k) {
@@ -286,8 +316,7 @@ class ExactnessSweeper {
       mesh_.positions[u] = q;
       mesh_.normals[u] = nq;
       for (std::size_t i = 0; i < ring.size(); ++i) sums_[ring[i]] = ring_sums[i];
-      for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) corner_[mesh_.incident[u][k]] = trial[k];
-      return true;
+      for (std::size_t k = 0; k < mesh_.incident[u].size(); ++k) return true;
     }
     return false;
   }
@@ -302,10 +331,9 @@ class ExactnessSweeper {
   EditableMesh& mesh_;
   const ExactnessMoveRules& rules_;
   double floor_cosine_;
-  std::vector<Frame> frame_;      ///< per vertex slot: tangent frame of its normal at the sweep's start
-  std::vector<MomentSums> sums_;  ///< per vertex slot: moment sums in that frame
-  std::vector<bool> usable_;      ///< per vertex slot: no degenerate triangle around it
-  std::vector<std::array<MomentSums, 3>> corner_;    ///< per triangle slot: the sums at each corner
+  std::vector<CompactFrame> frame_;  ///< per vertex slot: tangent frame of its normal at the sweep's start
+  std::vector<MomentSums> sums_;     ///< per vertex slot: moment sums in that frame
+  std::vector<bool> usable_;         ///< per vertex slot: no degenerate triangle around it
   std::vector<std::vector<std::uint32_t>> classes_;  ///< free vertices, by classes of disjoint rings
   tbb::enumerable_thread_specific<Scratch> scratch_;
 };

@@ -80,7 +80,10 @@ class Remesher {
     for (int it = 0; it < settings_.iterations; ++it) {
       timed("cleanup_split", [&] { split_long_edges(); });
       timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
-      timed("cleanup_collapse", [&] { collapse_short_edges(); });
+      timed("cleanup_collapse", [&] {
+        collapse_short_edges();
+        compact();  // the collapses' dead slots go before the flips and sweeps walk the slots
+      });
       timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
       timed("cleanup_flip", [&] { flip_valences(); });
       timed("cleanup_relax", [&] { relax(); });
@@ -100,6 +103,8 @@ class Remesher {
     // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
     // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     timed("cleanup_relax", [&] { relax(settings_.final_relaxation_rounds); });
+    // The rounds of splits and collapses left dead slots behind: the sweeps cache data per slot.
+    compact();
     if (settings_.curvature_sweeps > 0) {
       const ExactnessMoveRules rules{
           .project = [this](Vec3& p, Vec3& n, double max_step) { return project(p, n, max_step); },
@@ -156,6 +161,17 @@ class Remesher {
   }
 
  private:
+  /// Drops the mesh's dead slots (EditableMesh::compact) and renumbers the per-vertex data held here.
+  void compact() {
+    const std::vector<std::uint32_t> new_id = mesh_.compact();
+    sizes_.renumber(new_id);
+    if (slide_axis_.empty()) return;
+    std::vector<int> axes(mesh_.vertex_slots(), -1);
+    for (std::uint32_t v = 0; v < slide_axis_.size() && v < new_id.size(); ++v)
+      if (new_id[v] != EditableMesh::kDeadSlot) axes[new_id[v]] = slide_axis_[v];
+    slide_axis_ = std::move(axes);
+  }
+
   /// Runs `pass`, adding its wall time to stage `name` of the statistics; returns what it returns.
   template <class Pass>
   std::invoke_result_t<Pass> timed(const char* name, Pass pass) {
@@ -243,6 +259,7 @@ class Remesher {
       if (l > kSplitFactor * sizes_.edge(a, b)) work.push_back({-l, {a, b}});
     }
     std::sort(work.begin(), work.end());
+    mesh_.reserve_splits(work.size());
     for (const auto& [key, edge] : work) try_split(edge.first, edge.second);
   }
 

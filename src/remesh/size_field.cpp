@@ -47,4 +47,20 @@ void SizeField::update(const EditableMesh& mesh) {
   }
 }
 
+void SizeField::renumber(const std::vector<std::uint32_t>& new_id) {
+  const auto squeeze = [&](auto& values) {
+    std::size_t size = 0;
+    for (std::uint32_t v = 0; v < values.size() && v < new_id.size(); ++v)
+      if (new_id[v] != EditableMesh::kDeadSlot) {
+        values[new_id[v]] = values[v];
+        size = std::max<std::size_t>(size, new_id[v] + 1);
+      }
+    values.resize(size);
+    values.shrink_to_fit();
+  };
+  squeeze(raw_);
+  squeeze(raw_at_);
+  squeeze(graded_);
+}
+
 }  // namespace isopatch

@@ -23,6 +23,8 @@ class SizeField {
   /// and computed for new slots). Afterwards at(v) is defined for every live v.
   void update(const EditableMesh& mesh);
   double at(std::uint32_t v) const { return graded_[v]; }
+  /// Follows EditableMesh::compact(): `new_id[v]` is the new slot of old slot v (kDeadSlot: dropped).
+  void renumber(const std::vector<std::uint32_t>& new_id);
   /// Target length of the edge a-b: the smaller of its ends' sizes.
   double edge(std::uint32_t a, std::uint32_t b) const { return std::min(graded_[a], graded_[b]); }
   std::uint64_t hessian_evaluations() const { return hessians_; }

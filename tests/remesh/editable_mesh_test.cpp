@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "remesh/editable_mesh.hpp"
 
 namespace isopatch {
@@ -82,6 +84,40 @@ TEST(EditableMesh, CollapseRemovesOneVertexAndTwoTriangles) {
   EXPECT_EQ(out.vertex_count(), 6u);
   EXPECT_EQ(out.triangle_count(), 8u);
   expect_closed_sphere(out);
+}
+
+TEST(EditableMesh, CompactDropsDeadSlotsAndKeepsTheMeshAndItsOrder) {
+  EditableMesh m = editable(octahedron());
+  m.attribute_names.push_back("id");
+  m.attributes.push_back({0, 1, 2, 3, 4, 5});
+  // Split two edges, then collapse one of the new vertices away: dead vertex and triangle slots.
+  const std::uint32_t a = m.split(*m.interior_edge(0, 2), Vec3(0.7, 0.7, 0), Vec3(0.7, 0.7, 0).normalized());
+  m.split(*m.interior_edge(1, 3), Vec3(-0.7, -0.7, 0), Vec3(-0.7, -0.7, 0).normalized());
+  m.collapse(*m.interior_edge(a, 0), Vec3(1, 0, 0), Vec3(1, 0, 0));
+  const Mesh before = m.to_mesh();
+  const std::size_t slots = m.vertex_slots(), triangle_slots = m.triangles.size();
+  const std::vector<std::uint32_t> new_id = m.compact();
+  ASSERT_EQ(new_id.size(), slots);
+  EXPECT_EQ(new_id[a], EditableMesh::kDeadSlot);
+  EXPECT_LT(m.vertex_slots(), slots);
+  EXPECT_LT(m.triangles.size(), triangle_slots);
+  std::uint32_t next = 0;  // live slots keep their order
+  for (std::uint32_t v = 0; v < slots; ++v)
+    if (new_id[v] != EditableMesh::kDeadSlot) {
+      EXPECT_EQ(new_id[v], next++);
+    }
+  EXPECT_EQ(next, m.vertex_slots());
+  const Mesh after = m.to_mesh();
+  EXPECT_EQ(after.positions, before.positions);
+  EXPECT_EQ(after.triangles, before.triangles);
+  ASSERT_EQ(after.attributes.size(), 1u);
+  EXPECT_EQ(after.attributes[0].values, before.attributes[0].values);
+  for (std::uint32_t v = 0; v < m.vertex_slots(); ++v)  // the incidence follows the new ids
+    for (std::uint32_t t : m.incident[v]) {
+      ASSERT_LT(t, m.triangles.size());
+      EXPECT_NE(std::find(m.triangles[t].begin(), m.triangles[t].end(), v), m.triangles[t].end());
+    }
+  expect_closed_sphere(after);
 }
 
 TEST(EditableMesh, BoundaryVerticesAreLockedAndAttributesFollow) {
