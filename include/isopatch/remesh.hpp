@@ -61,7 +61,8 @@ struct RemeshSettings {
   int iterations = 4;
   /// The preview's local repair instead of the rounds (iterations > 0 still required): short edges
   /// collapsed, small angles repaired, valences flipped, and only the vertices within two rings of a
-  /// defect relaxed; no curvature sweeps or valence search. Cost in proportion to the defects.
+  /// defect relaxed, one sweep of borrowing chains with valence_search flips each; no
+  /// curvature sweeps. Cost in proportion to the defects.
   bool local_only = false;
   /// Relaxation-only rounds over the whole mesh once connectivity is final (not with local_only), 0..100
   /// (docs/whole-surface-quality.md: 8 lower the mean-curvature error by 10-45% for about a fifth more

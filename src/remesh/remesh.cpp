@@ -147,7 +147,7 @@ class Remesher {
     timed("cleanup_repair", [&] { repair_until_settled(); });
     if (settings_.valence_search > 0)
       timed("cleanup_valence_search", [&] {
-        flip_valences(GlideLimits{.budget = settings_.valence_search, .passes = 2, .max_debt = 2});
+        flip_valences(GlideLimits{.budget = settings_.valence_search, .passes = 1, .max_debt = 2});
       });
     timed("cleanup_relax", [&] { relax(work, kLocalRelaxationRounds); });
     timed("cleanup_repair", [&] { repair_until_settled(); });
