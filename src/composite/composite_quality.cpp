@@ -82,6 +82,9 @@ CompositeQuality measure_composite_mesh(const Composite& composite, const Compos
   }
 
   double seam_sum = 0.0, patch_sum = 0.0;
+  std::vector<double> patch_jump(composite.patches.size(), 0.0);
+  std::vector<std::size_t> patch_count(composite.patches.size(), 0);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, std::size_t>> seam_jump;
   for (const auto& [edge, triangles] : edge_triangles) {
     if (triangles.size() != 2) continue;
     const auto normal = [&](std::size_t t) {
@@ -91,13 +94,27 @@ CompositeQuality measure_composite_mesh(const Composite& composite, const Compos
     const double length = (pos[edge.first] - pos[edge.second]).norm();
     if (!(length > 0.0)) continue;
     const double jump = angle_degrees(normal(triangles[0]), normal(triangles[1])) / length;
-    if (m.triangle_patch[triangles[0]] != m.triangle_patch[triangles[1]]) {
+    const std::uint32_t a = m.triangle_patch[triangles[0]], b = m.triangle_patch[triangles[1]];
+    if (a != b) {
       seam_sum += jump;
       ++q.seam_edges;
+      auto& [sum, count] = seam_jump[{std::min(a, b), std::max(a, b)}];
+      sum += jump;
+      ++count;
     } else {
       patch_sum += jump;
       ++q.patch_edges;
+      patch_jump[a] += jump;
+      ++patch_count[a];
     }
+  }
+  const double floor = 1.0 / diagonal;
+  for (const auto& [pair, jumps] : seam_jump) {
+    const auto mean = [&](std::uint32_t p) {
+      return patch_count[p] ? patch_jump[p] / static_cast<double>(patch_count[p]) : 0.0;
+    };
+    const double own = std::max({mean(pair.first), mean(pair.second), floor});
+    q.worst_seam_ratio = std::max(q.worst_seam_ratio, jumps.first / static_cast<double>(jumps.second) / own);
   }
   q.seam_normal_jump = q.seam_edges ? seam_sum / static_cast<double>(q.seam_edges) : 0.0;
   q.patch_normal_jump = q.patch_edges ? patch_sum / static_cast<double>(q.patch_edges) : 0.0;

@@ -52,15 +52,17 @@ TEST_P(SphereComposites, MeshesWatertightOnTheSphereWithGoodTrianglesInsidePatch
   const CompositeQuality q = measure_composite_mesh(*c, m);
   std::printf(
       "%s: %zu vertices, patch valence 6 %.3f, patch min angle %.1f, min angle %.1f, distance %.2g, "
-      "normal jump seam %.3f patch %.3f deg/unit, seam gradient angle %.2g deg\n",
+      "normal jump seam %.3f patch %.3f deg/unit (worst seam %.2f), seam gradient angle %.2g deg\n",
       GetParam().name, m.mesh.vertex_count(), q.patch_valence_6, q.patch_min_angle, q.min_angle,
-      q.max_relative_distance, q.seam_normal_jump, q.patch_normal_jump, q.seam_gradient_angle);
+      q.max_relative_distance, q.seam_normal_jump, q.patch_normal_jump, q.worst_seam_ratio,
+      q.seam_gradient_angle);
   EXPECT_GE(q.patch_valence_6, 0.90);
   EXPECT_GE(q.patch_min_angle, 20.0);
   // The composite is exactly the sphere, so the normal turns across seams as it does inside patches.
   EXPECT_LT(q.seam_gradient_angle, 1e-5);
   EXPECT_GT(q.seam_edges, 0u);
   EXPECT_LT(q.seam_normal_jump, 2.0 * q.patch_normal_jump);
+  EXPECT_LT(q.worst_seam_ratio, 1.5);
   EXPECT_GT(q.seam_normal_jump, 0.5 * q.patch_normal_jump);
 }
 
@@ -114,6 +116,21 @@ INSTANTIATE_TEST_SUITE_P(Composites, SphereComposites,
                          ::testing::Values(Case{"octahedron", &test::octahedron_sphere, 1.0},
                                            Case{"cube", &test::cube_sphere, std::sqrt(3.0)}),
                          [](const auto& param_info) { return std::string(param_info.param.name); });
+
+TEST(CompositeMesher, SeamMeasureTellsACreaseFromASmoothSeam) {
+  const auto c = test::creased_cube();
+  Settings s;
+  s.edge_length = 0.1;
+  const CompositeMesh m = mesh_composite_projection(*c, s);
+  const TopologyReport t = analyze_topology(m.mesh);
+  EXPECT_TRUE(t.watertight());
+  EXPECT_EQ(t.genus, 0);
+  const CompositeQuality q = measure_composite_mesh(*c, m);
+  EXPECT_LE(q.max_relative_distance, 1e-12);
+  EXPECT_NEAR(q.patch_normal_jump, 0.0, 1e-6);  // flat faces
+  EXPECT_GT(q.worst_seam_ratio, 100.0);         // 90 degrees over an edge, against 1 degree over the box
+  EXPECT_GT(q.seam_gradient_angle, 89.0);
+}
 
 TEST(CompositeMesher, RefusesInconsistentTopology) {
   auto c = test::octahedron_sphere();

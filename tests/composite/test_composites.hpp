@@ -57,6 +57,29 @@ inline std::shared_ptr<Composite> inscribed_sphere_composite(const std::vector<V
   return c;
 }
 
+/// The cube [-1, 1]^3 itself as six planar patches in the same pyramids: straight edges, 90 degree
+/// creases at every seam (not G1), for the measures that must tell a crease from a smooth seam.
+inline std::shared_ptr<Composite> creased_cube() {
+  std::vector<Vec3> v;
+  for (int i = 0; i < 8; ++i) v.emplace_back(i & 4 ? 1 : -1, i & 2 ? 1 : -1, i & 1 ? 1 : -1);
+  const std::vector<std::vector<int>> f{{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                        {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  auto c = inscribed_sphere_composite(v, f, "creased cube");
+  for (ConicArc& a : c->curves) {
+    a.control = 0.5 * (a.start + a.end);
+    a.weight = 1.0;
+  }
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    Vec3 n = Vec3::Zero();
+    for (const int i : f[k]) n += v[static_cast<std::size_t>(i)];
+    n /= 4.0;
+    c->patches[k].surface = make_surface(
+        [=](auto x, auto y, auto z) { return n.x() * x + n.y() * y + n.z() * z - 1.0; }, c->box, "face");
+    for (Vec3& d : c->patches[k].corner_directions) d = n;
+  }
+  return c;
+}
+
 inline std::shared_ptr<Composite> octahedron_sphere() {
   const std::vector<Vec3> v{{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   // Counter-clockwise seen from outside.
