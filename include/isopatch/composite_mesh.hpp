@@ -38,6 +38,13 @@ class CompositeModel {
   SurfacePtr surface_;
 };
 
+/// Reads a `.ipatch` file (docs/ipatch.md): a control polyhedron, or a solid with setback vertex blends.
+/// \throw IoError when it cannot be read; InputError "<file>:<line>:<column>: <what>" for malformed
+///        text or topology, "<file>: <what>" for geometry the construction refuses.
+CompositeModel read_composite(const std::string& path);
+/// The same for text in memory; `source_name` names it in errors. \throw InputError as read_composite.
+CompositeModel parse_composite(std::string_view text, std::string_view source_name);
+
 /// Whether `path` names a composite file (it ends in ".ipatch").
 bool is_composite_path(std::string_view path);
 

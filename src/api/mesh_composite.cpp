@@ -12,6 +12,7 @@
 #include "api/budgeted_composite.hpp"
 #include "composite/composite_mesher.hpp"
 #include "ipatch/composite_surface.hpp"
+#include "ipatch/ipatch_file.hpp"
 
 namespace isopatch {
 
@@ -20,6 +21,14 @@ CompositeModel::CompositeModel(std::shared_ptr<const Composite> composite)
 
 std::size_t CompositeModel::patch_count() const {
   return composite_->patches.size();
+}
+
+CompositeModel read_composite(const std::string& path) {
+  return CompositeModel(std::make_shared<const Composite>(read_ipatch(path)));
+}
+
+CompositeModel parse_composite(std::string_view text, std::string_view source_name) {
+  return CompositeModel(std::make_shared<const Composite>(parse_ipatch(text, source_name)));
 }
 
 bool is_composite_path(std::string_view path) {

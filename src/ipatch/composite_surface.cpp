@@ -41,16 +41,30 @@ double CompositeSurface::region_depth(std::size_t k, const Vec3& p) const {
 }
 
 std::size_t CompositeSurface::patch_at(const Vec3& p) const {
-  std::size_t best = 0;
-  double best_depth = -std::numeric_limits<double>::infinity();
+  // Regions may overlap far from the surface (prisms perpendicular to a face hold the opposite face
+  // too), so among the regions that hold p the patch whose zero set is nearest wins; the deepest
+  // region only where none holds p.
+  std::size_t deepest = 0;
+  double deepest_depth = -std::numeric_limits<double>::infinity();
+  std::size_t nearest = composite_->patches.size();
+  double nearest_distance = std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < composite_->patches.size(); ++k) {
     const double d = region_depth(k, p);
-    if (d > best_depth) {
-      best = k;
-      best_depth = d;
+    if (d > deepest_depth) {
+      deepest = k;
+      deepest_depth = d;
+    }
+    if (!(d >= 0.0)) continue;
+    const ValueGradient vg = composite_->patches[k].surface->value_gradient(p);
+    const double g = vg.gradient.norm();
+    double distance = std::abs(vg.value) / g;
+    if (!std::isfinite(distance)) distance = std::numeric_limits<double>::infinity();
+    if (distance < nearest_distance || nearest == composite_->patches.size()) {
+      nearest = k;
+      nearest_distance = distance;
     }
   }
-  return best;
+  return nearest < composite_->patches.size() ? nearest : deepest;
 }
 
 double CompositeSurface::value(const Vec3& p) const {
