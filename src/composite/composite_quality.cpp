@@ -3,6 +3,7 @@
 #include "composite/composite_quality.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -81,40 +82,49 @@ CompositeQuality measure_composite_mesh(const Composite& composite, const Compos
         q.seam_gradient_angle = std::max(q.seam_gradient_angle, angle_degrees(gradients[0], gradients[i]));
   }
 
-  double seam_sum = 0.0, patch_sum = 0.0;
-  std::vector<double> patch_jump(composite.patches.size(), 0.0);
-  std::vector<std::size_t> patch_count(composite.patches.size(), 0);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::pair<double, std::size_t>> seam_jump;
+  // The jump at every edge with two triangles, in degrees per unit length.
+  const auto normal = [&](std::size_t t) {
+    const Triangle& tri = m.mesh.triangles[t];
+    return Vec3((pos[tri[1]] - pos[tri[0]]).cross(pos[tri[2]] - pos[tri[0]]));
+  };
+  std::map<std::pair<std::uint32_t, std::uint32_t>, double> jump_at;
   for (const auto& [edge, triangles] : edge_triangles) {
-    if (triangles.size() != 2) continue;
-    const auto normal = [&](std::size_t t) {
-      const Triangle& tri = m.mesh.triangles[t];
-      return Vec3((pos[tri[1]] - pos[tri[0]]).cross(pos[tri[2]] - pos[tri[0]]));
-    };
     const double length = (pos[edge.first] - pos[edge.second]).norm();
-    if (!(length > 0.0)) continue;
-    const double jump = angle_degrees(normal(triangles[0]), normal(triangles[1])) / length;
+    if (triangles.size() != 2 || !(length > 0.0)) continue;
+    jump_at[edge] = angle_degrees(normal(triangles[0]), normal(triangles[1])) / length;
+  }
+  double seam_sum = 0.0, patch_sum = 0.0;
+  // Per pair of patches: the jumps across their seam, and those at the patch edges next to it (the
+  // other edges of the two triangles at each seam edge), which see the surface's own turning there.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::array<double, 4>> seams;  // sum, n, near sum, near n
+  for (const auto& [edge, jump] : jump_at) {
+    const auto& triangles = edge_triangles.at(edge);
     const std::uint32_t a = m.triangle_patch[triangles[0]], b = m.triangle_patch[triangles[1]];
-    if (a != b) {
-      seam_sum += jump;
-      ++q.seam_edges;
-      auto& [sum, count] = seam_jump[{std::min(a, b), std::max(a, b)}];
-      sum += jump;
-      ++count;
-    } else {
+    if (a == b) {
       patch_sum += jump;
       ++q.patch_edges;
-      patch_jump[a] += jump;
-      ++patch_count[a];
+      continue;
     }
+    seam_sum += jump;
+    ++q.seam_edges;
+    auto& seam = seams[{std::min(a, b), std::max(a, b)}];
+    seam[0] += jump;
+    seam[1] += 1.0;
+    for (const std::size_t t : triangles)
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::uint32_t u = m.mesh.triangles[t][i], v = m.mesh.triangles[t][(i + 1) % 3];
+        const auto other = jump_at.find({std::min(u, v), std::max(u, v)});
+        if (other == jump_at.end() || other->first == edge) continue;
+        const auto& ts = edge_triangles.at(other->first);
+        if (m.triangle_patch[ts[0]] != m.triangle_patch[ts[1]]) continue;
+        seam[2] += other->second;
+        seam[3] += 1.0;
+      }
   }
   const double floor = 1.0 / diagonal;
-  for (const auto& [pair, jumps] : seam_jump) {
-    const auto mean = [&](std::uint32_t p) {
-      return patch_count[p] ? patch_jump[p] / static_cast<double>(patch_count[p]) : 0.0;
-    };
-    const double own = std::max({mean(pair.first), mean(pair.second), floor});
-    q.worst_seam_ratio = std::max(q.worst_seam_ratio, jumps.first / static_cast<double>(jumps.second) / own);
+  for (const auto& [pair, seam] : seams) {
+    const double near = seam[3] > 0.0 ? seam[2] / seam[3] : 0.0;
+    q.worst_seam_ratio = std::max(q.worst_seam_ratio, seam[0] / seam[1] / std::max(near, floor));
   }
   q.seam_normal_jump = q.seam_edges ? seam_sum / static_cast<double>(q.seam_edges) : 0.0;
   q.patch_normal_jump = q.patch_edges ? patch_sum / static_cast<double>(q.patch_edges) : 0.0;

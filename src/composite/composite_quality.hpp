@@ -27,9 +27,10 @@ struct CompositeQuality {
   double seam_normal_jump = 0.0;
   double patch_normal_jump = 0.0;
   /// The worst seam: over every pair of neighbouring patches, the mean jump across their seam over the
-  /// larger of the two patches' own mean jumps (at least 1 degree over the box diagonal, so that flat
-  /// patches meeting in a plane compare). About 1 or less where the patches meet with G1 continuity; a
-  /// crease gives the angle over the edge length, far more.
+  /// mean jump at the patch edges beside it (the other edges of the two triangles at each seam edge;
+  /// at least 1 degree over the box diagonal, so that flat patches meeting in a plane compare). About 1
+  /// where the patches meet with G1 continuity at the mesh's scale; a crease, or a turn within a band
+  /// narrower than an edge, gives far more.
   double worst_seam_ratio = 0.0;
   /// Largest angle between the gradients of the two patches meeting at a curve sample (corners left
   /// out, where I-patch functions are 0/0), degrees: 0 for G1 patches.
