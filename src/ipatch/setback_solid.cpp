@@ -4,6 +4,7 @@
 
 #include "ipatch/composite_checks.hpp"
 #include "ipatch/ipatch_surface.hpp"
+#include "ipatch/patch_validity.hpp"
 #include "ipatch/quadric.hpp"
 
 #include <isopatch/error.hpp>
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <tuple>
 
 namespace isopatch {
@@ -59,19 +61,43 @@ bool meet(const Vec3& u, const Vec3& v, const Vec3& w, double& t, double& s) {
   return true;
 }
 
-/// The vertex blend's reference point: the centroid of its corners when every bound is positive and
-/// every ribbon negative there, else the first such point on the way from it to the vertex (tenths);
-/// the centroid when none is (rule_a_weights then reports why).
-Vec3 reference_point(const std::vector<SurfacePtr>& ribbons, const std::vector<SurfacePtr>& bounds,
-                     const Vec3& centroid, const Vec3& vertex) {
-  for (int k = 0; k < 10; ++k) {
-    const Vec3 c = centroid + (k / 10.0) * (vertex - centroid);
+/// The vertex blend's weights: reference points from the centroid of its corners outward along the
+/// mean face normal m (steps of 4% of the patch size, up to 40%), each with every bound positive and
+/// every ribbon negative, scored by the lines of measure_patch (fewest that meet the patch twice, then
+/// the least bulge above a face plane); the first best wins. A steep apex needs the outward shift:
+/// through the centroid its patch dips and grows an extra sheet.
+IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<SurfacePtr>& ribbons,
+                             const std::vector<ConicArc>& curves, const Box& box, const Vec3& centroid,
+                             const Vec3& m, double size) {
+  Composite trial;
+  trial.box = box;
+  trial.curves = curves;
+  std::optional<IPatchWeights> best;
+  PatchShape best_shape;
+  ValidityOptions quick;
+  quick.lines_per_axis = 10;
+  quick.steps_per_line = 120;
+  for (int k = 0; k <= 10; ++k) {
+    const Vec3 c = centroid + (0.04 * k * size) * m;
     bool ok = true;
-    for (std::size_t i = 0; i < ribbons.size() && ok; ++i)
-      ok = bounds[i]->value(c) > 0.0 && ribbons[i]->value(c) < 0.0;
-    if (ok) return c;
+    for (std::size_t i = 0; i < ribbons.size() && ok; ++i) {
+      ok = patch.bounds[i]->value(c) > 0.0 && ribbons[i]->value(c) < 0.0;
+    }
+    if (!ok) continue;
+    IPatchWeights w = rule_a_weights(ribbons, patch.bounds, c, {}, patch.name);
+    CompositePatch candidate = patch;
+    candidate.surface = std::make_shared<IPatchSurface>(patch.name, box, ribbons, patch.bounds, w);
+    trial.patches = {candidate};
+    const PatchShape shape = measure_patch(trial, 0, quick);
+    if (!best || shape.multi_root_lines < best_shape.multi_root_lines ||
+        (shape.multi_root_lines == best_shape.multi_root_lines &&
+         shape.bulge < best_shape.bulge - 1e-12 * size)) {
+      best = w;
+      best_shape = shape;
+    }
   }
-  return centroid;
+  if (!best) return rule_a_weights(ribbons, patch.bounds, centroid, {}, patch.name);  // throws, saying why
+  return *best;
 }
 
 }  // namespace
@@ -307,8 +333,12 @@ Composite build_setback_solid(const SetbackSolid& solid) {
       centre += pc.corner.at({v, w, before}) + pc.corner.at({v, w, f});
     }
     centre /= static_cast<double>(2 * n);
-    const Vec3 reference = reference_point(ribbons, patch.bounds, centre, pv);
-    IPatchWeights weights = rule_a_weights(ribbons, patch.bounds, reference, {}, patch.name);
+    Vec3 m = Vec3::Zero();
+    double size = 0.0;
+    for (Id f : fan.faces) m += normal(f);
+    for (const PatchSide& s : patch.sides) size = std::max(size, (pc.curves[s.curve].start - centre).norm());
+    IPatchWeights weights =
+        choose_weights(patch, ribbons, pc.curves, out.box, centre, m.normalized(), 2.0 * size);
     patch.surface =
         std::make_shared<IPatchSurface>(patch.name, out.box, ribbons, patch.bounds, std::move(weights));
     out.patches.push_back(std::move(patch));
