@@ -283,6 +283,8 @@ CompositeMesh mesh_composite_projection(const Composite& c, const Settings& sett
     ps.side_segments_min = segments.empty() ? 0 : *lo;
     ps.side_segments_max = segments.empty() ? 0 : *hi;
     stats->projection = ps;
+    stats->warnings.fan_patches = ps.fallback_cells;
+    stats->warnings.unprojected_fan_centres = ps.unprojected_vertices;
     for (const auto& s : samplers) {
       stats->value_evaluations += s->value_count();
       stats->gradient_evaluations += s->gradient_count();
