@@ -17,7 +17,7 @@ mkdir -p "$out"
 tmp="$(mktemp -d)"
 trap 'rm -rf "$tmp"' EXIT
 
-size=400x400; edge=0.06; grid=90; box_edge=0.04; box_grid=110
+size=400x400; edge=0.06; grid=102; box_edge=0.04; box_grid=70
 if [ "$small" = 1 ]; then size=160x160; edge=0.3; grid=16; box_edge=0.25; box_grid=20; fi
 composite=examples/pulled_box.ipatch
 setback=examples/rounded_box.ipatch
