@@ -209,7 +209,11 @@ Parsed parse_lines(std::string_view text, const Reader& r, std::string source) {
       deferred.push_back({&l});
     } else if (key == "name") {
       if (l.tokens.size() < 2) r.token(l, 1, "name");
-      p.name = std::string(l.tokens[1].text);
+      p.name.clear();
+      for (std::size_t t = 1; t < l.tokens.size(); ++t) {
+        if (t > 1) p.name.push_back(' ');
+        p.name.append(l.tokens[t].text);
+      }
     } else if (key == "solid") {
       r.expect_word(l, 1, "box");
       if (p.solid_box || !p.mesh.vertices.empty())

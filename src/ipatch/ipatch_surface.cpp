@@ -190,7 +190,42 @@ T IPatchSurface::evaluate(const Vec3& p) const {
 }
 
 double IPatchSurface::value(const Vec3& p) const {
-  return evaluate<double>(p);
+  // The same arithmetic as evaluate<double>, without heap allocations for n <= 32 (the hot path of
+  // projection, sampling and the validity check).
+  const std::size_t n = ribbons_.size();
+  constexpr std::size_t kStack = 32;
+  double stack[5 * (kStack + 1)];
+  std::vector<double> heap;
+  double* buffer = stack;
+  if (n > kStack) {
+    heap.resize(5 * (n + 1));
+    buffer = heap.data();
+  }
+  double* r = buffer;
+  double* b = r + (n + 1);
+  double* squares = b + (n + 1);
+  double* prefix = squares + (n + 1);
+  double* suffix = prefix + (n + 1);
+  for (std::size_t i = 0; i < n; ++i) {
+    r[i] = ribbons_[i]->value(p);
+    b[i] = bounds_[i]->value(p);
+    squares[i] = b[i] * b[i];
+  }
+  prefix[0] = 1.0;
+  suffix[n] = 1.0;
+  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] * squares[k];
+  for (std::size_t k = n; k-- > 0;) suffix[k] = squares[k] * suffix[k + 1];
+  double numerator = weights_.w0 * prefix[n], denominator = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double others = prefix[i] * suffix[i + 1];
+    numerator += weights_.w[i] * (r[i] * others);
+    denominator += weights_.w[i] * others;
+  }
+  if (denominator > 0.0) {
+    const double q = numerator / denominator;
+    if (std::isfinite(q)) return q;
+  }
+  return evaluate<double>(p);  // the 0/0 guard
 }
 
 ValueGradient IPatchSurface::value_gradient(const Vec3& p) const {

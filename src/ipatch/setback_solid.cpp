@@ -64,7 +64,8 @@ bool meet(const Vec3& u, const Vec3& v, const Vec3& w, double& t, double& s) {
 /// The vertex blend's weights: reference points from the centroid of its corners outward along the
 /// mean face normal m (steps of 4% of the patch size, up to 40%), each with every bound positive and
 /// every ribbon negative, scored by the lines of measure_patch (fewest that meet the patch twice, then
-/// the least bulge above a face plane); the first best wins. A steep apex needs the outward shift:
+/// the least bulge above a face plane); the first best wins, and the search stops at one with
+/// neither. A steep apex needs the outward shift:
 /// through the centroid its patch dips and grows an extra sheet.
 IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<SurfacePtr>& ribbons,
                              const std::vector<ConicArc>& curves, const Box& box, const Vec3& centroid,
@@ -75,8 +76,8 @@ IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<Surf
   std::optional<IPatchWeights> best;
   PatchShape best_shape;
   ValidityOptions quick;
-  quick.lines_per_axis = 10;
-  quick.steps_per_line = 120;
+  quick.lines_per_axis = 8;
+  quick.steps_per_line = 96;
   for (int k = 0; k <= 10; ++k) {
     const Vec3 c = centroid + (0.04 * k * size) * m;
     bool ok = true;
@@ -95,6 +96,7 @@ IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<Surf
       best = w;
       best_shape = shape;
     }
+    if (best_shape.multi_root_lines == 0 && best_shape.bulge <= 0.0) break;  // cannot do better
   }
   if (!best) return rule_a_weights(ribbons, patch.bounds, centroid, {}, patch.name);  // throws, saying why
   return *best;
@@ -161,6 +163,11 @@ Composite build_setback_solid(const SetbackSolid& solid) {
   for (Id v = 0; v < nv; ++v) {
     const VertexFan& fan = fans[v];
     const std::size_t n = fan.faces.size();
+    if (2 * n > kMaxFaceSides) {
+      throw InputError("vertex " + one_based(v) + " has " + std::to_string(n) +
+                       " edges: a vertex blend has at most " + std::to_string(kMaxFaceSides) +
+                       " sides (8 edges)");
+    }
     const Vec3 pv = mesh.vertices[v];
     for (std::size_t i = 0; i < n; ++i) {
       const Id w = fan.neighbours[i];

@@ -72,7 +72,7 @@ TEST(IpatchFile, OptionsAreRead) {
   const std::string text =
       kCube + "name my cube\nvn 8 1 1.1 0.9\nedge 1 2 weight 0.7\nface 2 centre 1.7 0 0 d 1 1 2 1\n";
   const Composite c = parse_ipatch(text, "cube.ipatch");
-  EXPECT_EQ(c.name, "my");
+  EXPECT_EQ(c.name, "my cube");
   EXPECT_LT(std::abs(c.patches[1].surface->value(Vec3(1.7, 0, 0))), 1e-13);
   const Composite b = parse_ipatch(
       "ipatch-model 1\r\nsolid box 0 0 0 2 1 1\r\nblend radius 0.2 setback 0.45 facecurve planar\r\n"
