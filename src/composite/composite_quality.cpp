@@ -16,6 +16,8 @@ namespace isopatch {
 
 namespace {
 
+using EdgeTriangles = std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>>;
+
 double angle_degrees(const Vec3& a, const Vec3& b) {
   const double c = a.normalized().dot(b.normalized());
   return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI;
@@ -23,6 +25,63 @@ double angle_degrees(const Vec3& a, const Vec3& b) {
 
 double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
   return std::min({angle_degrees(b - a, c - a), angle_degrees(a - b, c - b), angle_degrees(a - c, b - c)});
+}
+
+/// The worst seam ratio (CompositeQuality::worst_seam_ratio) with triangle normals from `normal`;
+/// adds the mean jumps to `q` when `count` is set.
+template <class Normal>
+double seam_ratio(const CompositeMesh& m, const EdgeTriangles& edge_triangles, double diagonal,
+                  Normal&& normal, CompositeQuality* count) {
+  const auto& pos = m.mesh.positions;
+  // The jump at every edge with two triangles, in degrees per unit length.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, double> jump_at;
+  for (const auto& [edge, triangles] : edge_triangles) {
+    const double length = (pos[edge.first] - pos[edge.second]).norm();
+    if (triangles.size() != 2 || !(length > 0.0)) continue;
+    jump_at[edge] = angle_degrees(normal(triangles[0]), normal(triangles[1])) / length;
+  }
+  double seam_sum = 0.0, patch_sum = 0.0;
+  std::size_t seam_edges = 0, patch_edges = 0;
+  // Per pair of patches: the jumps across their seam, and those at the patch edges next to it (the
+  // other edges of the two triangles at each seam edge), which see the surface's own turning there.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::array<double, 4>> seams;  // sum, n, near sum, near n
+  for (const auto& [edge, jump] : jump_at) {
+    const auto& triangles = edge_triangles.at(edge);
+    const std::uint32_t a = m.triangle_patch[triangles[0]], b = m.triangle_patch[triangles[1]];
+    if (a == b) {
+      patch_sum += jump;
+      ++patch_edges;
+      continue;
+    }
+    seam_sum += jump;
+    ++seam_edges;
+    auto& seam = seams[{std::min(a, b), std::max(a, b)}];
+    seam[0] += jump;
+    seam[1] += 1.0;
+    for (const std::size_t t : triangles)
+      for (std::size_t i = 0; i < 3; ++i) {
+        const std::uint32_t u = m.mesh.triangles[t][i], v = m.mesh.triangles[t][(i + 1) % 3];
+        const auto other = jump_at.find({std::min(u, v), std::max(u, v)});
+        if (other == jump_at.end() || other->first == edge) continue;
+        const auto& ts = edge_triangles.at(other->first);
+        if (m.triangle_patch[ts[0]] != m.triangle_patch[ts[1]]) continue;
+        seam[2] += other->second;
+        seam[3] += 1.0;
+      }
+  }
+  const double floor = 1.0 / diagonal;
+  double worst = 0.0;
+  for (const auto& [pair, seam] : seams) {
+    const double near = seam[3] > 0.0 ? seam[2] / seam[3] : 0.0;
+    worst = std::max(worst, seam[0] / seam[1] / std::max(near, floor));
+  }
+  if (count) {
+    count->seam_edges = seam_edges;
+    count->patch_edges = patch_edges;
+    count->seam_normal_jump = seam_edges ? seam_sum / static_cast<double>(seam_edges) : 0.0;
+    count->patch_normal_jump = patch_edges ? patch_sum / static_cast<double>(patch_edges) : 0.0;
+  }
+  return worst;
 }
 
 }  // namespace
@@ -33,7 +92,7 @@ CompositeQuality measure_composite_mesh(const Composite& composite, const Compos
   const std::size_t nv = pos.size();
   std::vector<std::set<std::uint32_t>> neighbours(nv);
   std::vector<std::set<std::uint32_t>> vertex_patches(nv);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>> edge_triangles;
+  EdgeTriangles edge_triangles;
   q.min_angle = 180.0;
   q.patch_min_angle = 180.0;
   for (std::size_t t = 0; t < m.mesh.triangles.size(); ++t) {
@@ -82,52 +141,21 @@ CompositeQuality measure_composite_mesh(const Composite& composite, const Compos
         q.seam_gradient_angle = std::max(q.seam_gradient_angle, angle_degrees(gradients[0], gradients[i]));
   }
 
-  // The jump at every edge with two triangles, in degrees per unit length.
-  const auto normal = [&](std::size_t t) {
-    const Triangle& tri = m.mesh.triangles[t];
-    return Vec3((pos[tri[1]] - pos[tri[0]]).cross(pos[tri[2]] - pos[tri[0]]));
-  };
-  std::map<std::pair<std::uint32_t, std::uint32_t>, double> jump_at;
-  for (const auto& [edge, triangles] : edge_triangles) {
-    const double length = (pos[edge.first] - pos[edge.second]).norm();
-    if (triangles.size() != 2 || !(length > 0.0)) continue;
-    jump_at[edge] = angle_degrees(normal(triangles[0]), normal(triangles[1])) / length;
-  }
-  double seam_sum = 0.0, patch_sum = 0.0;
-  // Per pair of patches: the jumps across their seam, and those at the patch edges next to it (the
-  // other edges of the two triangles at each seam edge), which see the surface's own turning there.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, std::array<double, 4>> seams;  // sum, n, near sum, near n
-  for (const auto& [edge, jump] : jump_at) {
-    const auto& triangles = edge_triangles.at(edge);
-    const std::uint32_t a = m.triangle_patch[triangles[0]], b = m.triangle_patch[triangles[1]];
-    if (a == b) {
-      patch_sum += jump;
-      ++q.patch_edges;
-      continue;
-    }
-    seam_sum += jump;
-    ++q.seam_edges;
-    auto& seam = seams[{std::min(a, b), std::max(a, b)}];
-    seam[0] += jump;
-    seam[1] += 1.0;
-    for (const std::size_t t : triangles)
-      for (std::size_t i = 0; i < 3; ++i) {
-        const std::uint32_t u = m.mesh.triangles[t][i], v = m.mesh.triangles[t][(i + 1) % 3];
-        const auto other = jump_at.find({std::min(u, v), std::max(u, v)});
-        if (other == jump_at.end() || other->first == edge) continue;
-        const auto& ts = edge_triangles.at(other->first);
-        if (m.triangle_patch[ts[0]] != m.triangle_patch[ts[1]]) continue;
-        seam[2] += other->second;
-        seam[3] += 1.0;
-      }
-  }
-  const double floor = 1.0 / diagonal;
-  for (const auto& [pair, seam] : seams) {
-    const double near = seam[3] > 0.0 ? seam[2] / seam[3] : 0.0;
-    q.worst_seam_ratio = std::max(q.worst_seam_ratio, seam[0] / seam[1] / std::max(near, floor));
-  }
-  q.seam_normal_jump = q.seam_edges ? seam_sum / static_cast<double>(q.seam_edges) : 0.0;
-  q.patch_normal_jump = q.patch_edges ? patch_sum / static_cast<double>(q.patch_edges) : 0.0;
+  q.worst_seam_ratio = seam_ratio(
+      m, edge_triangles, diagonal,
+      [&](std::size_t t) {
+        const Triangle& tri = m.mesh.triangles[t];
+        return Vec3((pos[tri[1]] - pos[tri[0]]).cross(pos[tri[2]] - pos[tri[0]]));
+      },
+      &q);
+  q.surface_seam_ratio = seam_ratio(
+      m, edge_triangles, diagonal,
+      [&](std::size_t t) {
+        const Triangle& tri = m.mesh.triangles[t];
+        const Vec3 centroid = (pos[tri[0]] + pos[tri[1]] + pos[tri[2]]) / 3.0;
+        return f[m.triangle_patch[t]]->value_gradient(centroid).gradient;
+      },
+      nullptr);
   return q;
 }
 

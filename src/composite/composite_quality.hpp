@@ -32,6 +32,10 @@ struct CompositeQuality {
   /// where the patches meet with G1 continuity at the mesh's scale; a crease, or a turn within a band
   /// narrower than an edge, gives far more.
   double worst_seam_ratio = 0.0;
+  /// The same ratio with every triangle's normal replaced by its patch's gradient at the triangle's
+  /// centroid: how fast the surface itself turns across its seams, seen at the mesh's scale. A surface
+  /// that turns within a band narrower than an edge beside a seam shows it here too.
+  double surface_seam_ratio = 0.0;
   /// Largest angle between the gradients of the two patches meeting at a curve sample (corners left
   /// out, where I-patch functions are 0/0), degrees: 0 for G1 patches.
   double seam_gradient_angle = 0.0;
