@@ -66,6 +66,13 @@ TEST(CompositeCli, RendersAndAnalysesAgainstTheComposite) {
   EXPECT_NE(a.out.find("distance"), std::string::npos) << a.out;
 }
 
+TEST(CompositeCli, ComparesTheMethodsOnAComposite) {
+  const auto dir = test::scratch_dir("composite_cli_compare");
+  const auto r = test::run_command(kCli + " compare " + kExamples + "cube.ipatch --edge-length 0.3", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* method : {"mc", "mc+fair", "projection"}) EXPECT_NE(r.out.find(method), std::string::npos);
+}
+
 TEST(CompositeCli, RefusesBadFilesWithOneLineAndAnExitCode) {
   const auto dir = test::scratch_dir("composite_cli_bad");
   const auto bad = dir / "bad.ipatch";
