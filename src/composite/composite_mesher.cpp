@@ -242,6 +242,21 @@ CompositeMesh mesh_composite_projection(const Composite& c, const Settings& sett
 
   // The clean-up of each accepted patch on its own function, its boundary held.
   const int iterations = settings.remesh_iterations.value_or(kDefaultRemeshIterations);
+  if (iterations > 0 && settings.max_vertices > 0 && !sizes.varies()) {
+    // The clean-up splits towards the target size: refuse before it would exceed the vertex budget
+    // (a mesh of equilateral triangles of side h has about area / (sqrt(3)/2 h^2) vertices).
+    double area = 0.0;
+    for (const PatchPiece& piece : pieces)
+      for (const Triangle& t : piece.triangles) {
+        const auto at = [&](std::uint32_t id) {
+          return id < PatchPiece::kLocalVertex ? sampling.positions[id]
+                                               : piece.points[id - PatchPiece::kLocalVertex];
+        };
+        area += 0.5 * (at(t[1]) - at(t[0])).cross(at(t[2]) - at(t[0])).norm();
+      }
+    settings.check_vertices(
+        static_cast<std::size_t>(area / (0.5 * std::sqrt(3.0) * sizes.largest * sizes.largest)));
+  }
   std::vector<RemeshStats> cleanup(patches);
   if (iterations > 0) {
     const RemeshSettings rs = cleanup_settings(settings, sizes, iterations);
