@@ -94,8 +94,8 @@ PatchBoundary boundary_of(const CompositePatch& patch, const CurveSampling& s,
   return b;
 }
 
-/// The segments of a curve: its length over the target size there (rounded, 1..kMaxPatchResolution),
-/// or the fixed resolution.
+/// The segments a patch asks of one of its curves: the curve's length over the target size there on the
+/// patch's function (rounded, 1..kMaxPatchResolution), or the fixed resolution.
 int curve_segment_count(const ConicArc& arc, const Surface& surface, const TargetSizes& sizes,
                         int resolution) {
   const double length = arc_length(arc);
@@ -179,15 +179,13 @@ CompositeMesh mesh_composite_projection(const Composite& c, const Settings& sett
   std::vector<std::unique_ptr<Sampler>> samplers;
   for (const CompositePatch& p : c.patches) samplers.push_back(std::make_unique<Sampler>(*p.surface));
 
-  // Curve segments from the first patch that uses each curve; a curve no patch uses gets none.
+  // Curve segments: the most that either patch using the curve asks for (with varying sizes each
+  // reads its own function's curvature); a curve no patch uses keeps one.
   std::vector<int> segments(c.curves.size(), 1);
-  std::vector<bool> used(c.curves.size(), false);
   for (const CompositePatch& p : c.patches)
     for (const PatchSide& s : p.sides)
-      if (!used[s.curve]) {
-        used[s.curve] = true;
-        segments[s.curve] = curve_segment_count(c.curves[s.curve], *p.surface, sizes, settings.resolution);
-      }
+      segments[s.curve] = std::max(
+          segments[s.curve], curve_segment_count(c.curves[s.curve], *p.surface, sizes, settings.resolution));
   std::vector<std::vector<Vec3>> dense;
   for (const ConicArc& a : c.curves) dense.push_back(sample_arc(a, kCoonsSegments));
 
