@@ -92,6 +92,29 @@ TEST(SetbackSolid, ValidityCheckFindsNothingOnTheRoundedBox) {
   }
 }
 
+TEST(SetbackSolid, VertexBlendDerivativesMatchDifferences) {
+  const Composite c = build_setback_solid(box(0.3, 0.6));
+  const auto& f = dynamic_cast<const IPatchSurface&>(*c.patches.back().surface);  // vertex blend 8 at (1,1,1)
+  const double h = 1e-6;
+  int checked = 0;
+  for (double a = 0.45; a <= 0.95; a += 0.05) {
+    for (double b = 0.45; b <= 0.95; b += 0.05) {
+      const Vec3 x(a, b, 0.8);
+      if (f.region_margin(x) < 0.02) continue;
+      const SecondOrder s = f.second_order(x);
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 d = h * Vec3::Unit(k);
+        const double fd = (f.value(x + d) - f.value(x - d)) / (2 * h);
+        EXPECT_NEAR(s.gradient(k), fd, 1e-6 * (1.0 + std::abs(fd)));
+        const Vec3 gd = (f.value_gradient(x + d).gradient - f.value_gradient(x - d).gradient) / (2 * h);
+        for (int l = 0; l < 3; ++l) EXPECT_NEAR(s.hessian(l, k), gd(l), 1e-4 * (1.0 + std::abs(gd(l))));
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20);
+}
+
 TEST(SetbackSolid, UnequalSetbacksStillClose) {
   SetbackSolid b = box(0.25, 0.6);
   b.vertex_setbacks.push_back({7, 0.75});
