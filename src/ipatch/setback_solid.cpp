@@ -147,6 +147,11 @@ Composite build_setback_solid(const SetbackSolid& solid) {
   const double tol = 1e-9 * std::max(extent, 1.0);
   std::vector<Affine> planes(nf);
   for (std::size_t f = 0; f < nf; ++f) {
+    if (2 * mesh.faces[f].size() > kMaxFaceSides) {
+      throw InputError("face " + one_based(Id(f)) + " has " + std::to_string(mesh.faces[f].size()) +
+                       " vertices: a trimmed face has twice as many sides, at most " +
+                       std::to_string(kMaxFaceSides) + " (8 vertices)");
+    }
     Vec3 c = Vec3::Zero();
     for (Id v : mesh.faces[f]) c += mesh.vertices[v];
     planes[f] = plane_through(c / static_cast<double>(mesh.faces[f].size()), newell_normal(mesh, f));

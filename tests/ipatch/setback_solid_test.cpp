@@ -128,6 +128,24 @@ TEST(SetbackSolid, RefusesWhatItCannotBlend) {
   EXPECT_THROW(build_setback_solid(box(0.3, 0.25)), InputError);  // springlines meet beyond the setback
   EXPECT_THROW(build_setback_solid(box(0.3, 1.1)), InputError);   // setbacks overlap on an edge
   EXPECT_THROW(build_setback_solid(box(0.0, 0.6)), InputError);
+  // A nonagonal prism: its faces would have 18 sides.
+  SetbackSolid prism;
+  prism.radius = 0.05;
+  prism.setback = 0.2;
+  for (int z = 0; z < 2; ++z) {
+    for (int k = 0; k < 9; ++k)
+      prism.mesh.vertices.push_back({std::cos(2 * M_PI * k / 9), std::sin(2 * M_PI * k / 9), double(z)});
+  }
+  prism.mesh.faces.push_back({8, 7, 6, 5, 4, 3, 2, 1, 0});
+  prism.mesh.faces.push_back({9, 10, 11, 12, 13, 14, 15, 16, 17});
+  for (std::uint32_t i = 0; i < 9; ++i) prism.mesh.faces.push_back({i, (i + 1) % 9, (i + 1) % 9 + 9, i + 9});
+  try {
+    build_setback_solid(prism);
+    ADD_FAILURE() << "a nonagonal prism was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a trimmed face has twice as many sides"), std::string::npos)
+        << e.what();
+  }
   // An L-shaped prism: one concave edge.
   SetbackSolid l;
   l.radius = 0.1;
