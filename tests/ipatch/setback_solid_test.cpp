@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 
 namespace isopatch {
 namespace {
@@ -122,6 +123,66 @@ TEST(SetbackSolid, UnequalSetbacksStillClose) {
   const Composite c = build_setback_solid(b);
   EXPECT_NO_THROW(check_composite_closed(c));
   for (std::size_t p = 0; p < c.patches.size(); ++p) EXPECT_LT(boundary_residual(c, p), 1e-12);
+}
+
+/// Points on the patches of `c`: random points of its box moved onto each patch by Newton steps, kept
+/// where they land inside that patch's region; for each, the number of neighbouring patches (sharing a
+/// corner with it) whose region also holds it by more than `tol`. (Regions are local: a face's region
+/// is a prism through the whole solid, and holds points of the opposite face.)
+int overlaps(const Composite& c, double tol, int& points) {
+  const auto corners = [&](std::size_t k) {
+    std::vector<Vec3> out;
+    for (const PatchSide& s : c.patches[k].sides)
+      out.push_back(c.curves[s.curve].start), out.push_back(c.curves[s.curve].end);
+    return out;
+  };
+  const auto neighbours = [&](std::size_t a, std::size_t b) {
+    for (const Vec3& p : corners(a)) {
+      for (const Vec3& q : corners(b)) {
+        if (p == q) return true;
+      }
+    }
+    return false;
+  };
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int bad = 0;
+  points = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const Vec3 start = c.box.lo + c.box.size().cwiseProduct(Vec3(u(rng), u(rng), u(rng)));
+    for (std::size_t k = 0; k < c.patches.size(); ++k) {
+      Vec3 x = start;
+      for (int step = 0; step < 30; ++step) {
+        const ValueGradient g = c.patches[k].surface->value_gradient(x);
+        if (!(g.gradient.squaredNorm() > 0.0)) break;
+        x -= g.value * g.gradient / g.gradient.squaredNorm();
+      }
+      if (std::abs(c.patches[k].surface->value(x)) > 1e-12 || (x - start).norm() > 0.3) continue;
+      const auto margin = [&](std::size_t j) {
+        double m = HUGE_VAL;
+        for (const auto& b : c.patches[j].bounds) m = std::min(m, b->value(x));
+        return m;
+      };
+      if (margin(k) < tol) continue;
+      ++points;
+      for (std::size_t j = 0; j < c.patches.size(); ++j) {
+        if (j != k && neighbours(j, k) && margin(j) > tol) ++bad;
+      }
+    }
+  }
+  return bad;
+}
+
+TEST(SetbackSolid, RegionsOfNeighboursDoNotOverlapOnTheSurface) {
+  // Faces, edge blends and vertex blends share their bounding functions with opposite signs, so a
+  // point of one patch lies in no other patch's region: the piecewise function is well defined there.
+  SetbackSolid unequal = box(0.25, 0.6);
+  unequal.vertex_setbacks.push_back({7, 0.75});
+  for (const SetbackSolid& s : {box(0.3, 0.6), box(0.3, 0.6, false), unequal}) {
+    int points = 0;
+    EXPECT_EQ(overlaps(build_setback_solid(s), 1e-9, points), 0);
+    EXPECT_GT(points, 500);
+  }
 }
 
 TEST(SetbackSolid, RefusesWhatItCannotBlend) {
