@@ -4,6 +4,7 @@
 
 #include "ipatch/composite_checks.hpp"
 #include "ipatch/ipatch_surface.hpp"
+#include "ipatch/patch_validity.hpp"
 #include "ipatch/quadric.hpp"
 
 #include <isopatch/error.hpp>
@@ -123,6 +124,12 @@ EdgeData build_edge(const EdgeKey& key, const std::vector<Vec3>& points, const s
   return e;
 }
 
+Vec3 face_centroid(const PolygonMesh& mesh, std::uint32_t f) {
+  Vec3 c = Vec3::Zero();
+  for (std::uint32_t v : mesh.faces[f]) c += mesh.vertices[v];
+  return c / static_cast<double>(mesh.faces[f].size());
+}
+
 }  // namespace
 
 Composite build_control_polyhedron(const ControlPolyhedron& polyhedron) {
@@ -193,20 +200,20 @@ Composite build_control_polyhedron(const ControlPolyhedron& polyhedron) {
                        ": its centroid is the polyhedron's; give its reference point with 'face K centre'");
     }
   }
-  out.box = curves_box(out.curves, centres, 0.15);
-
+  // Reference points: the default above, or when its patch fails (its ribbons differ in sign there,
+  // or some line meets the patch twice in its region), the first point along the face normal from the
+  // face centroid (steps of a tenth of the face's radius, from -0.5 to 1.5) whose patch does not.
+  const Box trial_box = curves_box(out.curves, centres, 1.0);
   std::map<EdgeKey, SurfacePtr> ribbons;
   for (const auto& [key, e] : edges) {
-    ribbons[key] = std::make_shared<QuadricSurface>("ribbon of " + edge_name(key), out.box, e.ribbon);
+    ribbons[key] = std::make_shared<QuadricSurface>("ribbon of " + edge_name(key), trial_box, e.ribbon);
   }
-  for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
+  const auto build_patch = [&](std::uint32_t f, const Box& box, const Vec3& centre) {
     const auto& face = mesh.faces[f];
     const std::string name = "face " + std::to_string(f + 1);
-    Vec3 fc = Vec3::Zero();
-    for (std::uint32_t v : face) fc += mesh.vertices[v];
-    fc /= static_cast<double>(face.size());
     CompositePatch patch;
     patch.name = name;
+    const Vec3 fc = face_centroid(mesh, f);
     std::vector<SurfacePtr> rib;
     for (std::size_t i = 0; i < face.size(); ++i) {
       const std::uint32_t a = face[i], b = face[(i + 1) % face.size()];
@@ -218,16 +225,50 @@ Composite build_control_polyhedron(const ControlPolyhedron& polyhedron) {
         throw InputError(name + ": its centroid lies on the bounding plane of " + edge_name(key));
       patch.sides.push_back({e.curve, a > b});
       patch.corner_directions.push_back(normals[a]);
-      patch.bounds.push_back(std::make_shared<QuadricSurface>(name + " bound " + std::to_string(i + 1),
-                                                              out.box, Quadric::from(bound)));
+      patch.bounds.push_back(std::make_shared<QuadricSurface>(name + " bound " + std::to_string(i + 1), box,
+                                                              Quadric::from(bound)));
       rib.push_back(ribbons.at(key));
     }
     const auto shape = face_shapes.find(f);
     const std::vector<double> d = shape != face_shapes.end() ? shape->second->d : std::vector<double>{};
-    IPatchWeights weights = rule_a_weights(rib, patch.bounds, centres[f], d, name);
-    patch.surface = std::make_shared<IPatchSurface>(name, out.box, rib, patch.bounds, std::move(weights));
-    out.patches.push_back(std::move(patch));
+    IPatchWeights weights = rule_a_weights(rib, patch.bounds, centre, d, name);
+    patch.surface = std::make_shared<IPatchSurface>(name, box, rib, patch.bounds, std::move(weights));
+    return patch;
+  };
+  Composite trial;
+  trial.box = trial_box;
+  trial.curves = out.curves;
+  ValidityOptions quick;
+  quick.lines_per_axis = 8;
+  quick.steps_per_line = 96;
+  for (std::uint32_t f = 0; f < mesh.faces.size(); ++f) {
+    const auto shape = face_shapes.find(f);
+    if (shape != face_shapes.end() && shape->second->centre) continue;  // given: used as is
+    const Vec3 fc = face_centroid(mesh, f);
+    const Vec3 n = newell_normal(mesh, f).normalized();
+    double radius = 0.0;
+    for (std::uint32_t v : mesh.faces[f]) radius += (mesh.vertices[v] - fc).norm();
+    radius /= static_cast<double>(mesh.faces[f].size());
+    std::vector<Vec3> candidates{centres[f]};
+    for (int k = -5; k <= 15; ++k) candidates.push_back(fc + (0.1 * k * radius) * n);
+    for (const Vec3& c : candidates) {
+      try {
+        trial.patches = {build_patch(f, trial_box, c)};
+      } catch (const InputError&) {
+        continue;  // outside the region, or the ribbons differ in sign there
+      }
+      if (measure_patch(trial, 0, quick).multi_root_lines == 0) {
+        centres[f] = c;
+        break;
+      }
+    }
   }
+  out.box = curves_box(out.curves, centres, 0.15);
+  for (auto& [key, r] : ribbons) {
+    r = std::make_shared<QuadricSurface>("ribbon of " + edge_name(key), out.box, edges.at(key).ribbon);
+  }
+  for (std::uint32_t f = 0; f < mesh.faces.size(); ++f)
+    out.patches.push_back(build_patch(f, out.box, centres[f]));
   check_composite_closed(out);
   return out;
 }

@@ -25,15 +25,37 @@ std::vector<const QuadricSurface*> planar_ribbons(const IPatchSurface& s) {
 
 }  // namespace
 
+Vec3 central_direction(const std::vector<Vec3>& directions) {
+  Vec3 d = Vec3::Zero();
+  for (const Vec3& n : directions) d += n;
+  if (!(d.norm() > 1e-9)) return Vec3::Constant(std::nan(""));
+  d.normalize();
+  // Subgradient ascent on min_k n_k.d over the unit sphere, with a shrinking step: the direction as
+  // far as possible from every corner direction's horizon.
+  double step = 0.25;
+  for (int iteration = 0; iteration < 200; ++iteration, step *= 0.97) {
+    std::size_t worst = 0;
+    for (std::size_t k = 1; k < directions.size(); ++k) {
+      if (directions[k].dot(d) < directions[worst].dot(d)) worst = k;
+    }
+    const Vec3 next = (d + step * directions[worst]).normalized();
+    double before = HUGE_VAL, after = HUGE_VAL;
+    for (const Vec3& n : directions) {
+      before = std::min(before, n.dot(d));
+      after = std::min(after, n.dot(next));
+    }
+    if (after > before) d = next;
+  }
+  return d;
+}
+
 PatchShape measure_patch(const Composite& composite, std::size_t index, const ValidityOptions& options) {
   PatchShape shape;
   const CompositePatch& patch = composite.patches.at(index);
   const auto* ip = dynamic_cast<const IPatchSurface*>(patch.surface.get());
   if (!ip) return shape;
-  Vec3 m = Vec3::Zero();
-  for (const Vec3& d : patch.corner_directions) m += d;
-  if (!(m.norm() > 1e-9)) return shape;
-  m.normalize();
+  const Vec3 m = central_direction(patch.corner_directions);
+  if (!m.allFinite()) return shape;
   const Vec3 e1 = m.unitOrthogonal(), e2 = m.cross(e1);
   // The extent of the boundary, in the frame (e1, e2, m).
   Vec3 lo = Vec3::Constant(HUGE_VAL), hi = Vec3::Constant(-HUGE_VAL);
@@ -59,6 +81,7 @@ PatchShape measure_patch(const Composite& composite, std::size_t index, const Va
       int roots = 0;
       bool have = false;
       double previous = 0.0;
+      Vec3 previous_point = Vec3::Zero();
       for (int t = 0; t <= steps; ++t) {
         const double h = lo.z() + (hi.z() - lo.z()) * t / steps;
         const Vec3 x = u * e1 + v * e2 + h * m;
@@ -69,9 +92,19 @@ PatchShape measure_patch(const Composite& composite, std::size_t index, const Va
         const double f = ip->value(x);
         if (have && (f > 0.0) != (previous > 0.0)) {
           ++roots;
-          for (const auto* q : planes) shape.bulge = std::max(shape.bulge, q->value(x));
+          if (!planes.empty()) {
+            // Bisect the crossing, so that the bulge is measured on the patch, not a step away.
+            Vec3 below = previous_point, above = x;
+            const bool below_positive = previous > 0.0;
+            for (int halving = 0; halving < 30; ++halving) {
+              const Vec3 mid = 0.5 * (below + above);
+              ((ip->value(mid) > 0.0) == below_positive ? below : above) = mid;
+            }
+            for (const auto* q : planes) shape.bulge = std::max(shape.bulge, q->value(0.5 * (below + above)));
+          }
         }
         previous = f;
+        previous_point = x;
         have = true;
       }
       ++shape.lines;

@@ -2,10 +2,13 @@
 /// \file patch_validity.hpp
 /// A cheap check that each I-patch of a composite is one sheet inside its region and does not bulge
 /// out through its planar ribbons (the defects of default weights with strongly unequal setbacks, or
-/// of a reference point badly placed): lines parallel to the patch's mean corner direction are marched
-/// through the part of its region near its boundary, counting the sign changes of its function.
+/// of a reference point badly placed): lines along the direction most central to the patch's corner
+/// directions are marched through the part of its region near its boundary, counting the sign changes of its
+/// function. The lines run along the direction most central to the corner directions (central_direction).
 
 #include "ipatch/composite.hpp"
+
+#include <isopatch/geometry.hpp>
 
 #include <cstddef>
 #include <string>
@@ -23,6 +26,11 @@ struct ValidityOptions {
   int steps_per_line = 240;       ///< samples along each line
   double bulge_tolerance = 1e-3;  ///< relative to the patch's size
 };
+
+/// The unit direction d that maximizes min_k directions[k].d (approximately; it starts from their
+/// normalized sum), or NaN when they sum to zero. The lines of the check run along it: a patch whose
+/// normals all lean toward d meets each such line at most once.
+Vec3 central_direction(const std::vector<Vec3>& directions);
 
 /// What the lines found on one patch.
 struct PatchShape {

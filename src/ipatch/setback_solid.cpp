@@ -62,14 +62,15 @@ bool meet(const Vec3& u, const Vec3& v, const Vec3& w, double& t, double& s) {
 }
 
 /// The vertex blend's weights: reference points from the centroid of its corners outward along the
-/// mean face normal m (steps of 4% of the patch size, up to 40%), each with every bound positive and
-/// every ribbon negative, scored by the lines of measure_patch (fewest that meet the patch twice, then
-/// the least bulge above a face plane); the first best wins, and the search stops at one with
-/// neither. A steep apex needs the outward shift:
-/// through the centroid its patch dips and grows an extra sheet.
+/// mean face normal m (steps of 4% of the patch size, up to 40%), then inward, then toward the vertex,
+/// each with every bound positive and every ribbon negative, scored by the lines of measure_patch
+/// (fewest that meet the patch twice, then the least bulge above a face plane); the first best wins,
+/// and the search stops at one with neither. A steep apex needs the outward shift: through the
+/// centroid its patch dips and grows an extra sheet; a long setback needs the inward one, as the
+/// centroid falls inside a trimline's cylinder.
 IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<SurfacePtr>& ribbons,
                              const std::vector<ConicArc>& curves, const Box& box, const Vec3& centroid,
-                             const Vec3& m, double size) {
+                             const Vec3& m, const Vec3& vertex, double size) {
   Composite trial;
   trial.box = box;
   trial.curves = curves;
@@ -78,14 +79,18 @@ IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<Surf
   ValidityOptions quick;
   quick.lines_per_axis = 8;
   quick.steps_per_line = 96;
-  for (int k = 0; k <= 10; ++k) {
-    const Vec3 c = centroid + (0.04 * k * size) * m;
-    bool ok = true;
-    for (std::size_t i = 0; i < ribbons.size() && ok; ++i) {
-      ok = patch.bounds[i]->value(c) > 0.0 && ribbons[i]->value(c) < 0.0;
+  // Outward first (0, 4%, ..., 40%), then inward (-4%, ..., -40%), then toward the vertex.
+  std::vector<Vec3> candidates;
+  for (int k = 0; k <= 10; ++k) candidates.push_back(centroid + (0.04 * k * size) * m);
+  for (int k = 1; k <= 10; ++k) candidates.push_back(centroid - (0.04 * k * size) * m);
+  for (int k = 1; k <= 8; ++k) candidates.push_back(centroid + (k / 10.0) * (vertex - centroid));
+  std::optional<Vec3> best_centre;
+  const auto perfect = [&] { return best && best_shape.multi_root_lines == 0 && best_shape.bulge <= 0.0; };
+  const auto consider = [&](const Vec3& c, const std::vector<double>& d) {
+    for (std::size_t i = 0; i < ribbons.size(); ++i) {
+      if (!(patch.bounds[i]->value(c) > 0.0) || !(ribbons[i]->value(c) < 0.0)) return;
     }
-    if (!ok) continue;
-    IPatchWeights w = rule_a_weights(ribbons, patch.bounds, c, {}, patch.name);
+    IPatchWeights w = rule_a_weights(ribbons, patch.bounds, c, d, patch.name);
     CompositePatch candidate = patch;
     candidate.surface = std::make_shared<IPatchSurface>(patch.name, box, ribbons, patch.bounds, w);
     trial.patches = {candidate};
@@ -95,10 +100,32 @@ IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<Surf
          shape.bulge < best_shape.bulge - 1e-12 * size)) {
       best = w;
       best_shape = shape;
+      best_centre = c;
     }
-    if (best_shape.multi_root_lines == 0 && best_shape.bulge <= 0.0) break;  // cannot do better
+  };
+  for (const Vec3& c : candidates) {
+    consider(c, {});
+    if (perfect()) return *best;
   }
   if (!best) return rule_a_weights(ribbons, patch.bounds, centroid, {}, patch.name);  // throws, saying why
+  // Then the weight factors at the best point: the face sides (odd) lighter or heavier than the arcs,
+  // or each side weighted by its curve's chord or its inverse.
+  const Vec3 c = *best_centre;
+  const std::size_t n = ribbons.size();
+  for (double f : {0.5, 2.0, 0.25, 4.0}) {
+    std::vector<double> d(n, 1.0);
+    for (std::size_t i = 1; i < n; i += 2) d[i] = f;
+    consider(c, d);
+    if (perfect()) return *best;
+  }
+  std::vector<double> chord(n), inverse(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ConicArc& a = curves[patch.sides[i].curve];
+    chord[i] = std::max((a.end - a.start).norm(), 1e-12 * size);
+    inverse[i] = 1.0 / chord[i];
+  }
+  consider(c, chord);
+  consider(c, inverse);
   return *best;
 }
 
@@ -120,6 +147,11 @@ Composite build_setback_solid(const SetbackSolid& solid) {
   const double tol = 1e-9 * std::max(extent, 1.0);
   std::vector<Affine> planes(nf);
   for (std::size_t f = 0; f < nf; ++f) {
+    if (2 * mesh.faces[f].size() > kMaxFaceSides) {
+      throw InputError("face " + one_based(Id(f)) + " has " + std::to_string(mesh.faces[f].size()) +
+                       " vertices: a trimmed face has twice as many sides, at most " +
+                       std::to_string(kMaxFaceSides) + " (8 vertices)");
+    }
     Vec3 c = Vec3::Zero();
     for (Id v : mesh.faces[f]) c += mesh.vertices[v];
     planes[f] = plane_through(c / static_cast<double>(mesh.faces[f].size()), newell_normal(mesh, f));
@@ -345,7 +377,7 @@ Composite build_setback_solid(const SetbackSolid& solid) {
     for (Id f : fan.faces) m += normal(f);
     for (const PatchSide& s : patch.sides) size = std::max(size, (pc.curves[s.curve].start - centre).norm());
     IPatchWeights weights =
-        choose_weights(patch, ribbons, pc.curves, out.box, centre, m.normalized(), 2.0 * size);
+        choose_weights(patch, ribbons, pc.curves, out.box, centre, m.normalized(), pv, 2.0 * size);
     patch.surface =
         std::make_shared<IPatchSurface>(patch.name, out.box, ribbons, patch.bounds, std::move(weights));
     out.patches.push_back(std::move(patch));

@@ -37,13 +37,14 @@ struct SetbackSolid {
 };
 
 /// Builds the rounded solid as a closed composite: patches "face k", "edge blend a-b" and
-/// "vertex blend v" (1-based), curves shared by id. Vertex blends take rule A weights through the
-/// centroid of their 2n corners.
-/// \throw InputError on bad topology, a vertex with more than 8 edges (a vertex blend has at most 16
-///        sides), a non-planar face, a concave or flat vertex or edge (mixed and
-///        concave vertices are not supported), radius or setback <= 0, a setback too small for a face
-///        corner (the springlines meet beyond it) or too large for an edge (the two ends' setbacks
-///        overlap), or a reference point outside its region.
+/// "vertex blend v" (1-based), curves shared by id. A vertex blend's rule A reference point (and, if
+/// need be, weight factors) is the first best of a few candidates near the centroid of its 2n corners,
+/// scored by measure_patch (patch_validity.hpp): see docs/ipatch.md.
+/// \throw InputError on bad topology, a vertex with more than 8 edges or a face with more than 8
+///        vertices (a vertex blend or a trimmed face has at most 16 sides), a non-planar face, a concave or
+///        flat vertex or edge (mixed and concave vertices are not supported), radius or setback <= 0, a
+///        setback too small for a face corner (the springlines meet beyond it) or too large for an edge (the
+///        two ends' setbacks overlap), or a reference point outside its region.
 Composite build_setback_solid(const SetbackSolid& solid);
 
 }  // namespace isopatch

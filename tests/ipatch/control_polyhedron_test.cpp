@@ -29,6 +29,14 @@ ControlPolyhedron octahedron() {
   return c;
 }
 
+/// The cube with one corner pulled out, stretched: no symmetry.
+ControlPolyhedron pulled_box() {
+  ControlPolyhedron p = cube();
+  p.mesh.vertices[7] = Vec3(1.4, 1.2, 1.3);
+  for (Vec3& v : p.mesh.vertices) v = Vec3(1.5 * v.x(), v.y(), 0.8 * v.z());
+  return p;
+}
+
 /// The largest |radius - expected| of the composite's zero set along random rays from the origin, each
 /// ray bisected inside the patch whose region holds it.
 double radial_error(const Composite& c, double expected, int rays) {
@@ -181,6 +189,94 @@ TEST(ControlPolyhedron, TheRibbonsAreG1AtTheVertices) {
         EXPECT_LT((g - corner.normalized()).norm(), 1e-12);
       }
     }
+  }
+}
+
+TEST(ControlPolyhedron, DefaultWeightsPassThroughTheDefaultReferencePoints) {
+  // The cube's reference points are its face centres pushed out to the corner radius, sqrt(3).
+  const Composite c = build_control_polyhedron(cube());
+  const Vec3 centres[6] = {-Vec3::UnitX(), Vec3::UnitX(),  -Vec3::UnitY(),
+                           Vec3::UnitY(),  -Vec3::UnitZ(), Vec3::UnitZ()};
+  for (int f = 0; f < 6; ++f) {
+    EXPECT_LT(std::abs(c.patches[f].surface->value(std::sqrt(3.0) * centres[f])), 1e-14) << c.patches[f].name;
+  }
+}
+
+TEST(ControlPolyhedron, GradientsAndHessiansOfAnAsymmetricPatchMatchDifferences) {
+  const Composite c = build_control_polyhedron(pulled_box());
+  std::mt19937 rng(9);
+  std::normal_distribution<double> g;
+  const double h = 1e-5;
+  int checked = 0;
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 x = 1.6 * Vec3(g(rng), g(rng), g(rng)).normalized();
+    for (const CompositePatch& patch : c.patches) {
+      const auto& f = dynamic_cast<const IPatchSurface&>(*patch.surface);
+      if (f.region_margin(x) < 0.05) continue;
+      const SecondOrder s = f.second_order(x);
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 d = h * Vec3::Unit(k);
+        const double fd = (f.value(x + d) - f.value(x - d)) / (2 * h);
+        EXPECT_NEAR(s.gradient(k), fd, 1e-6 * (1.0 + std::abs(fd)));
+        const Vec3 gd = (f.value_gradient(x + d).gradient - f.value_gradient(x - d).gradient) / (2 * h);
+        for (int l = 0; l < 3; ++l) EXPECT_NEAR(s.hessian(l, k), gd(l), 1e-5 * (1.0 + std::abs(gd(l))));
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 200);
+}
+
+TEST(ControlPolyhedron, TheBoxHoldsTheSurface) {
+  // The piecewise function (each point's value from the patch whose region holds it most deeply) along
+  // rays from the centroid (the origin here): its first crossing lies in the composite's box.
+  for (const ControlPolyhedron& p : {cube(), octahedron(), pulled_box()}) {
+    const Composite c = build_control_polyhedron(p);
+    const auto piecewise = [&](const Vec3& x) {
+      double best = -HUGE_VAL, value = 0.0;
+      for (const CompositePatch& patch : c.patches) {
+        const auto& f = dynamic_cast<const IPatchSurface&>(*patch.surface);
+        if (f.region_margin(x) > best) {
+          best = f.region_margin(x);
+          value = f.value(x);
+        }
+      }
+      return value;
+    };
+    EXPECT_LT(piecewise(Vec3::Zero()), 0.0);
+    std::mt19937 rng(10);
+    std::normal_distribution<double> g;
+    for (int i = 0; i < 500; ++i) {
+      const Vec3 u = Vec3(g(rng), g(rng), g(rng)).normalized();
+      bool crossed = false;
+      for (int t = 1; t <= 400 && !crossed; ++t) {
+        const Vec3 x = (t / 400.0) * c.box.diagonal() * u;
+        if (piecewise(x) > 0.0) {
+          EXPECT_TRUE(c.box.contains(x)) << x.transpose();
+          crossed = true;
+        }
+      }
+      EXPECT_TRUE(crossed);
+    }
+  }
+}
+
+TEST(ControlPolyhedron, AReflexCornerWithDefaultNormalsIsRefusedClearly) {
+  // An L-shaped prism: at its inner corner the default normals of an edge's two ends are equal and not
+  // perpendicular to it, which asks for an S-shaped curve.
+  ControlPolyhedron l;
+  const double xy[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  for (int z = 0; z < 2; ++z) {
+    for (const auto& q : xy) l.mesh.vertices.push_back({q[0], q[1], double(z)});
+  }
+  l.mesh.faces.push_back({5, 4, 3, 2, 1, 0});
+  l.mesh.faces.push_back({6, 7, 8, 9, 10, 11});
+  for (std::uint32_t i = 0; i < 6; ++i) l.mesh.faces.push_back({i, (i + 1) % 6, (i + 1) % 6 + 6, i + 6});
+  try {
+    build_control_polyhedron(l);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("S-shaped"), std::string::npos) << e.what();
   }
 }
 
