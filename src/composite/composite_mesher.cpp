@@ -19,6 +19,7 @@
 #include "composite/curve_samples.hpp"
 #include "composite/patch_projection.hpp"
 #include "composite/patch_relaxation.hpp"
+#include "project/vertex_role.hpp"
 #include "surface/sampler.hpp"
 #include "surface/target_size.hpp"
 
@@ -47,6 +48,7 @@ Vec3 side_end(const Composite& c, const PatchSide& s) {
 /// curves meet them), then each curve's inner samples in curve order.
 struct CurveSampling {
   std::vector<Vec3> positions;
+  std::size_t corners = 0;                      // positions[0, corners) are the corners
   std::vector<std::vector<std::uint32_t>> ids;  // per curve, start to end
   std::vector<std::vector<Vec3>> points;        // per curve, start to end
 };
@@ -61,6 +63,7 @@ CurveSampling sample_curves(const Composite& c, const std::vector<int>& segments
   };
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
   for (const ConicArc& a : c.curves) ends.emplace_back(corner(a.start), corner(a.end));
+  s.corners = s.positions.size();
   s.ids.resize(c.curves.size());
   s.points.resize(c.curves.size());
   for (std::size_t i = 0; i < c.curves.size(); ++i) {
@@ -290,6 +293,24 @@ CompositeMesh mesh_composite_projection(const Composite& c, const Settings& sett
       ++ps.fallback_cells;
     else
       ++ps.patches_by_sides[static_cast<int>(c.patches[p].sides.size())];
+  }
+  if (settings.vertex_roles) {
+    // What made each vertex (the values of project/vertex_role.hpp): corners, curve samples, patch
+    // interiors (5 where the clean-up has remeshed the patch), fan centres.
+    std::vector<float> roles(out.mesh.vertex_count(), role_value(VertexRole::Interior));
+    std::fill(roles.begin(), roles.begin() + static_cast<std::ptrdiff_t>(sampling.corners),
+              role_value(VertexRole::Corner));
+    std::fill(roles.begin() + static_cast<std::ptrdiff_t>(sampling.corners),
+              roles.begin() + static_cast<std::ptrdiff_t>(sampling.positions.size()),
+              role_value(VertexRole::Side));
+    for (std::size_t v = sampling.positions.size(); v < roles.size(); ++v) {
+      const auto p = static_cast<std::size_t>(out.vertex_patch[v]);
+      if (fan[p])
+        roles[v] = role_value(VertexRole::FanCentre);
+      else if (iterations > 0)
+        roles[v] = 5.0f;
+    }
+    out.mesh.set_attribute("role", std::move(roles));
   }
   if (stats) {
     const auto [lo, hi] = std::minmax_element(segments.begin(), segments.end());

@@ -44,9 +44,11 @@ void check_composite(const Composite& composite);
 /// every curve), coordinates, max_ray_angle, march_steps, refinement_levels, remesh_iterations and
 /// quality (the per-patch clean-up; default kDefaultRemeshIterations), the budgets (max_vertices,
 /// cancel; evaluation and time budgets are the caller's, see mesh_composite()). `settings.base` is not
-/// read: the base is always the Coons patch over the known curves. Runs in the caller's task arena;
-/// the same mesh for any number of threads. Fills `stats` (projection, cleanup) when given.
-/// \throw InputError from check_composite() or for invalid settings; EvaluationError when a function is
+/// read: the base is always the Coons patch over the known curves. With vertex_roles the mesh gets the
+/// attribute "role": 0 corner, 1 curve sample, 2 patch interior (5 after the clean-up), 4 fan centre.
+/// Runs in the caller's task arena; the same mesh for any number of threads. Fills `stats` (projection,
+/// cleanup) when given. \throw InputError from check_composite() or for invalid settings; EvaluationError
+/// when a function is
 ///        not finite where needed; LimitError for the budgets.
 CompositeMesh mesh_composite_projection(const Composite& composite, const Settings& settings,
                                         MeshStats* stats = nullptr);

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <set>
 
 #include "composite/composite_mesher.hpp"
@@ -146,6 +147,22 @@ TEST(CompositeMesher, RefusesInconsistentTopology) {
   c = test::octahedron_sphere();
   c->patches[3].corner_directions[0] = Vec3(NAN, 0, 0);
   EXPECT_THROW(mesh_composite_projection(*c, Settings{}), InputError);
+}
+
+TEST(CompositeMesher, VertexRolesNameCornersCurvesAndInteriors) {
+  const auto c = test::cube_sphere();
+  Settings s;
+  s.resolution = 4;
+  s.remesh_iterations = 0;
+  s.vertex_roles = true;
+  const CompositeMesh m = mesh_composite_projection(*c, s);
+  const std::vector<float>* roles = m.mesh.find_attribute("role");
+  ASSERT_NE(roles, nullptr);
+  std::map<float, std::size_t> count;
+  for (const float r : *roles) ++count[r];
+  EXPECT_EQ(count[0.0f], 8u);        // the cube's corners
+  EXPECT_EQ(count[1.0f], 12u * 3u);  // 3 inner samples on each of 12 curves
+  EXPECT_EQ(count[2.0f], 6u * 9u);   // a 5 x 5 grid's 9 inner vertices per face
 }
 
 TEST(CompositeMesher, VertexBudget) {
