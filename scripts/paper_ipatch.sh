@@ -46,8 +46,8 @@ table="$out/ipatch_table.md"
 for c in composite setback; do
   file=$composite; [ "$c" = setback ] && file=$setback
   for m in mc projection; do
-    "$tool" analyze "$tmp/${c}_$m.ply" --surface "$file" --json > "$out/ipatch_analysis_${c}_$m.json"
-    python3 - "$out/ipatch_analysis_${c}_$m.json" "$(basename "$file")" "$m" >> "$table" <<'PY'
+    "$tool" analyze "$tmp/${c}_$m.ply" --surface "$file" --json > "$tmp/analysis_${c}_$m.json"
+    python3 - "$tmp/analysis_${c}_$m.json" "$(basename "$file")" "$m" >> "$table" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 t, a = d["topology"], d["accuracy"]
