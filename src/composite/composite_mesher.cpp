@@ -53,7 +53,9 @@ struct CurveSampling {
   std::vector<std::vector<Vec3>> points;        // per curve, start to end
 };
 
-CurveSampling sample_curves(const Composite& c, const std::vector<int>& segments) {
+/// Curves no patch uses get no vertices.
+CurveSampling sample_curves(const Composite& c, const std::vector<int>& segments,
+                            const std::vector<bool>& used) {
   CurveSampling s;
   std::map<Key, std::uint32_t> corner_of;
   const auto corner = [&](const Vec3& p) {
@@ -61,12 +63,14 @@ CurveSampling sample_curves(const Composite& c, const std::vector<int>& segments
     if (fresh) s.positions.push_back(p);
     return it->second;
   };
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> ends;
-  for (const ConicArc& a : c.curves) ends.emplace_back(corner(a.start), corner(a.end));
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> ends(c.curves.size());
+  for (std::size_t i = 0; i < c.curves.size(); ++i)
+    if (used[i]) ends[i] = {corner(c.curves[i].start), corner(c.curves[i].end)};
   s.corners = s.positions.size();
   s.ids.resize(c.curves.size());
   s.points.resize(c.curves.size());
   for (std::size_t i = 0; i < c.curves.size(); ++i) {
+    if (!used[i]) continue;
     s.points[i] = sample_arc(c.curves[i], segments[i]);
     s.ids[i].push_back(ends[i].first);
     for (std::size_t j = 1; j + 1 < s.points[i].size(); ++j) {
@@ -183,14 +187,18 @@ CompositeMesh mesh_composite_projection(const Composite& c, const Settings& sett
   for (const CompositePatch& p : c.patches) samplers.push_back(std::make_unique<Sampler>(*p.surface));
 
   // Curve segments: the most that either patch using the curve asks for (with varying sizes each
-  // reads its own function's curvature); a curve no patch uses keeps one.
+  // reads its own function's curvature); a curve no patch uses gets no vertices.
   std::vector<int> segments(c.curves.size(), 1);
+  std::vector<bool> used(c.curves.size(), false);
+  for (const CompositePatch& p : c.patches)
+    for (const PatchSide& s : p.sides) used[s.curve] = true;
   for (const CompositePatch& p : c.patches)
     for (const PatchSide& s : p.sides)
       segments[s.curve] = std::max(
           segments[s.curve], curve_segment_count(c.curves[s.curve], *p.surface, sizes, settings.resolution));
   std::vector<std::vector<Vec3>> dense;
-  for (const ConicArc& a : c.curves) dense.push_back(sample_arc(a, kCoonsSegments));
+  for (std::size_t i = 0; i < c.curves.size(); ++i)
+    dense.push_back(used[i] ? sample_arc(c.curves[i], kCoonsSegments) : std::vector<Vec3>{});
 
   PatchProjectionParams params;
   params.coordinates = settings.coordinates == Settings::Coordinates::MeanValue ? CoordinateKind::MeanValue
@@ -208,7 +216,7 @@ CompositeMesh mesh_composite_projection(const Composite& c, const Settings& sett
   std::vector<bool> fan(patches, false);
   for (int round = 0;; ++round) {
     settings.check_cancel();
-    sampling = sample_curves(c, segments);
+    sampling = sample_curves(c, segments, used);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, patches),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t p = r.begin(); p != r.end(); ++p)

@@ -165,6 +165,25 @@ TEST(CompositeMesher, VertexRolesNameCornersCurvesAndInteriors) {
   EXPECT_EQ(count[2.0f], 6u * 9u);   // a 5 x 5 grid's 9 inner vertices per face
 }
 
+TEST(CompositeMesher, OpenCompositeKeepsItsCurvesAsBoundary) {
+  auto c = test::octahedron_sphere();
+  c->patches.resize(1);  // the octant x, y, z >= 0 alone
+  Settings s;
+  s.edge_length = 0.1;
+  const CompositeMesh m = mesh_composite_projection(*c, s);
+  const TopologyReport t = analyze_topology(m.mesh);
+  std::size_t curve_segments = 0;
+  for (const PatchSide& side : c->patches[0].sides)
+    curve_segments += static_cast<std::size_t>(m.curve_segments[side.curve]);
+  EXPECT_EQ(t.boundary_edges, curve_segments);
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, 1);  // a disc
+  for (const Vec3& p : m.mesh.positions) {
+    EXPECT_NEAR(p.norm(), 1.0, 1e-9);
+    EXPECT_GE(p.minCoeff(), -1e-12);
+  }
+}
+
 TEST(CompositeMesher, VertexBudget) {
   const auto c = test::octahedron_sphere();
   Settings s;
