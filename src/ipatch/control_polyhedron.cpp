@@ -202,7 +202,8 @@ Composite build_control_polyhedron(const ControlPolyhedron& polyhedron) {
   }
   // Reference points: the default above, or when its patch fails (its ribbons differ in sign there,
   // or some line meets the patch twice in its region), the first point along the face normal from the
-  // face centroid (steps of a tenth of the face's radius, from -0.5 to 1.5) whose patch does not.
+  // face centroid (steps of a tenth of the face's radius, from -0.5 to 1.5) whose patch does not; when
+  // none passes, the first with the fewest such lines (the validity check then reports it).
   const Box trial_box = curves_box(out.curves, centres, 1.0);
   std::map<EdgeKey, SurfacePtr> ribbons;
   for (const auto& [key, e] : edges) {
@@ -251,16 +252,19 @@ Composite build_control_polyhedron(const ControlPolyhedron& polyhedron) {
     radius /= static_cast<double>(mesh.faces[f].size());
     std::vector<Vec3> candidates{centres[f]};
     for (int k = -5; k <= 15; ++k) candidates.push_back(fc + (0.1 * k * radius) * n);
+    int fewest = -1;  // multi-root lines of the best candidate so far; -1: none valid yet
     for (const Vec3& c : candidates) {
       try {
         trial.patches = {build_patch(f, trial_box, c)};
       } catch (const InputError&) {
         continue;  // outside the region, or the ribbons differ in sign there
       }
-      if (measure_patch(trial, 0, quick).multi_root_lines == 0) {
+      const int lines = measure_patch(trial, 0, quick).multi_root_lines;
+      if (fewest < 0 || lines < fewest) {
+        fewest = lines;
         centres[f] = c;
-        break;
       }
+      if (lines == 0) break;
     }
   }
   out.box = curves_box(out.curves, centres, 0.15);

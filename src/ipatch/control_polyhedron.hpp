@@ -37,7 +37,8 @@ struct ControlPolyhedron {
   /// A face's reference point (default: the face centroid pushed out from the polyhedron's centroid to
   /// the mean distance of its corners; when the patch through it fails, because its ribbons differ in
   /// sign there or a line of measure_patch meets the patch twice, the first point on the face normal
-  /// through the face centroid that passes) and weight factors d (default all 1; one per side).
+  /// through the face centroid that passes, or the one that fails least) and weight factors d (default all 1;
+  /// one per side).
   struct FaceShape {
     std::uint32_t face = 0;  ///< 0-based
     std::optional<Vec3> centre;

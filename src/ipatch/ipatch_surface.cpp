@@ -14,52 +14,71 @@ namespace isopatch {
 
 namespace {
 
-/// A value with its gradient and Hessian; the arithmetic is the chain rule, written out.
-struct Jet {
+/// A value with its gradient; the arithmetic is the chain rule, written out.
+struct Jet1 {
+  double v = 0.0;
+  Vec3 g = Vec3::Zero();
+};
+
+/// A value with its gradient and Hessian.
+struct Jet2 {
   double v = 0.0;
   Vec3 g = Vec3::Zero();
   Mat3 h = Mat3::Zero();
 };
 
-Jet constant(double v) {
-  return {v, Vec3::Zero(), Mat3::Zero()};
+Jet1 operator+(const Jet1& a, const Jet1& b) {
+  return {a.v + b.v, a.g + b.g};
+}
+Jet1 operator*(double s, const Jet1& a) {
+  return {s * a.v, s * a.g};
+}
+Jet1 operator*(const Jet1& a, const Jet1& b) {
+  return {a.v * b.v, a.v * b.g + b.v * a.g};
+}
+Jet1 operator/(const Jet1& n, const Jet1& d) {
+  const double q = n.v / d.v;
+  return {q, (n.g - q * d.g) / d.v};
 }
 
-Jet operator+(const Jet& a, const Jet& b) {
+Jet2 operator+(const Jet2& a, const Jet2& b) {
   return {a.v + b.v, a.g + b.g, a.h + b.h};
 }
-
-Jet operator*(double s, const Jet& a) {
+Jet2 operator*(double s, const Jet2& a) {
   return {s * a.v, s * a.g, s * a.h};
 }
-
-Jet operator*(const Jet& a, const Jet& b) {
+Jet2 operator*(const Jet2& a, const Jet2& b) {
   const Mat3 cross = a.g * b.g.transpose();
   return {a.v * b.v, a.v * b.g + b.v * a.g, a.v * b.h + b.v * a.h + cross + cross.transpose()};
 }
-
-Jet operator/(const Jet& n, const Jet& d) {
+Jet2 operator/(const Jet2& n, const Jet2& d) {
   const double q = n.v / d.v;
   const Vec3 gq = (n.g - q * d.g) / d.v;
   const Mat3 cross = gq * d.g.transpose();
   return {q, gq, (n.h - q * d.h - cross - cross.transpose()) / d.v};
 }
 
-Jet load(const Surface& s, const Vec3& p) {
-  const SecondOrder o = s.second_order(p);
-  return {o.value, o.gradient, o.hessian};
-}
-
-double load_value(const Surface& s, const Vec3& p) {
-  return s.value(p);
+template <typename T>
+T load(const Surface& s, const Vec3& p) {
+  if constexpr (std::is_same_v<T, double>) {
+    return s.value(p);
+  } else if constexpr (std::is_same_v<T, Jet1>) {
+    const ValueGradient o = s.value_gradient(p);
+    return {o.value, o.gradient};
+  } else {
+    const SecondOrder o = s.second_order(p);
+    return {o.value, o.gradient, o.hessian};
+  }
 }
 
 template <typename T>
-bool finite(const T& x) {
+T constant(double v) {
   if constexpr (std::is_same_v<T, double>) {
-    return std::isfinite(x);
+    return v;
   } else {
-    return std::isfinite(x.v) && x.g.allFinite() && x.h.allFinite();
+    T t;
+    t.v = v;
+    return t;
   }
 }
 
@@ -69,6 +88,17 @@ double val(const T& x) {
     return x;
   } else {
     return x.v;
+  }
+}
+
+template <typename T>
+bool finite(const T& x) {
+  if constexpr (std::is_same_v<T, double>) {
+    return std::isfinite(x);
+  } else if constexpr (std::is_same_v<T, Jet1>) {
+    return std::isfinite(x.v) && x.g.allFinite();
+  } else {
+    return std::isfinite(x.v) && x.g.allFinite() && x.h.allFinite();
   }
 }
 
@@ -130,59 +160,40 @@ IPatchSurface::IPatchSurface(std::string name, Box box, std::vector<SurfacePtr> 
 
 template <typename T>
 T IPatchSurface::evaluate(const Vec3& p) const {
+  // One pass, no storage: with P = prod_{k<j} B_k^2, A = sum_{i<j} w_i R_i prod_{k<j, k!=i} B_k^2 and D
+  // likewise without R_i, adding side j multiplies A and D by B_j^2 and adds w_j R_j P and w_j P.
   const std::size_t n = ribbons_.size();
-  std::vector<T> r(n), b(n), squares(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if constexpr (std::is_same_v<T, double>) {
-      r[i] = load_value(*ribbons_[i], p);
-      b[i] = load_value(*bounds_[i], p);
-    } else {
-      r[i] = load(*ribbons_[i], p);
-      b[i] = load(*bounds_[i], p);
-    }
-    squares[i] = b[i] * b[i];
+  T product = constant<T>(1.0), numerator = constant<T>(0.0), denominator = constant<T>(0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    const T r = load<T>(*ribbons_[j], p);
+    const T b = load<T>(*bounds_[j], p);
+    const T square = b * b;
+    numerator = numerator * square + weights_.w[j] * (r * product);
+    denominator = denominator * square + weights_.w[j] * product;
+    product = product * square;
   }
-  // prefix[k] = prod_{j<k} B_j^2, suffix[k] = prod_{j>=k} B_j^2.
-  std::vector<T> prefix(n + 1), suffix(n + 1);
-  if constexpr (std::is_same_v<T, double>) {
-    prefix[0] = 1.0;
-    suffix[n] = 1.0;
-  } else {
-    prefix[0] = constant(1.0);
-    suffix[n] = constant(1.0);
-  }
-  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] * squares[k];
-  for (std::size_t k = n; k-- > 0;) suffix[k] = squares[k] * suffix[k + 1];
-  T numerator = weights_.w0 * prefix[n];
-  T denominator = 0.0 * prefix[n];
-  for (std::size_t i = 0; i < n; ++i) {
-    const T others = prefix[i] * suffix[i + 1];
-    numerator = numerator + weights_.w[i] * (r[i] * others);
-    denominator = denominator + weights_.w[i] * others;
-  }
+  numerator = numerator + weights_.w0 * product;
   if (val(denominator) > 0.0) {
     const T q = numerator / denominator;
     if (finite(q)) return q;
   }
   // 0/0: two or more bounding functions vanish (or the products underflow). The mean of the ribbons of
-  // the vanishing sides (of the two nearest ones when none is exactly zero) is finite and lies between
+  // the vanishing sides (of the two nearest ones when fewer are exactly zero) is finite and lies between
   // the one-sided limits.
-  std::size_t first = 0, second = 1;  // the two smallest |B_j|
-  if (std::abs(val(b[1])) < std::abs(val(b[0]))) std::swap(first, second);
-  for (std::size_t j = 2; j < n; ++j) {
-    const double m = std::abs(val(b[j]));
-    if (m < std::abs(val(b[first]))) {
-      second = first;
-      first = j;
-    } else if (m < std::abs(val(b[second]))) {
-      second = j;
-    }
+  const auto size_of = [&](std::size_t j) { return std::abs(bounds_[j]->value(p)); };
+  std::size_t first = 0;  // the two smallest |B_j|
+  for (std::size_t j = 1; j < n; ++j) {
+    if (size_of(j) < size_of(first)) first = j;
   }
-  T mean = r[first] + r[second];
+  std::size_t second = first == 0 ? 1 : 0;
+  for (std::size_t j = 0; j < n; ++j) {
+    if (j != first && size_of(j) < size_of(second)) second = j;
+  }
+  T mean = load<T>(*ribbons_[first], p) + load<T>(*ribbons_[second], p);
   std::size_t count = 2;
   for (std::size_t j = 0; j < n; ++j) {
-    if (j != first && j != second && val(b[j]) == 0.0) {
-      mean = mean + r[j];
+    if (j != first && j != second && size_of(j) == 0.0) {
+      mean = mean + load<T>(*ribbons_[j], p);
       ++count;
     }
   }
@@ -190,51 +201,16 @@ T IPatchSurface::evaluate(const Vec3& p) const {
 }
 
 double IPatchSurface::value(const Vec3& p) const {
-  // The same arithmetic as evaluate<double>, without heap allocations for n <= 32 (the hot path of
-  // projection, sampling and the validity check).
-  const std::size_t n = ribbons_.size();
-  constexpr std::size_t kStack = 32;
-  double stack[5 * (kStack + 1)];
-  std::vector<double> heap;
-  double* buffer = stack;
-  if (n > kStack) {
-    heap.resize(5 * (n + 1));
-    buffer = heap.data();
-  }
-  double* r = buffer;
-  double* b = r + (n + 1);
-  double* squares = b + (n + 1);
-  double* prefix = squares + (n + 1);
-  double* suffix = prefix + (n + 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    r[i] = ribbons_[i]->value(p);
-    b[i] = bounds_[i]->value(p);
-    squares[i] = b[i] * b[i];
-  }
-  prefix[0] = 1.0;
-  suffix[n] = 1.0;
-  for (std::size_t k = 0; k < n; ++k) prefix[k + 1] = prefix[k] * squares[k];
-  for (std::size_t k = n; k-- > 0;) suffix[k] = squares[k] * suffix[k + 1];
-  double numerator = weights_.w0 * prefix[n], denominator = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double others = prefix[i] * suffix[i + 1];
-    numerator += weights_.w[i] * (r[i] * others);
-    denominator += weights_.w[i] * others;
-  }
-  if (denominator > 0.0) {
-    const double q = numerator / denominator;
-    if (std::isfinite(q)) return q;
-  }
-  return evaluate<double>(p);  // the 0/0 guard
+  return evaluate<double>(p);
 }
 
 ValueGradient IPatchSurface::value_gradient(const Vec3& p) const {
-  const Jet j = evaluate<Jet>(p);
+  const Jet1 j = evaluate<Jet1>(p);
   return {j.v, j.g};
 }
 
 SecondOrder IPatchSurface::second_order(const Vec3& p) const {
-  const Jet j = evaluate<Jet>(p);
+  const Jet2 j = evaluate<Jet2>(p);
   return {j.v, j.g, j.h};
 }
 

@@ -35,8 +35,8 @@ struct IPatchWeights {
 IPatchWeights rule_a_weights(const std::vector<SurfacePtr>& ribbons, const std::vector<SurfacePtr>& bounds,
                              const Vec3& centre, const std::vector<double>& d, const std::string& patch);
 
-/// An I-patch as a Surface. Exact value, gradient and Hessian (second-order forward differentiation of
-/// the product form, prefix and suffix products: O(n) per point). Never NaN for finite input: where
+/// An I-patch as a Surface. Exact value, gradient and Hessian (forward differentiation of the product
+/// form, accumulated side by side: O(n) per point, no allocation). Never NaN for finite input: where
 /// the denominator vanishes (two or more B_j = 0, e.g. at the corners, where F has a direction-
 /// dependent limit) F is the mean of the ribbons whose B_j vanish, and so are its derivatives.
 /// bound() and gradient_bound() are nullopt: the quotient's denominator is an interval containing 0
@@ -63,8 +63,8 @@ class IPatchSurface final : public Surface {
   const IPatchWeights& weights() const { return weights_; }
 
  private:
-  template <typename Jet>
-  Jet evaluate(const Vec3& p) const;
+  template <typename T>
+  T evaluate(const Vec3& p) const;
 
   std::vector<SurfacePtr> ribbons_;
   std::vector<SurfacePtr> bounds_;
