@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates the table and figures of Sipos & Salvi 2021 (WAIT) with isopatch: Table 1 (vertices and
-# time, marching cubes against projection, one cube cell, three densities) and Figures 1, 2, 5, 6, 7.
+# time, marching cubes against projection, one cube cell, three densities) and Figures 1, 2, 5, 6, 7;
+# the composite-surface figures of its section 4 by scripts/paper_ipatch.sh.
 # Usage: scripts/reproduce_paper.sh [--small] [OUTDIR]      (default OUTDIR: docs/paper)
 # Needs the built tool (build/bin/isopatch, or $ISOPATCH). --small uses tiny sizes (for the test suite).
 set -euo pipefail
@@ -70,4 +71,6 @@ render "$tmp/proj_t.ply" "$out/fig7_projection_wireframe.png" --show wireframe
 for m in mc6 mcfair6 proj6; do
   "$tool" analyze "$tmp/$m.ply" --surface "$six" --box "$cell" --json > "$out/analysis_$m.json"
 done
+# Section 4: composite surfaces (I-patches of a control polyhedron, setback vertex blends).
+if [ "$small" = 1 ]; then bash scripts/paper_ipatch.sh --small "$out"; else bash scripts/paper_ipatch.sh "$out"; fi
 echo "reproduce_paper: wrote $table and the figures in $out"

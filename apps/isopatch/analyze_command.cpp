@@ -249,7 +249,8 @@ Runner add_analyze_command(CLI::App& app) {
   CLI::App* cmd =
       app.add_subcommand("analyze", "Measure a mesh: topology, element shape, valence, accuracy against f");
   cmd->add_option("mesh", o->mesh, "Mesh file: .ply, .obj, .off or .stl")->required();
-  cmd->add_option("--surface", o->surface, "The surface it approximates: catalogue name, formula or @file");
+  cmd->add_option("--surface", o->surface,
+                  "The surface it approximates: catalogue name, formula, @file or a composite (.ipatch)");
   cmd->add_option("--box", o->box,
                   "Box x0,y0,z0,x1,y1,z1 for a formula surface (default: the mesh's bounds)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");

@@ -1,5 +1,6 @@
 #include "cli_support.hpp"
 
+#include <isopatch/composite_mesh.hpp>
 #include <isopatch/error.hpp>
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/resolve_surface.hpp>
@@ -37,6 +38,10 @@ std::map<std::string, double> parse_params(const std::vector<std::string>& items
 SurfacePtr resolve_surface_for_mesh(const std::string& spec, const std::string& box_text,
                                     const std::vector<std::string>& params, const Mesh& mesh) {
   const std::map<std::string, double> values = parse_params(params);
+  if (is_composite_path(spec)) {  // a .ipatch file: the composite as one piecewise surface
+    if (!params.empty()) throw InputError("--param is for formulas, not composite surfaces (.ipatch)");
+    return read_composite(spec).surface();
+  }
   if (!box_text.empty()) return resolve_surface(spec, parse_box(box_text), values);
   try {
     return resolve_surface(spec, std::nullopt, values);

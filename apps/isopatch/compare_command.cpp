@@ -1,5 +1,6 @@
 // `isopatch compare SURFACE`: Marching Cubes, MC + fairing and projection at matched vertex counts.
 #include <isopatch/compare.hpp>
+#include <isopatch/composite_mesh.hpp>
 #include <isopatch/curvature.hpp>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/render.hpp>
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "cli_support.hpp"
 #include "commands.hpp"
@@ -95,8 +97,15 @@ int run_compare(const CompareOptions& o) {
   settings.base.resolution = o.resolution;
   settings.edge_lengths = o.edge_lengths;
   settings.fair_iterations = o.fair;
-  const SurfacePtr surface = resolve_surface(o.surface, settings.base.box, parse_params(o.params));
-  std::vector<ComparisonRow> rows = compare_methods(*surface, settings);
+  if (is_composite_path(o.surface) && !o.params.empty())
+    throw InputError("--param is for formulas, not composite surfaces (.ipatch)");
+  std::optional<CompositeModel> composite;  // a .ipatch file: projection meshes it with its known curves
+  if (is_composite_path(o.surface)) composite.emplace(read_composite(o.surface));
+  const SurfacePtr surface = composite
+                                 ? composite->surface()
+                                 : resolve_surface(o.surface, settings.base.box, parse_params(o.params));
+  std::vector<ComparisonRow> rows =
+      composite ? compare_methods(*composite, settings) : compare_methods(*surface, settings);
   if (o.json)
     print_json(surface->name(), rows);
   else
@@ -111,7 +120,8 @@ Runner add_compare_command(CLI::App& app) {
   auto o = std::make_shared<CompareOptions>();
   CLI::App* cmd =
       app.add_subcommand("compare", "Compare marching cubes, MC + fairing and projection on a surface");
-  cmd->add_option("surface", o->surface, "Catalogue name, formula or @file")->required();
+  cmd->add_option("surface", o->surface, "Catalogue name, formula, @file or a composite surface (.ipatch)")
+      ->required();
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value");
   cmd->add_option("--edge-length", o->edge_lengths, "Projection edge lengths, one per density level");

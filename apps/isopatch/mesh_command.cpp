@@ -1,4 +1,5 @@
 // `isopatch mesh`: SURFACE (catalogue name, formula or @file) -> Settings -> mesh_surface -> file.
+#include <isopatch/composite_mesh.hpp>
 #include <isopatch/curvature.hpp>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/mesh_io.hpp>
@@ -113,7 +114,12 @@ int run_mesh(const MeshOptions& o) {
                      "'");
   if (is_volume_path(o.surface) && !o.params.empty())
     throw InputError("--param is for formulas, not volumes");
-  const SurfacePtr surface = is_volume_path(o.surface)
+  if (is_composite_path(o.surface) && !o.params.empty())
+    throw InputError("--param is for formulas, not composite surfaces (.ipatch)");
+  std::optional<CompositeModel> composite;  // a .ipatch file: its patches are meshed with their curves
+  if (is_composite_path(o.surface)) composite.emplace(read_composite(o.surface));
+  const SurfacePtr surface = composite ? composite->surface()
+                             : is_volume_path(o.surface)
                                  ? volume_input(o.surface, o.volume)
                                  : resolve_surface(o.surface, settings.box, parse_params(o.params));
   MeshStats stats;
@@ -123,7 +129,8 @@ int run_mesh(const MeshOptions& o) {
                  settings.method == Method::MarchingCubes ? "slabs" : "partition rounds");
     settings.progress = [&line](const Progress& p) { line->update(p); };
   }
-  Mesh mesh = mesh_surface(*surface, settings, &stats);
+  Mesh mesh =
+      composite ? mesh_composite(*composite, settings, &stats) : mesh_surface(*surface, settings, &stats);
   line.reset();
   if (o.fields) attach_fields(mesh, *surface);
   const bool glb = format_from_path(o.output) == MeshFormat::Glb;
@@ -141,7 +148,8 @@ Runner add_mesh_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("mesh", "Mesh an implicit surface f(x,y,z) = 0 and write the mesh");
   cmd->add_option(
          "surface", o->surface,
-         "Catalogue name (see 'isopatch surfaces'), a formula, @file, or a sampled volume (.npy, .nrrd)")
+         "Catalogue name (see 'isopatch surfaces'), a formula, @file, a sampled volume (.npy, .nrrd) or a "
+         "composite surface (.ipatch: control polyhedron or setback blends)")
       ->required();
   cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off, .stl or .glb (glTF 2.0 binary)")
       ->required();

@@ -15,6 +15,13 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
                  "ambiguous face or edges crossed twice: sheets closer than that may be joined or dropped "
                  "there (a larger --max-depth looks finer)\n",
                  doubtful, w.depth_limit, w.doubtful_cell_size);
+  if (w.fan_patches > 0)
+    std::fprintf(
+        out,
+        "warning: %zu patches of the composite were still rejected after refining their curves and "
+        "are closed by fans over their boundaries (%zu fan centres off the surface): their functions "
+        "leave their regions or fold there\n",
+        w.fan_patches, w.unprojected_fan_centres);
   if (w.error_bound_violations.value_or(0) > 0)
     std::fprintf(out, "warning: %zu triangles have their centroid farther than --max-error from f = 0\n",
                  *w.error_bound_violations);

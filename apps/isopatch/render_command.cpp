@@ -178,7 +178,8 @@ Runner add_render_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option(
       "--surface", o->surface,
-      "Surface to compute curvature and distance fields against (else they are read from the mesh)");
+      "Surface to compute curvature and distance fields against, a composite (.ipatch) too (else they "
+      "are read from the mesh)");
   cmd->add_option("--box", o->box,
                   "Box of a --surface formula: x0,y0,z0,x1,y1,z1 (default: the mesh's bounds)");
   cmd->add_option("--param", o->params,

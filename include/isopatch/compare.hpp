@@ -4,6 +4,7 @@
 /// evaluation (Sipos & Salvi 2021, sec. 3 and Figures 1, 2): Marching Cubes, Marching Cubes followed by
 /// Laplace fairing, and projection, measured with the metrics of metrics.hpp.
 
+#include <isopatch/composite_mesh.hpp>
 #include <isopatch/mesh.hpp>
 #include <isopatch/settings.hpp>
 #include <isopatch/surface.hpp>
@@ -39,5 +40,10 @@ struct ComparisonSettings {
 /// vertex count comes closest to the projection mesh's, then the same MC mesh faired.
 /// \throw whatever the meshers throw (InputError, EvaluationError, NoSurfaceError, LimitError).
 std::vector<ComparisonRow> compare_methods(const Surface& surface, const ComparisonSettings& settings);
+
+/// The same for a composite surface: projection by mesh_composite() (its known curves, sampled once),
+/// Marching Cubes and fairing on the composite as one piecewise surface, all measured against it.
+/// \throw as mesh_composite() and mesh_surface().
+std::vector<ComparisonRow> compare_methods(const CompositeModel& model, const ComparisonSettings& settings);
 
 }  // namespace isopatch

@@ -4,6 +4,7 @@
 
 #include <isopatch/callable_surface.hpp>
 #include <isopatch/catalogue.hpp>
+#include <isopatch/composite_mesh.hpp>
 #include <isopatch/error.hpp>
 #include <isopatch/fairing.hpp>
 #include <isopatch/geometry.hpp>

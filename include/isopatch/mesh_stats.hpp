@@ -115,6 +115,10 @@ struct MeshWarnings {
   int depth_limit = 0;              ///< the depth those cells are at
   /// With Settings::max_error: triangles whose centroid is still beyond the bound.
   std::optional<std::size_t> error_bound_violations;
+  /// Composite surfaces: patches still rejected after their curves were refined, closed by a fan over
+  /// their boundary, and the fan centres of those that no ray brought onto the patch's function.
+  std::size_t fan_patches = 0;
+  std::size_t unprojected_fan_centres = 0;
 };
 
 struct MeshStats {

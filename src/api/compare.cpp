@@ -44,9 +44,10 @@ Mesh matched_marching_cubes(const Surface& surface, Settings settings, std::size
   return mesh;
 }
 
-}  // namespace
-
-std::vector<ComparisonRow> compare_methods(const Surface& surface, const ComparisonSettings& settings) {
+/// The comparison with `project(settings, stats)` making the projection meshes.
+template <class Project>
+std::vector<ComparisonRow> compare_with(const Surface& surface, const ComparisonSettings& settings,
+                                        Project&& project) {
   std::vector<double> edges = settings.edge_lengths;
   const Box box = settings.base.box.value_or(surface.box());
   if (edges.empty())
@@ -57,7 +58,7 @@ std::vector<ComparisonRow> compare_methods(const Surface& surface, const Compari
     projection.method = Method::Projection;
     projection.edge_length = edges[level];
     MeshStats p_stats;
-    Mesh p_mesh = mesh_surface(surface, projection, &p_stats);
+    Mesh p_mesh = project(projection, p_stats);
     const std::size_t target = p_mesh.vertex_count();
 
     MeshStats mc_stats;
@@ -75,6 +76,18 @@ std::vector<ComparisonRow> compare_methods(const Surface& surface, const Compari
     rows.push_back(measure(surface, "projection", l, std::move(p_mesh), p_stats));
   }
   return rows;
+}
+
+}  // namespace
+
+std::vector<ComparisonRow> compare_methods(const Surface& surface, const ComparisonSettings& settings) {
+  return compare_with(surface, settings,
+                      [&](const Settings& s, MeshStats& stats) { return mesh_surface(surface, s, &stats); });
+}
+
+std::vector<ComparisonRow> compare_methods(const CompositeModel& model, const ComparisonSettings& settings) {
+  return compare_with(*model.surface(), settings,
+                      [&](const Settings& s, MeshStats& stats) { return mesh_composite(model, s, &stats); });
 }
 
 }  // namespace isopatch

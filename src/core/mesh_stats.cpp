@@ -100,6 +100,10 @@ void visit_stats(
     for (const auto& [reason, cells] : w.doubtful_cells_by_reason) v("doubtful_" + reason, count(cells));
   }
   if (w.error_bound_violations) v("error_bound_violations", count(*w.error_bound_violations));
+  if (w.fan_patches > 0) {
+    v("fan_patches", count(w.fan_patches));
+    v("unprojected_fan_centres", count(w.unprojected_fan_centres));
+  }
 }
 
 }  // namespace isopatch

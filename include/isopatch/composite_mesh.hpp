@@ -1,0 +1,65 @@
+#pragma once
+/// \file composite_mesh.hpp
+/// Composite implicit surfaces: patches, each the zero set of its own function inside its own region of
+/// space, meeting along boundary curves known from their construction, such as the I-patches of a
+/// control polyhedron (Sipos, Varady, Salvi & Vaitkus 2020; Varady, Benko, Kos & Rockwood 2001) and
+/// setback vertex blends (Varady & Rockwood 1997), read from `.ipatch` files. Meshed by projection as
+/// Sipos & Salvi 2021, sec. 4, do: the known curves sampled once and shared by both patches (watertight
+/// without welding), the multi-sided C0 Coons patch over them, projection onto each patch's own
+/// function inside its region; or by Marching Cubes on the piecewise function (the patch whose region
+/// holds a point most deeply), for comparison.
+
+#include <isopatch/mesh.hpp>
+#include <isopatch/settings.hpp>
+#include <isopatch/surface.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace isopatch {
+
+struct Composite;  // the description itself (library internal)
+
+/// A composite surface ready to mesh, render and analyse.
+class CompositeModel {
+ public:
+  /// \throw InputError when the composite is empty or has no valid box (see CompositeSurface).
+  explicit CompositeModel(std::shared_ptr<const Composite> composite);
+
+  /// The composite as one Surface: at x, the function of the patch whose region holds x most deeply.
+  const SurfacePtr& surface() const { return surface_; }
+  const Composite& composite() const { return *composite_; }
+  std::size_t patch_count() const;
+
+ private:
+  std::shared_ptr<const Composite> composite_;
+  SurfacePtr surface_;
+};
+
+/// Reads a `.ipatch` file (docs/ipatch.md): a control polyhedron, or a solid with setback vertex blends.
+/// \throw IoError when it cannot be read; InputError "<file>:<line>:<column>: <what>" for malformed
+///        text or topology, "<file>: <what>" for geometry the construction refuses.
+CompositeModel read_composite(const std::string& path);
+/// The same for text in memory; `source_name` names it in errors. \throw InputError as read_composite.
+CompositeModel parse_composite(std::string_view text, std::string_view source_name);
+
+/// Whether `path` names a composite file (it ends in ".ipatch").
+bool is_composite_path(std::string_view path);
+
+/// Meshes the composite with settings.method:
+///   Projection: every curve sampled once (its length over the target edge length, 1..64 segments, or
+///     settings.resolution), a Coons patch per patch projected onto its function inside its region,
+///     rejected patches' curves refined (at most refinement_levels rounds; then a fan, counted in
+///     stats.projection.fallback_cells), then each patch cleaned up on its own function with its
+///     boundary fixed (remesh_iterations, quality; 0 iterations: the paper's method alone). Every
+///     vertex lies on the function of each patch it belongs to.
+///   MarchingCubes: mesh_surface() on model.surface() (grid, fairing and clean-up as for formulas).
+/// Budgets (max_evaluations, time_limit, max_vertices, cancel) and threads as in mesh_surface(); the
+/// same mesh for any thread count. Fills `stats` when given.
+/// \throw InputError for invalid settings or an inconsistent composite (sides that do not close, a
+///        curve used twice the same way); EvaluationError; LimitError.
+Mesh mesh_composite(const CompositeModel& model, const Settings& settings, MeshStats* stats = nullptr);
+
+}  // namespace isopatch

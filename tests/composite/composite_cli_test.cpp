@@ -1,0 +1,100 @@
+// `isopatch mesh FILE.ipatch` (projection and --method mc), render and analyze against the composite,
+// and the exit codes of files that cannot be meshed.
+#include <isopatch/error.hpp>
+#include <isopatch/mesh_io.hpp>
+#include <isopatch/topology.hpp>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#include "error_report.hpp"
+#include "run_command.hpp"
+
+namespace isopatch {
+namespace {
+
+const std::string kCli = ISOPATCH_CLI;
+const std::string kExamples = std::string(ISOPATCH_SOURCE_DIR) + "/examples/";
+
+TEST(CompositeCli, MeshesAFileByProjectionAndByMarchingCubes) {
+  const auto dir = test::scratch_dir("composite_cli");
+  for (const std::string method : {"projection", "mc"}) {
+    const auto out = dir / (method + ".ply");
+    const auto r = test::run_command(kCli + " mesh " + kExamples + "pulled_box.ipatch --method " + method +
+                                         " --edge-length 0.08 --grid 48 -o " + out.string(),
+                                     dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("vertices"), std::string::npos);
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+    const TopologyReport t = analyze_topology(read_mesh(out.string()));
+    EXPECT_TRUE(t.watertight()) << method;
+    EXPECT_TRUE(t.outward_oriented()) << method;
+    EXPECT_EQ(t.genus, 0) << method;
+  }
+  // The same mesh for any thread count.
+  const auto one = dir / "one.ply", two = dir / "two.ply";
+  ASSERT_EQ(
+      test::run_command(kCli + " mesh " + kExamples + "prism.ipatch --threads 1 -q -o " + one.string(), dir)
+          .exit_code,
+      0);
+  ASSERT_EQ(
+      test::run_command(kCli + " mesh " + kExamples + "prism.ipatch --threads 2 -q -o " + two.string(), dir)
+          .exit_code,
+      0);
+  EXPECT_EQ(test::read_text(one), test::read_text(two));
+}
+
+TEST(CompositeCli, RendersAndAnalysesAgainstTheComposite) {
+  const auto dir = test::scratch_dir("composite_cli_fields");
+  const auto mesh = dir / "m.ply";
+  ASSERT_EQ(test::run_command(
+                kCli + " mesh " + kExamples + "cube.ipatch --edge-length 0.2 -q -o " + mesh.string(), dir)
+                .exit_code,
+            0);
+  const auto png = dir / "h.png";
+  const auto r = test::run_command(kCli + " render " + mesh.string() + " --show mean-curvature --surface " +
+                                       kExamples + "cube.ipatch --size 64x64 -q -o " + png.string(),
+                                   dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(png));
+  const auto a =
+      test::run_command(kCli + " analyze " + mesh.string() + " --surface " + kExamples + "cube.ipatch", dir);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  // Every vertex on the composite: the analysis reports its distance from f = 0.
+  EXPECT_NE(a.out.find("distance"), std::string::npos) << a.out;
+}
+
+TEST(CompositeCli, ComparesTheMethodsOnAComposite) {
+  const auto dir = test::scratch_dir("composite_cli_compare");
+  const auto r = test::run_command(kCli + " compare " + kExamples + "cube.ipatch --edge-length 0.3", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* method : {"mc", "mc+fair", "projection"}) EXPECT_NE(r.out.find(method), std::string::npos);
+}
+
+TEST(CompositeCli, RefusesBadFilesWithOneLineAndAnExitCode) {
+  const auto dir = test::scratch_dir("composite_cli_bad");
+  const auto bad = dir / "bad.ipatch";
+  std::ofstream(bad) << "ipatch-model 1\nv 0 0 0\nv 1 0 0\nf 1 2\n";
+  const auto out = (dir / "o.ply").string();
+  auto r = test::run_command(kCli + " mesh " + bad.string() + " -o " + out, dir);
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::InvalidArgument)) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("bad.ipatch:4"), std::string::npos) << r.err;
+  std::ofstream(bad) << "ipatch-model 1\nv nan 0 0\n";
+  r = test::run_command(kCli + " mesh " + bad.string() + " -o " + out, dir);
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::InvalidArgument)) << r.err;
+  r = test::run_command(kCli + " mesh " + (dir / "missing.ipatch").string() + " -o " + out, dir);
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::Io)) << r.err;
+  r = test::run_command(kCli + " mesh " + kExamples + "cube.ipatch --param a=1 -o " + out, dir);
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::InvalidArgument)) << r.err;
+  r = test::run_command(kCli + " mesh " + kExamples + "cube.ipatch --edge-length -1 -o " + out, dir);
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::InvalidArgument)) << r.err;
+  r = test::run_command(kCli + " mesh " + kExamples + "cube.ipatch --max-evaluations 100 -o " + out, dir);
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::Limit)) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace isopatch
