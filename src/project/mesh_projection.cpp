@@ -1,6 +1,7 @@
 // mesh_projection() (include/isopatch/projection.hpp): checks the settings, plans the octree's depths
 // from the target edge length, and runs the refining mesher over it. The one place that chooses the
-// kind of partition; the mesher itself sees only cell_partition.hpp.
+// kind of partition (the octree, or convex cells for a region or given cells: convex_meshing.hpp); the
+// mesher itself sees only cell_partition.hpp.
 #include <isopatch/error.hpp>
 #include <isopatch/projection.hpp>
 
@@ -10,6 +11,7 @@
 
 #include "partition/octree_partitioner.hpp"
 #include "project/cell_sizing.hpp"
+#include "project/convex_meshing.hpp"
 #include "project/refining_mesher.hpp"
 
 namespace isopatch {
@@ -34,6 +36,8 @@ OctreeDepths octree_depths(const SizeSettings& sizes, const PatchSettings& patch
 }  // namespace
 
 Mesh mesh_projection(const Surface& surface, const Settings& settings, MeshStats* stats) {
+  if (const std::optional<Box> convex = convex_meshing_box(surface, settings))
+    return mesh_convex(surface, settings, *convex, stats);
   const auto start = std::chrono::steady_clock::now();
   // The stages this mesher runs check their own settings.
   settings.SizeSettings::validate();
