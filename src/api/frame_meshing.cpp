@@ -37,6 +37,8 @@ Mesh mesh_in_frame(const Surface& surface, const Settings& settings, MeshStats* 
   const Box user = valid_box(settings.box.value_or(surface.box()));
   Settings s = settings;
   s.frame.reset();
+  // Sizes come from the user's box, not from the larger frame box that holds it.
+  s.edge_length = default_edge_length(settings, user);
   s.region = rotated(settings.region, r);
   s.cells.clear();
   for (const ConvexRegion& c : settings.cells) s.cells.push_back(rotated(c, r));
