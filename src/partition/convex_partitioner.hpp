@@ -25,7 +25,7 @@
 namespace isopatch {
 
 struct ConvexPartitionerSettings {
-  int start_level = 3;  ///< lattice: the cubes' starting depth; caller cells: splits at the start
+  int start_level = 0;  ///< lattice: the cubes' starting depth; caller cells: splits at the start
   int max_level = 8;    ///< the deepest level a cell may reach, start_level..20
   int edge_samples = 8;
   double cone_angle_deg = 75.0;

@@ -21,7 +21,7 @@ Box bounds_within(const std::vector<CellPlane>& planes, const Box& box, const ch
                   const std::string& what, bool must_be_inside) {
   ConvexCell cell;
   try {
-    cell = intersect_half_spaces(box, planes);
+    cell = intersect_half_spaces(box, planes, must_be_inside ? 0.0 : 1e-12);
   } catch (const InputError&) {
     throw SettingError(setting, what + (must_be_inside ? " is empty" : " does not meet the box"));
   }
