@@ -59,6 +59,7 @@ RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings&
       break;
   }
   r.box = box;
+  r.cut_planes = s.region;
   r.cancel = s.cancel;
   // The projection mesher's sizes, shared; only where uniform sizes were not asked for by length does
   // the clean-up follow the output's median edge instead of the default length.
