@@ -33,6 +33,14 @@ std::vector<double> numbers(const std::string& text) {
   return out;
 }
 
+/// Text for a one-line message: at most 40 characters, control characters as '?'.
+std::string shown(const std::string& text) {
+  std::string s = text.substr(0, 40);
+  for (char& c : s)
+    if (static_cast<unsigned char>(c) < 32 || c == 127) c = '?';
+  return text.size() > 40 ? s + "..." : s;
+}
+
 std::string plane_problem(const HalfSpace& h) {
   if (!std::isfinite(h.a) || !std::isfinite(h.b) || !std::isfinite(h.c) || !std::isfinite(h.d))
     return "has a coefficient that is not a finite number";
@@ -82,7 +90,8 @@ Mat3 Frame::rotation() const {
 
 Frame parse_frame(const std::string& text) {
   const std::vector<double> v = numbers(trim(text));
-  if (v.size() != 3) throw InputError("frame: want three angles in degrees AZ,EL,ROLL, got '" + text + "'");
+  if (v.size() != 3)
+    throw InputError("frame: want three angles in degrees AZ,EL,ROLL, got '" + shown(text) + "'");
   return Frame{v[0], v[1], v[2]};
 }
 

@@ -117,9 +117,9 @@ void Settings::validate() const {
   if (frame &&
       !(std::isfinite(frame->azimuth) && std::isfinite(frame->elevation) && std::isfinite(frame->roll)))
     throw SettingError("frame", "the frame's angles must be finite numbers");
-  const bool convex = !region.empty() || !cells.empty();
+  const bool convex = !region.empty() || !cells.empty() || frame.has_value();
   if (convex && method != Method::Projection)
-    throw SettingError("method", "a region or given cells need the projection method");
+    throw SettingError("method", "a region, a frame or given cells need the projection method");
   if (!region.empty() && !cells.empty())
     throw SettingError("cells", "given cells and a region do not go together (clip the cells instead)");
 }

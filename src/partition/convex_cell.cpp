@@ -30,7 +30,7 @@ CellPlane make_cell_plane(double a, double b, double c, double d, std::int64_t l
   if (!std::isfinite(a) || !std::isfinite(b) || !std::isfinite(c) || !std::isfinite(d))
     throw InputError("convex cell: a plane has a coefficient that is not a finite number");
   const Vec3 n(a, b, c);
-  const double length = n.norm();
+  const double length = n.stableNorm();
   if (!(length > 0.0)) throw InputError("convex cell: a plane has no normal (a = b = c = 0)");
   return CellPlane{n / length, d / length, label};
 }

@@ -25,7 +25,8 @@ std::vector<CutPlane> cut_planes(const ConvexRegion& region) {
   std::vector<CutPlane> planes;
   for (const HalfSpace& h : region) {
     const Vec3 n(h.a, h.b, h.c);
-    planes.push_back({n / n.norm(), h.d / n.norm()});
+    const double length = n.stableNorm();
+    planes.push_back({n / length, h.d / length});
   }
   return planes;
 }
