@@ -68,6 +68,7 @@ TEST(RegionCli, BadRegionsAndFramesGiveOneLineAndTheirExitCode) {
       {"mesh sphere --region 0,0,1,0 --method mc" + box + out, ErrorKind::InvalidArgument, "--method"},
       {"mesh sphere --region @" + (dir / "missing.txt").string() + box + out, ErrorKind::Io, "cannot read"},
       {"mesh sphere --frame 30,20" + out, ErrorKind::InvalidArgument, "AZ,EL,ROLL"},
+      {"mesh sphere --frame 30,20,10 --method mc" + out, ErrorKind::InvalidArgument, "--method"},
       {"mesh sphere --frame 30,nan,1" + out, ErrorKind::InvalidArgument, "frame"},
   };
   for (const Case& c : cases) {
