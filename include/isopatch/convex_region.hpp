@@ -6,6 +6,7 @@
 
 #include <isopatch/geometry.hpp>
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -19,13 +20,18 @@ struct HalfSpace {
 /// A convex polytope: the intersection of its half-spaces.
 using ConvexRegion = std::vector<HalfSpace>;
 
+/// The most planes a region (or one given cell) may have, and the most cells a caller may give.
+inline constexpr std::size_t kMaxRegionPlanes = 1000;
+inline constexpr std::size_t kMaxGivenCells = 100000;
+
 /// Parses "a,b,c,d;a,b,c,d;..." (';' or line breaks between planes, blank lines and lines starting
 /// with '#' ignored) into half-spaces.
 /// \throw InputError naming the plane (1-based) that is not four finite numbers or has a = b = c = 0,
-///        or when there is no plane at all.
+///        when there is no plane at all, or more than kMaxRegionPlanes.
 ConvexRegion parse_region(const std::string& text);
 
-/// Checks a region's planes: finite, with a normal. `setting` names the field in the error.
+/// Checks a region's planes: at most kMaxRegionPlanes, finite, with a normal. `setting` names the field
+/// in the error.
 /// \throw SettingError(setting, ...) naming the first bad plane.
 void validate_region(const ConvexRegion& region, const char* setting);
 

@@ -69,12 +69,17 @@ ConvexRegion parse_region(const std::string& text) {
     if (const std::string problem = plane_problem(h); !problem.empty())
       throw InputError("region: plane " + index + " " + problem);
     region.push_back(h);
+    if (region.size() > kMaxRegionPlanes)
+      throw InputError("region: more than " + std::to_string(kMaxRegionPlanes) + " planes");
   }
   if (region.empty()) throw InputError("region: no plane given (want a,b,c,d;a,b,c,d;...)");
   return region;
 }
 
 void validate_region(const ConvexRegion& region, const char* setting) {
+  if (region.size() > kMaxRegionPlanes)
+    throw SettingError(setting, "a region or cell has at most " + std::to_string(kMaxRegionPlanes) +
+                                    " planes, got " + std::to_string(region.size()));
   for (std::size_t i = 0; i < region.size(); ++i)
     if (const std::string problem = plane_problem(region[i]); !problem.empty())
       throw SettingError(setting, "plane " + std::to_string(i + 1) + " of the region " + problem);

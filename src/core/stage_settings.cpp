@@ -113,6 +113,9 @@ void Settings::validate() const {
   BudgetSettings::validate();
   if (box) valid_box(*box);
   validate_region(region, "region");
+  if (cells.size() > kMaxGivenCells)
+    throw SettingError(
+        "cells", "at most " + std::to_string(kMaxGivenCells) + " cells, got " + std::to_string(cells.size()));
   for (const ConvexRegion& cell : cells) validate_region(cell, "cells");
   if (frame &&
       !(std::isfinite(frame->azimuth) && std::isfinite(frame->elevation) && std::isfinite(frame->roll)))

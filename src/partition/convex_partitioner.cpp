@@ -91,10 +91,21 @@ ConvexPartitioner ConvexPartitioner::given_cells(const Surface& surface, const B
       throw InputError("convex partition: cell " + std::to_string(i) + " has no volume inside the box");
     }
   }
-  // Overlaps: a cell clipped by another's planes keeps volume.
-  for (std::size_t i = 0; i < p.given_.size(); ++i)
-    for (std::size_t j = i + 1; j < p.given_.size(); ++j) {
-      const Box a = p.given_[i].cell.bounds(), b = p.given_[j].cell.bounds();
+  // Overlaps: a cell clipped by another's planes keeps volume. Candidate pairs by a sweep along x.
+  std::vector<Box> bounds;
+  std::vector<std::size_t> order(p.given_.size());
+  for (std::size_t i = 0; i < p.given_.size(); ++i) {
+    bounds.push_back(p.given_[i].cell.bounds());
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return bounds[a].lo.x() < bounds[b].lo.x() || (bounds[a].lo.x() == bounds[b].lo.x() && a < b);
+  });
+  for (std::size_t oi = 0; oi < order.size(); ++oi)
+    for (std::size_t oj = oi + 1; oj < order.size() && bounds[order[oj]].lo.x() < bounds[order[oi]].hi.x();
+         ++oj) {
+      const std::size_t i = std::min(order[oi], order[oj]), j = std::max(order[oi], order[oj]);
+      const Box &a = bounds[i], &b = bounds[j];
       if ((a.lo.array() >= b.hi.array()).any() || (b.lo.array() >= a.hi.array()).any()) continue;
       ConvexCell common = p.given_[i].cell;
       const ConvexCell& other = p.given_[j].cell;

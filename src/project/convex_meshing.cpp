@@ -1,16 +1,9 @@
-// The projection mesher over convex partitions (convex_meshing.hpp).
+// The region and the box of convex partitions (convex_meshing.hpp).
 #include "project/convex_meshing.hpp"
 
 #include <isopatch/error.hpp>
-#include <isopatch/projection.hpp>
 
-#include <chrono>
 #include <string>
-
-#include "partition/convex_partitioner.hpp"
-#include "partition/octree_partitioner.hpp"
-#include "project/cell_sizing.hpp"
-#include "project/refining_mesher.hpp"
 
 namespace isopatch {
 namespace {
@@ -68,54 +61,6 @@ std::optional<Box> convex_meshing_box(const Surface& surface, const Settings& se
     all.hi = all.hi.cwiseMax(b.hi);
   }
   return given ? within : grown(all);
-}
-
-Mesh mesh_convex(const Surface& surface, const Settings& settings, const Box& box, MeshStats* stats) {
-  const auto start = std::chrono::steady_clock::now();
-  settings.SizeSettings::validate();
-  settings.OctreeSettings::validate();
-  settings.PatchSettings::validate();
-  settings.ProjectionSettings::validate();
-  settings.BudgetSettings::validate();
-  const double edge = default_edge_length(settings, box);
-  ConvexPartitionerSettings s;
-  s.cancel = settings.cancel;
-  if (!settings.region.empty()) {
-    // The octree's depths for this box: the region's cells are its cubes, clipped.
-    OctreeDepthRequest request;
-    request.closest = settings.resolution > 0;
-    request.cell_length = edge * (settings.resolution > 0 ? settings.resolution : kAutoSegments);
-    request.min_depth = settings.min_depth;
-    request.max_depth = settings.max_depth;
-    request.raise_limit_by = settings.resolution != 0 ? -1 : settings.refinement_levels;
-    const OctreeDepths depths = plan_octree_depths(box, request);
-    s.start_level = depths.start;
-    s.max_level = depths.limit;
-  } else {
-    s.start_level = 0;
-    s.max_level = std::min(kMaxPartitionLevel, settings.refinement_levels + 4);
-  }
-  const CellMesherSettings stages{settings, settings, settings};
-  const TargetSizes sizes = target_sizes(settings, box);
-  Mesh mesh;
-  if (!settings.region.empty()) {
-    ConvexPartitioner partitioner =
-        ConvexPartitioner::clipped_lattice(surface, box, cell_planes(settings.region), s);
-    mesh = mesh_refining(surface, partitioner, settings, stages, sizes, stats);
-  } else {
-    std::vector<std::vector<CellPlane>> cells;
-    for (const ConvexRegion& c : settings.cells) cells.push_back(cell_planes(c));
-    try {
-      ConvexPartitioner partitioner = ConvexPartitioner::given_cells(surface, box, cells, s);
-      mesh = mesh_refining(surface, partitioner, settings, stages, sizes, stats);
-    } catch (const SettingError&) {
-      throw;
-    } catch (const InputError& e) {
-      throw SettingError("cells", e.what());
-    }
-  }
-  if (stats) stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return mesh;
 }
 
 }  // namespace isopatch

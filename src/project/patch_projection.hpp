@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "partition/convex_cell.hpp"
+#include "partition/cell_partition.hpp"
 #include "patch/base_surface.hpp"
 #include "patch/patch_template.hpp"
 #include "project/surface_point.hpp"
