@@ -13,6 +13,8 @@
 #include <tbb/parallel_for.h>
 
 #include "partition/cell_checks.hpp"
+#include "partition/cell_tests.hpp"
+#include "partition/convex_cell_tests.hpp"
 #include "partition/convex_overlay.hpp"
 #include "partition/point_index.hpp"
 #include "surface/bracketed_root.hpp"
@@ -126,6 +128,7 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
     }
   out.corners.resize(crossed.size());
   std::vector<std::uint64_t> root_evaluations(crossed.size(), 0);
+  std::vector<std::uint8_t> certified(segments.size(), 0);
   const int samples = settings.edge_samples;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, segments.size(), 64), [&](const auto& range) {
     check_cancel(settings);
@@ -135,14 +138,16 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
       if (differ && !is_negative(values[a])) std::swap(a, b);  // a: the negative end
       int changes = 0;
       bool last = is_negative(values[a]);
-      for (int k = 1; k <= samples; ++k) {
+      // f monotone along the segment: at most the one sign change its ends show, no samples needed.
+      certified[s] = settings.use_intervals && segment_monotone_by_interval(surface, P[a], P[b]) ? 1 : 0;
+      for (int k = 1; k <= samples && !certified[s]; ++k) {
         const bool now =
             is_negative(f.value(P[a] + (static_cast<double>(k) / (samples + 1)) * (P[b] - P[a])));
         changes += now != last ? 1 : 0;
         last = now;
       }
       changes += is_negative(values[b]) != last ? 1 : 0;
-      edge_ok[s] = changes == (differ ? 1 : 0) ? 1 : 0;
+      edge_ok[s] = certified[s] || changes == (differ ? 1 : 0) ? 1 : 0;
       if (!differ) continue;
       const Vec3 A = P[a], d = P[b] - P[a];
       std::uint64_t count = 0;
@@ -158,6 +163,19 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
       out.corners[i] = CellCorner{position, d, f.value_gradient(position).gradient};
     }
   });
+  // Gradients at the vertices of the wanted cells, for the face and normal-cone tests.
+  std::vector<std::uint32_t> wanted_points;
+  for (std::size_t c = 0; c < leaves.size(); ++c)
+    for (std::uint32_t piece : overlay.cell_pieces[c])
+      wanted_points.insert(wanted_points.end(), overlay.pieces[piece].vertices.begin(),
+                           overlay.pieces[piece].vertices.end());
+  std::sort(wanted_points.begin(), wanted_points.end());
+  wanted_points.erase(std::unique(wanted_points.begin(), wanted_points.end()), wanted_points.end());
+  std::vector<Vec3> gradients(P.size(), Vec3::Zero());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, wanted_points.size(), 256), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i)
+      gradients[wanted_points[i]] = f.value_gradient_unchecked(P[wanted_points[i]]).gradient;
+  });
   // 4. Per cell: the sides within each piece, chained into loops, and the verdict.
   const double cos_cone = std::cos(settings.cone_angle_deg * std::numbers::pi / 180.0);
   std::vector<CellVerdict> verdicts(leaves.size());
@@ -167,7 +185,8 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
       if (!wanted[c]) continue;
       CellVerdict& verdict = verdicts[c];
       std::vector<PieceSide> sides;
-      bool ambiguous = false, edges = true;
+      bool ambiguous = false, edges = true, faces = true;
+      std::vector<Vec3> cone;  // gradients at the cell's vertices and corners
       for (std::uint32_t piece : overlay.cell_pieces[c]) {
         const std::vector<std::uint32_t> v = oriented(overlay.pieces[piece], static_cast<std::uint32_t>(c));
         std::vector<std::pair<std::uint32_t, bool>> events;  // crossing, entering the negative part
@@ -178,7 +197,11 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
           if (crossing_of[s] < 0) continue;
           events.emplace_back(static_cast<std::uint32_t>(crossing_of[s]), is_negative(values[b]));
         }
+        for (std::uint32_t id : v) cone.push_back(gradients[id]);
         if (events.empty()) continue;
+        std::vector<Vec3> in_face;
+        for (std::uint32_t id : v) in_face.push_back(gradients[id]);
+        faces = faces && in_plane_gradients_agree(in_face, overlay.pieces[piece].normal);
         // Rotate to start at an entering crossing; crossings then alternate entering, leaving.
         const auto first = std::find_if(events.begin(), events.end(), [](const auto& e) { return e.second; });
         std::rotate(events.begin(), first, events.end());
@@ -228,14 +251,13 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
         Vec3 mean = Vec3::Zero(), newell = Vec3::Zero();
         for (std::size_t k = 0; k < loop.corners.size(); ++k) {
           mean += out.corners[loop.corners[k]].gradient.normalized();
+          cone.push_back(out.corners[loop.corners[k]].gradient);
           newell += out.corners[loop.corners[k]].position.cross(
               out.corners[loop.corners[(k + 1) % loop.corners.size()]].position);
         }
-        const Vec3 axis = mean.normalized();
-        bool cone = mean.norm() > 0.0;
-        for (std::uint32_t k : loop.corners)
-          cone = cone && out.corners[k].gradient.normalized().dot(axis) >= cos_cone;
-        if (!cone)
+        if (!faces)
+          verdict.reason = ComplexReason::FaceTest;
+        else if (!gradients_within_cone(cone, cos_cone))
           verdict.reason = ComplexReason::NormalCone;
         else if (!(newell.dot(mean) > 0.0))
           verdict.reason = ComplexReason::Orientation;
@@ -295,6 +317,7 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
     out.cells.push_back(std::move(cell));
   }
   out.stats.cells_visited = leaves.size();
+  for (std::uint8_t c : certified) out.stats.edges_certified_by_interval += c;
   for (std::uint64_t n : root_evaluations) out.stats.root_evaluations += n;
   out.stats.value_evaluations = f.value_count();
   out.stats.gradient_evaluations = f.gradient_count();

@@ -7,8 +7,10 @@
 /// piece links its crossings by the sign rule (the negative vertices on the right of a side, seen
 /// from outside), and the pieces' sides chain into loops. The single-sheet tests of
 /// docs/algorithms.md 2.9 run on the general cells: several loops, ambiguous pieces (4 or more
-/// crossings, resolved by the sign at the piece's centre), the edge test on every segment, the normal
-/// cone at the corners, and the orientation of the loop against the gradients.
+/// crossings, resolved by the sign at the piece's centre), the edge test on every segment (certified
+/// without samples where the gradient bound proves f monotone along it), the face test on every piece
+/// with crossings (in-plane gradients at its vertices agree), the normal cone of the gradients at the
+/// cell's vertices and corners, and the orientation of the loop against the gradients.
 
 #include <isopatch/surface.hpp>
 
@@ -30,7 +32,9 @@ struct ConvexLeaf {
 struct ConvexPartitionSettings {
   int edge_samples = 8;          ///< points inside each segment for the edge test, >= 0
   double cone_angle_deg = 75.0;  ///< normal-cone half-angle, (0, 90]
-  int start_level = 0;           ///< CellPartition::start_level
+  /// Certify monotone segments by Surface::gradient_bound (no edge samples there) where it is offered.
+  bool use_intervals = true;
+  int start_level = 0;  ///< CellPartition::start_level
   /// A partition given by a caller: gaps and overlaps between faces are input errors.
   bool strict = false;
   const std::atomic<bool>* cancel = nullptr;
