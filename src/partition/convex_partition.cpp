@@ -99,9 +99,25 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
   std::vector<ConvexCell> cells;
   cells.reserve(leaves.size());
   for (const ConvexLeaf& leaf : leaves) cells.push_back(leaf.cell);
-  const Overlay overlay = overlay_cells(cells, wanted, points, settings.strict);
-  sample_new_points(f, points, values);
-  check_cancel(settings);
+  // A neighbour whose own vertices share a sign may still see the surface through a shared piece (a
+  // finer neighbour's vertex inside its face has the other sign): it holds the surface too. Grown
+  // until no piece of a wanted cell with a sign change leads to an unwanted one.
+  Overlay overlay;
+  for (bool grown = true; grown;) {
+    overlay = overlay_cells(cells, wanted, points, settings.strict);
+    sample_new_points(f, points, values);
+    check_cancel(settings);
+    grown = false;
+    for (std::size_t c = 0; c < leaves.size(); ++c)
+      for (std::uint32_t piece : overlay.cell_pieces[c]) {
+        const OverlayPiece& op = overlay.pieces[piece];
+        const std::uint32_t other = op.cells[0] == c ? op.cells[1] : op.cells[0];
+        if (other == kNoNeighbour || wanted[other]) continue;
+        bool neg = false, pos = false;
+        for (std::uint32_t v : op.vertices) (is_negative(values[v]) ? neg : pos) = true;
+        if (neg && pos) wanted[other] = grown = true;
+      }
+  }
   const auto& P = points.points();
   // 3. Segments of the wanted cells: crossings where the end signs differ, the edge test on all.
   std::vector<SegmentPair> segments;

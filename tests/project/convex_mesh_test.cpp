@@ -223,6 +223,31 @@ TEST(ConvexMesh, SphereInAPolytopeHasItsBoundaryOnThePlanes) {
   EXPECT_GE(min_angle_degrees(mesh), 20.0);  // the cut vertices slide along their planes in the clean-up
 }
 
+TEST(ConvexMesh, RefinedRegionCellsLeaveNoCracks) {
+  // Thin surfaces make the region's cells split: a coarse cell then meets finer ones, and a finer
+  // neighbour's vertex inside its face may carry the only sign change it sees. The raw mesh (no
+  // clean-up) has its boundary on the region's plane only: no crack between cells of two sizes.
+  for (const char* name : {"double_torus", "genus2"}) {
+    SCOPED_TRACE(name);
+    const SurfacePtr f = resolve_surface(name, std::nullopt, {});
+    Settings s;
+    s.box = f->box();
+    s.region = {{1, 0.3, 0.2, -0.1}};
+    s.remesh_iterations = 0;
+    MeshStats stats;
+    const Mesh mesh = mesh_surface(*f, s, &stats);
+    ASSERT_TRUE(stats.projection);
+    EXPECT_GT(stats.projection->refinements, 0u);
+    const TopologyReport topo = analyze_topology(mesh);
+    EXPECT_TRUE(topo.manifold());
+    EXPECT_TRUE(topo.consistently_oriented());
+    const BoundaryReport b = boundary(mesh, s.region, 1e-12 * s.box->diagonal());
+    EXPECT_GT(b.edges, 0u);
+    EXPECT_EQ(b.edges_off_one_plane, 0u);
+    EXPECT_TRUE(b.every_vertex_of_degree_two);
+  }
+}
+
 TEST(ConvexMesh, RegionMeshIsTheSameForAnyThreadCount) {
   const SurfacePtr f = resolve_surface("torus", std::nullopt, {});
   Settings s;
