@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "mesh_checks.hpp"
+#include "partition/lattice.hpp"
 #include "self_intersection.hpp"
 
 namespace isopatch {
@@ -223,6 +224,30 @@ TEST(ConvexMesh, SphereInAPolytopeHasItsBoundaryOnThePlanes) {
   EXPECT_GE(analyze_valence(mesh).share_6, 0.9);
   EXPECT_GE(interior_min_angle(mesh, b.boundary_vertices), 20.0);
   EXPECT_GE(min_angle_degrees(mesh), 20.0);  // the cut vertices slide along their planes in the clean-up
+}
+
+TEST(ConvexMesh, RegionPlaneOnOrNearALatticePlane) {
+  // The lattice's middle plane in z (a plane of every depth), and planes 1e-13, 1e-9 and 1e-6 of the box
+  // from it: a sliver of cells, or a plane that coincides with their faces. Each is one disc whose
+  // boundary lies on the region's plane, and the clean-up leaves no angle under 20 degrees.
+  const SurfacePtr f = resolve_surface("sphere", std::nullopt, {});
+  const Lattice lattice = make_lattice(kSphereBox, 8);
+  const double middle = lattice.point({0, 0, 1u << 7}).z();
+  for (double offset : {0.0, 1e-13, 1e-9, -1e-9, 1e-6}) {
+    SCOPED_TRACE(offset);
+    Settings s;
+    s.box = kSphereBox;
+    s.region = {{0, 0, 1, -(middle + offset)}};
+    const Mesh mesh = mesh_surface(*f, s);
+    const TopologyReport topo = analyze_topology(mesh);
+    EXPECT_EQ(topo.components.size(), 1u);
+    EXPECT_EQ(topo.euler_characteristic, 1);
+    EXPECT_TRUE(topo.manifold());
+    const BoundaryReport b = boundary(mesh, s.region, 1e-12 * kSphereBox.diagonal());
+    EXPECT_EQ(b.loops, 1u);
+    EXPECT_EQ(b.edges_off_one_plane, 0u);
+    EXPECT_GE(min_angle_degrees(mesh), 20.0);
+  }
 }
 
 TEST(ConvexMesh, RefinedRegionCellsLeaveNoCracks) {
