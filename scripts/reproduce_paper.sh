@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates the table and figures of Sipos & Salvi 2021 (WAIT) with isopatch: Table 1 (vertices and
-# time, marching cubes against projection, one cube cell, three densities) and Figures 1, 2, 5, 6, 7;
-# the composite-surface figures of its section 4 by scripts/paper_ipatch.sh.
+# time, marching cubes against projection, one cube cell, three densities), Figures 1, 2, 5, 6, 7 and the
+# five-sided patch in a general convex cell; the composite-surface figures of its section 4 by
+# scripts/paper_ipatch.sh.
 # Usage: scripts/reproduce_paper.sh [--small] [OUTDIR]      (default OUTDIR: docs/paper)
 # Needs the built tool (build/bin/isopatch, or $ISOPATCH). --small uses tiny sizes (for the test suite).
 set -euo pipefail
@@ -66,6 +67,23 @@ render "$tmp/proj6.ply" "$out/fig6_projection_isophotes.png" --show isophotes
 "$tool" mesh "$six" "${one_cell[@]}" --resolution "${r[0]}" -o "$tmp/proj_t.ply" -q
 render "$tmp/mc_t.ply" "$out/fig7_mc_wireframe.png" --show wireframe
 render "$tmp/proj_t.ply" "$out/fig7_projection_wireframe.png" --show wireframe
+
+# The five-sided patch (sec. 2: "any convex partitioning which is made of planar cuts"): one general
+# convex cell, the box cut by five oblique planes around the z axis, holding a curved sheet that crosses
+# its five slanted side faces; one cell (depth 0, no refinement), meshed by projection alone.
+five="z - 0.2 + 0.35*(x^2 + y^2) - 0.15*x*y"
+five_box="-1,-1,-1,1,1,1"
+five_cell="0.955336,0.295520,0.30,-0.75;0.014159,0.999900,-0.20,-0.75;-0.946586,0.322452,0.30,-0.75;"
+five_cell+="-0.599181,-0.800614,-0.20,-0.75;0.576272,-0.817258,0.30,-0.75"
+"$tool" mesh "$five" --box "$five_box" --region "$five_cell" --min-depth 0 --max-depth 0 --refinement-levels 0 \
+  --resolution "$fig_r" --remesh 0 -o "$tmp/five.ply" > "$tmp/five.txt"
+grep -q '^patches_5 *1$' "$tmp/five.txt" || { echo "reproduce_paper: the five-sided cell gave no 5-sided patch" >&2; exit 1; }
+view5=(--view 20,55 --size "$size" --projection orthographic)
+"$tool" render "$tmp/five.ply" -o "$out/five_sided_wireframe.png" "${view5[@]}" -q --show wireframe
+"$tool" render "$tmp/five.ply" -o "$out/five_sided_mean_curvature.png" "${view5[@]}" -q --show mean-curvature \
+  --surface "$five" --box "$five_box" --range 1
+"$tool" render "$tmp/five.ply" -o "$out/five_sided_isophotes.png" "${view5[@]}" -q --show isophotes
+"$tool" analyze "$tmp/five.ply" --surface "$five" --box "$five_box" --json > "$out/analysis_five.json"
 
 # Curvature error of the figure meshes, for the text.
 for m in mc6 mcfair6 proj6; do

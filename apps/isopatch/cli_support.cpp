@@ -11,6 +11,7 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 
 namespace isopatch::cli {
@@ -80,6 +81,23 @@ std::string group_digits(unsigned long long n) {
     out.push_back(digits[i]);
   }
   return out;
+}
+
+ConvexRegion region_argument(const std::string& text) {
+  if (text.empty() || text.front() != '@') return parse_region(text);
+  const std::string path = text.substr(1);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot read the region file '" + path + "'");
+  constexpr std::size_t kMaxBytes = std::size_t{1} << 20;
+  std::string content(kMaxBytes + 1, '\0');
+  in.read(content.data(), static_cast<std::streamsize>(content.size()));
+  content.resize(static_cast<std::size_t>(in.gcount()));
+  if (content.size() > kMaxBytes) throw IoError("the region file '" + path + "' is larger than 1 MiB");
+  try {
+    return parse_region(content);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
 }
 
 }  // namespace isopatch::cli

@@ -1,6 +1,7 @@
 #pragma once
 // Small helpers shared by the subcommands: parameters, output checks, number formatting.
 
+#include <isopatch/convex_region.hpp>
 #include <isopatch/mesh.hpp>
 #include <isopatch/surface.hpp>
 
@@ -27,6 +28,10 @@ void check_output_path(const std::string& path);
 /// Checks that the folder of `path` exists and is writable and that `path` is not a folder.
 /// \throw IoError otherwise.
 void check_writable_location(const std::string& path);
+
+/// The planes of `--region TEXT`: "a,b,c,d;..." or @FILE with one plane a line (parse_region).
+/// \throw InputError for malformed planes; IoError when the file cannot be read or exceeds 1 MiB.
+ConvexRegion region_argument(const std::string& text);
 
 /// "12345" -> "12,345" style grouping for counts in summaries.
 std::string group_digits(unsigned long long n);

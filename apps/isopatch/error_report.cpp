@@ -39,7 +39,9 @@ std::string flag_for_setting(const std::string& setting) {
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
   }};
-  static constexpr std::array<std::string_view, 27> kSameName{"box",
+  static constexpr std::array<std::string_view, 29> kSameName{"box",
+                                                              "region",
+                                                              "frame",
                                                               "colour",
                                                               "method",
                                                               "edge_length",

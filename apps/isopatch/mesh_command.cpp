@@ -30,6 +30,8 @@ struct MeshOptions {
   std::string output;
   std::string method = "projection";
   std::string box;
+  std::string region;
+  std::string frame;
   std::vector<std::string> params;
   std::string edge_root = "bracketed";
   int grid = 64;
@@ -67,6 +69,8 @@ int run_mesh(const MeshOptions& o) {
   Settings settings;
   settings.method = parse_method(o.method);
   if (!o.box.empty()) settings.box = parse_box(o.box);
+  if (!o.region.empty()) settings.region = region_argument(o.region);
+  if (!o.frame.empty()) settings.frame = parse_frame(o.frame);
   settings.grid = o.grid;
   settings.grid_offset = o.grid_offset;
   settings.fair_iterations = o.fair;
@@ -155,6 +159,11 @@ Runner add_mesh_command(CLI::App& app) {
       ->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
   cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
+  cmd->add_option(
+      "--region", o->region,
+      "Projection: mesh inside the convex polytope of planes 'a,b,c,d;...' (a x + b y + c z + d <= 0), "
+      "or @FILE with one plane a line; inside --box, or instead of it when bounded");
+  cmd->add_option("--frame", o->frame, "The partition in a frame rotated by AZ,EL,ROLL degrees");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
   cmd->add_option("--level", o->volume.level, "Volume: the level of the samples to mesh (default 0)");
   cmd->add_option("--spacing", o->volume.spacing,

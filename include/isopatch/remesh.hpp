@@ -19,6 +19,7 @@
 /// vertex on one box face slides along the curve where f = 0 meets that face and may be merged into
 /// its neighbour on the cut; those on box edges and corners, and every boundary without a box, stay.
 
+#include <isopatch/convex_region.hpp>
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh.hpp>
 #include <isopatch/mesh_stats.hpp>
@@ -70,6 +71,9 @@ struct RemeshSettings {
   int final_relaxation_rounds = 8;
   /// Vertices never leave this box (moves that would are skipped). Empty: no constraint.
   std::optional<Box> box;
+  /// The planes of a region that cut the surface open (Settings::region): vertices stay inside them; a
+  /// cut vertex on exactly one of them (and on no box face) slides along it, like one on a box face.
+  ConvexRegion cut_planes;
   /// When set and true, stops with LimitError("cancelled") at the next check.
   const std::atomic<bool>* cancel = nullptr;
 };

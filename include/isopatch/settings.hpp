@@ -3,6 +3,7 @@
 /// One Settings struct for every mesher, composed of the settings of each stage (stage_settings.hpp),
 /// each field with its documented default, and the statistics a mesher reports back (mesh_stats.hpp).
 
+#include <isopatch/convex_region.hpp>
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh_stats.hpp>
 #include <isopatch/stage_settings.hpp>
@@ -28,6 +29,17 @@ struct Settings : SizeSettings,
   Method method = Method::Projection;
   /// The region to mesh; the surface's default box when empty. Must be valid().
   std::optional<Box> box;
+  /// Projection only. A convex polytope to mesh inside (inside the box when one is given, else instead
+  /// of it, and then it must be bounded): the partition is the lattice of cubes clipped by its planes,
+  /// and where the surface leaves the region its boundary lies on the planes. Empty: the box alone.
+  ConvexRegion region;
+  /// Projection only. The partition in a rotated frame (the surface, box and region are seen in it;
+  /// the mesh comes back in the user's coordinates). Empty: the coordinate axes.
+  std::optional<Frame> frame;
+  /// Projection only. A partition of convex cells given directly, each cell the intersection of its
+  /// half-spaces (within the box, when one is given); checked for overlaps and gaps. Cells that fail are
+  /// split by three planes through the centre of their bounds. Empty: the octree (or the region).
+  std::vector<ConvexRegion> cells;
 
   /// Checks every stage's settings and the box. \throw SettingError naming the first field out of range.
   void validate() const;

@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "api/budgeted_surface.hpp"
+#include "api/frame_meshing.hpp"
+#include "project/convex_meshing.hpp"
 #include "surface/singular_level_set.hpp"
 #include "surface/target_size.hpp"
 #include "surface/zero_function.hpp"
@@ -57,6 +59,7 @@ RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings&
       break;
   }
   r.box = box;
+  r.cut_planes = s.region;
   r.cancel = s.cancel;
   // The projection mesher's sizes, shared; only where uniform sizes were not asked for by length does
   // the clean-up follow the output's median edge instead of the default length.
@@ -84,7 +87,21 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
 }
 
 /// Meshes with the method of `settings`, then cleans up (remesh.hpp) when asked.
+Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats* stats);
+
+/// Meshes in the frame of the settings, or in the coordinate axes.
 Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats) {
+  if (settings.frame) return mesh_in_frame(surface, settings, stats, dispatch);
+  // A region or given cells decide the box when none is given.
+  if (const std::optional<Box> box = convex_meshing_box(surface, settings); box && !settings.box) {
+    Settings s = settings;
+    s.box = *box;
+    return dispatch_in_box(surface, s, stats);
+  }
+  return dispatch_in_box(surface, settings, stats);
+}
+
+Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats* stats) {
   // f = 0 everywhere is no surface, and neither mesher could tell quickly (see zero_function.hpp).
   const Box box = settings.box.value_or(surface.box());
   reject_zero_function(surface, box);

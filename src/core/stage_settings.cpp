@@ -112,6 +112,19 @@ void Settings::validate() const {
   CleanupSettings::validate();
   BudgetSettings::validate();
   if (box) valid_box(*box);
+  validate_region(region, "region");
+  if (cells.size() > kMaxGivenCells)
+    throw SettingError(
+        "cells", "at most " + std::to_string(kMaxGivenCells) + " cells, got " + std::to_string(cells.size()));
+  for (const ConvexRegion& cell : cells) validate_region(cell, "cells");
+  if (frame &&
+      !(std::isfinite(frame->azimuth) && std::isfinite(frame->elevation) && std::isfinite(frame->roll)))
+    throw SettingError("frame", "the frame's angles must be finite numbers");
+  const bool convex = !region.empty() || !cells.empty() || frame.has_value();
+  if (convex && method != Method::Projection)
+    throw SettingError("method", "a region, a frame or given cells need the projection method");
+  if (!region.empty() && !cells.empty())
+    throw SettingError("cells", "given cells and a region do not go together (clip the cells instead)");
 }
 
 Quality parse_quality(const std::string& name) {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/cyclic.hpp"
+#include "partition/convex_cell.hpp"
 #include "partition/partition_stats.hpp"
 #include "surface/sampler.hpp"
 
@@ -100,6 +101,9 @@ struct PartitionCell {
   int level = 0;      ///< splits from the root: deeper cells are finer
   ComplexReason reason = ComplexReason::None;
   std::vector<CellLoop> loops;  ///< none when only an edge sample revealed the surface
+  /// The planes of a general convex cell (outward normals): rays of its patch stay inside them. Empty
+  /// for a cell that is its bounds (the octree's).
+  std::vector<CellPlane> planes;
 };
 
 /// A partition as the mesher sees it. Deterministic: corners, faces and cells are numbered in an order

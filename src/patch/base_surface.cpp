@@ -13,7 +13,7 @@ namespace isopatch {
 BarycentricBase::BarycentricBase(std::vector<Vec3> corners) : corners_(std::move(corners)) {
   const auto n = static_cast<int>(corners_.size());
   if (n < Domain::kMinSides || n > Domain::kMaxSides)
-    throw InputError("barycentric base: number of corners " + std::to_string(n) + " is outside 3..12");
+    throw InputError("barycentric base: number of corners " + std::to_string(n) + " is outside 3..16");
 }
 
 Vec3 BarycentricBase::evaluate(std::span<const double> lambda) const {

@@ -21,7 +21,7 @@ namespace isopatch {
 
 class CoonsPatch final : public BaseSurface {
  public:
-  /// \param curves  n = 3..12 curves in our indexing; curve k must end where curve k + 1 starts.
+  /// \param curves  n = 3..16 curves in our indexing; curve k must end where curve k + 1 starts.
   /// \throw InputError unless 3 <= n <= 12 and consecutive curves share their end points (to 1e-9 of
   ///        the longest curve).
   explicit CoonsPatch(std::vector<PolylineCurve> curves);

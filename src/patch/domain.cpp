@@ -11,7 +11,7 @@ namespace isopatch {
 
 Domain::Domain(int n) : n_(n) {
   if (n < kMinSides || n > kMaxSides) {
-    throw InputError("patch domain: number of sides " + std::to_string(n) + " is outside 3..12");
+    throw InputError("patch domain: number of sides " + std::to_string(n) + " is outside 3..16");
   }
   vertices_.fill(Vec2::Zero());
   if (n == 4) {

@@ -1,6 +1,6 @@
 #pragma once
 /// \file domain.hpp
-/// The regular n-gon parameter domain of an n-sided patch (n = 3..12), as in the multi-sided patches
+/// The regular n-gon parameter domain of an n-sided patch (n = 3..16), as in the multi-sided patches
 /// of Salvi (C0 Coons, WAIT 2020) and the transfinite-surface library of Salvi & Várady.
 ///
 /// THE ONE INDEXING CONVENTION OF src/patch (every other file follows it; convert at a single place
@@ -30,7 +30,7 @@ inline double cross(const Vec2& a, const Vec2& b) {
 class Domain {
  public:
   static constexpr int kMinSides = 3;
-  static constexpr int kMaxSides = 12;
+  static constexpr int kMaxSides = 16;
 
   /// \throw InputError unless 3 <= n <= 12.
   explicit Domain(int n);

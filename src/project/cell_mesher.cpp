@@ -17,6 +17,7 @@
 #include "core/stage_timer.hpp"
 #include "patch/base_surface.hpp"
 #include "patch/coons_patch.hpp"
+#include "patch/domain.hpp"
 #include "patch/patch_template.hpp"
 #include "project/doubtful_cells.hpp"
 #include "project/face_curve.hpp"
@@ -330,7 +331,7 @@ void CellMesher::mesh_cell(std::size_t c, CellOutput& out) const {
   if (split_cells_.contains(c)) return;  // a side failed: the cell is refined anyway
   const PartitionCell& cell = part_.cells[c];
   const bool simple = !needs_refinement(cell) && cell.loops.front().corners.size() >= 3 &&
-                      cell.loops.front().corners.size() <= 12;
+                      cell.loops.front().corners.size() <= static_cast<std::size_t>(Domain::kMaxSides);
   if (simple && loop_sides_accepted(cell.loops.front())) {
     const PatchVerdict verdict = mesh_patch(cell, cell.loops.front(), out);
     if (verdict == PatchVerdict::Accepted) {
@@ -378,7 +379,8 @@ PatchVerdict CellMesher::mesh_patch(const PartitionCell& cell, const CellLoop& l
     }
     points[v] = {mesh_.positions[ids[v]], gradients_[ids[v]]};
   }
-  const PatchVerdict verdict = project_patch(f_, *patch, *base, d, cell.bounds, params_, points, out.patch);
+  const PatchVerdict verdict =
+      project_patch(f_, *patch, *base, d, cell.bounds, params_, points, out.patch, cell.planes);
   if (verdict != PatchVerdict::Accepted) return verdict;
   for (std::size_t v = 0; v < patch->vertex_count(); ++v) {
     if (patch->tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;

@@ -1,6 +1,7 @@
 #include "project/patch_projection.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "project/ray_march.hpp"
 
@@ -24,8 +25,15 @@ bool triangles_agree_with_gradient(const PatchTemplate& patch, const std::vector
 PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const BaseSurface& base_surface,
                            const std::vector<Vec3>& corner_directions, const Box& cell,
                            const ProjectionParams& params, std::vector<SurfacePoint>& points,
-                           PatchStats& stats) {
+                           PatchStats& stats, std::span<const CellPlane> planes) {
   const int n = patch.sides();
+  const double margin = 1e-9 * cell.diagonal();
+  auto inside = [&](const std::optional<RayHit>& h) {
+    if (!h) return false;
+    for (const CellPlane& p : planes)
+      if (p.distance(h->point) > margin) return false;
+    return true;
+  };
   RayMarchSettings march;
   march.steps = params.march_steps;
   for (std::size_t v = 0; v < patch.vertex_count(); ++v) {
@@ -43,6 +51,7 @@ PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const B
       direction += lambda[static_cast<std::size_t>(k)] * corner_directions[static_cast<std::size_t>(k)];
     const double f_base = f.value(base);
     auto hit = march_to_surface(f, base, f_base, direction, cell, march);
+    if (!inside(hit)) hit.reset();
     auto acceptable = [&](const RayHit& h, ValueGradient& vg) {
       vg = f.value_gradient(h.point);
       const double norm = vg.gradient.norm();
@@ -56,7 +65,7 @@ PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const B
       ++stats.gradient_rays;
       const Vec3 g = f.value_gradient(base).gradient;
       hit = march_to_surface(f, base, f_base, g, cell, march);
-      if (!hit) return PatchVerdict::RayMissed;
+      if (!inside(hit)) return PatchVerdict::RayMissed;
       if (!acceptable(*hit, vg)) return PatchVerdict::RayAngle;
     }
     points[v] = {hit->point, vg.gradient};

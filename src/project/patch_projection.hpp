@@ -4,8 +4,10 @@
 // sampled at every interior template vertex, moved onto f = 0 along d(x) = sum_k lambda_k(x) d_k
 // within the cell, then the acceptance tests.
 
+#include <span>
 #include <vector>
 
+#include "partition/cell_partition.hpp"
 #include "patch/base_surface.hpp"
 #include "patch/patch_template.hpp"
 #include "project/surface_point.hpp"
@@ -34,12 +36,14 @@ struct PatchStats {
 /// the cell instead (counted in `stats`). When the interpolated ray misses f = 0 inside the cell or
 /// meets it beyond the acceptance angle, the vertex is marched along grad f at its base point instead
 /// (counted in `stats`).
+/// \param planes  a general convex cell's planes (empty: the cell is `cell`): a ray meeting f = 0
+///                beyond one of them (by more than 1e-9 of the cell's diagonal) has missed
 /// \return the verdict; on Accepted every entry of `points` lies on f = 0
 /// \throw EvaluationError when f or grad f is not finite where evaluated
 PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const BaseSurface& base,
                            const std::vector<Vec3>& corner_directions, const Box& cell,
                            const ProjectionParams& params, std::vector<SurfacePoint>& points,
-                           PatchStats& stats);
+                           PatchStats& stats, std::span<const CellPlane> planes = {});
 
 /// The flip test alone: every triangle's normal has a positive dot product with the sum of the
 /// gradients at its vertices.

@@ -66,6 +66,8 @@ constexpr double kErrorCollapseFactor = 0.1;
 /// The chordal error bound is enforced at the end down to this fraction of EPS, in at most kBoundRounds
 /// rounds of splits (enforce_error_bound).
 constexpr double kBoundMargin = 0.9;
+/// Within this fraction of the largest size of a region plane, a vertex lies on it (box_boundary.hpp).
+constexpr double kCutPlaneTolerance = 1e-9;
 constexpr int kBoundRounds = 8;
 
 class Remesher {
@@ -75,7 +77,7 @@ class Remesher {
 
   RemeshStats run() {
     if (settings_.local_only) return run_local();
-    if (settings_.box) slide_axis_ = sliding_axes(mesh_, *settings_.box);
+    find_sliding_vertices();
     timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
     for (int it = 0; it < settings_.iterations; ++it) {
       timed("cleanup_split", [&] { split_long_edges(); });
@@ -129,7 +131,7 @@ class Remesher {
   /// where a defect is, then relaxation runs over the vertices near the defects alone (work list), so
   /// the cost follows what needs fixing, not the mesh size.
   RemeshStats run_local() {
-    if (settings_.box) slide_axis_ = sliding_axes(mesh_, *settings_.box);
+    find_sliding_vertices();
     timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
     timed("cleanup_collapse", [&] { collapse_short_edges(); });
     timed("cleanup_repair", [&] { repair_until_settled(); });
@@ -183,10 +185,14 @@ class Remesher {
     if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
   }
 
+  /// Whether p lies in the box and inside the region's planes (to within plane_margin()).
   bool in_box(const Vec3& p) const {
+    for (const CutPlane& plane : planes_)
+      if (plane.distance(p) > plane_margin()) return false;
     if (!settings_.box) return true;
     return (p.array() >= settings_.box->lo.array()).all() && (p.array() <= settings_.box->hi.array()).all();
   }
+  double plane_margin() const { return kCutPlaneTolerance * settings_.sizes.largest; }
 
   /// p moved onto f = 0 (steps at most max_step), with its unit normal; false on failure or outside the box.
   bool project(Vec3& p, Vec3& normal, double max_step) const {
@@ -265,6 +271,13 @@ class Remesher {
 
   /// The axis of the box face along which boundary vertex v may slide, or -1 (box_boundary.hpp).
   int slide_axis(std::uint32_t v) const { return v < slide_axis_.size() ? slide_axis_[v] : -1; }
+  /// The region plane along which boundary vertex v may slide, or -1 (box_boundary.hpp).
+  int slide_plane(std::uint32_t v) const { return v < slide_plane_.size() ? slide_plane_[v] : -1; }
+  void find_sliding_vertices() {
+    planes_ = cut_planes(settings_.cut_planes);
+    if (settings_.box) slide_axis_ = sliding_axes(mesh_, *settings_.box);
+    slide_plane_ = sliding_planes(mesh_, planes_, settings_.box ? &*settings_.box : nullptr, plane_margin());
+  }
 
   /// Collapses a into b (or b into a when a is locked); `max_length` bounds the new edges. Two locked
   /// vertices: along their boundary edge (try_collapse_boundary).
@@ -299,9 +312,11 @@ class Remesher {
   /// Merges a boundary vertex that may slide (a, else b) into its neighbour along their boundary edge,
   /// on the same box face; the neighbour keeps its position, so the cut stays on the box.
   bool try_collapse_boundary(std::uint32_t a, std::uint32_t b, double max_length) {
-    if (slide_axis(a) < 0) std::swap(a, b);
-    const int axis = slide_axis(a);
-    if (axis < 0 || mesh_.positions[b][axis] != mesh_.positions[a][axis]) return false;
+    if (slide_axis(a) < 0 && slide_plane(a) < 0) std::swap(a, b);
+    const int axis = slide_axis(a), plane = slide_plane(a);
+    if (axis >= 0 ? mesh_.positions[b][axis] != mesh_.positions[a][axis]
+                  : !on_cut_plane(planes_, plane, mesh_.positions[b], plane_margin()))
+      return false;
     const auto e = mesh_.boundary_edge(a, b);
     if (!e || mesh_.incident[a].size() < 2 || mesh_.valence(e->c) <= 3) return false;
     if (mesh_.common_neighbours(a, b) != std::vector<std::uint32_t>{e->c}) return false;
@@ -399,7 +414,7 @@ class Remesher {
   /// sliding cut vertex along its box face. Writes only v. False when the move was refused.
   bool relax_vertex(std::uint32_t v) {
     if (!mesh_.alive(v)) return true;
-    if (mesh_.locked[v]) return slide_axis(v) < 0 || relax_along_box_face(v);
+    if (mesh_.locked[v]) return (slide_axis(v) < 0 && slide_plane(v) < 0) || relax_along_box_face(v);
     Vec3 centroid = Vec3::Zero();
     double area = 0.0;
     for (std::uint32_t t : mesh_.incident[v]) {
@@ -428,21 +443,29 @@ class Remesher {
   }
 
   /// Moves a boundary vertex that may slide towards the midpoint of its two boundary neighbours, then
-  /// onto the curve where f = 0 meets its box face (it stays on that face and off the others).
+  /// onto the curve where f = 0 meets its box face or region plane (it stays on it and off the others).
   bool relax_along_box_face(std::uint32_t v) {
     const std::vector<std::uint32_t> ends = mesh_.boundary_neighbours(v);
     if (ends.size() != 2) return true;
     const int axis = slide_axis(v);
     const Vec3& p = mesh_.positions[v];
     Vec3 q = 0.5 * (mesh_.positions[ends[0]] + mesh_.positions[ends[1]]);
-    q[axis] = p[axis];
+    const double step = std::max((q - p).norm(), sizes_.at(v));
     Vec3 gradient;
-    if (!project_to_surface_in_plane(f_, q, axis, tolerance_, std::max((q - p).norm(), sizes_.at(v)),
-                                     &gradient) ||
-        !in_box(q))
-      return false;
+    if (axis < 0) {
+      const auto k = static_cast<std::size_t>(slide_plane(v));
+      const bool moved =
+          project_onto_cut_plane(f_, q, planes_, k, tolerance_, plane_margin(), step, &gradient);
+      return moved && in_box(q) && !on_box_face(settings_.box, q) && move_boundary_vertex(v, q, gradient);
+    }
+    q[axis] = p[axis];
+    if (!project_to_surface_in_plane(f_, q, axis, tolerance_, step, &gradient) || !in_box(q)) return false;
     for (int k = 0; k < 3; ++k)
       if (k != axis && (q[k] == settings_.box->lo[k] || q[k] == settings_.box->hi[k])) return true;
+    return move_boundary_vertex(v, q, gradient);
+  }
+
+  bool move_boundary_vertex(std::uint32_t v, const Vec3& q, const Vec3& gradient) {
     const Vec3 n = gradient.normalized();
     for (std::uint32_t t : mesh_.incident[v])
       if (!triangle_ok_with(t, v, q, n)) return false;
@@ -557,7 +580,9 @@ class Remesher {
   const double cos_glide_ = std::cos(kGlideAngle * std::numbers::pi / 180.0);
   const double cos_repair_ = std::cos(kRepairAngle * std::numbers::pi / 180.0);
   const double cos_30_ = std::cos(30.0 * std::numbers::pi / 180.0);
-  std::vector<int> slide_axis_;  ///< per vertex slot at the start; empty without a box
+  std::vector<int> slide_axis_;   ///< per vertex slot at the start; empty without a box
+  std::vector<int> slide_plane_;  ///< per vertex slot at the start; -1 off the region's planes
+  std::vector<CutPlane> planes_;  ///< the region's planes (unit normals), set by find_sliding_vertices
   Sampler f_;
   EditableMesh& mesh_;
   const RemeshSettings& settings_;

@@ -9,6 +9,7 @@
 namespace isopatch {
 
 void check_remesh_settings(const RemeshSettings& s) {
+  validate_region(s.cut_planes, "cut_planes");
   const TargetSizes& sizes = s.sizes;
   if (!(std::isfinite(sizes.largest) && sizes.largest > 0.0))
     throw SettingError("sizes.largest", "remesh: the edge length must be a positive number");

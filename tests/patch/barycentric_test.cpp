@@ -1,7 +1,9 @@
 #include "patch/barycentric.hpp"
 
 #include <gtest/gtest.h>
+
 #include <Eigen/Dense>
+#include <algorithm>
 
 #include <array>
 #include <cmath>
@@ -85,7 +87,7 @@ std::vector<double> reference(const Domain& domain, const Vec2& x, CoordinateKin
 }
 
 TEST(Barycentric, InteriorPointsArePositivePartitionOfUnityWithLinearPrecision) {
-  for (int n = 3; n <= 12; ++n) {
+  for (int n = 3; n <= 16; ++n) {
     const Domain domain(n);
     for (CoordinateKind kind : kKinds) {
       for (const Vec2& x : random_interior_points(domain, 400, 17u + static_cast<unsigned>(n))) {
@@ -98,7 +100,7 @@ TEST(Barycentric, InteriorPointsArePositivePartitionOfUnityWithLinearPrecision) 
 }
 
 TEST(Barycentric, MatchesTheTextbookQuotientFormsInside) {
-  for (int n = 3; n <= 12; ++n) {
+  for (int n = 3; n <= 16; ++n) {
     const Domain domain(n);
     for (CoordinateKind kind : kKinds) {
       for (const Vec2& x : random_interior_points(domain, 200, 5u + static_cast<unsigned>(n))) {
@@ -113,7 +115,7 @@ TEST(Barycentric, MatchesTheTextbookQuotientFormsInside) {
 }
 
 TEST(Barycentric, AreLinearOnEachSideWithOnlyTheTwoSideCoordinatesNonZero) {
-  for (int n = 3; n <= 12; ++n) {
+  for (int n = 3; n <= 16; ++n) {
     const Domain domain(n);
     for (CoordinateKind kind : kKinds) {
       for (int k = 0; k < n; ++k) {
@@ -131,7 +133,7 @@ TEST(Barycentric, AreLinearOnEachSideWithOnlyTheTwoSideCoordinatesNonZero) {
 }
 
 TEST(Barycentric, StayAccurateAndContinuousNextToTheBoundary) {
-  for (int n = 3; n <= 12; ++n) {
+  for (int n = 3; n <= 16; ++n) {
     const Domain domain(n);
     for (CoordinateKind kind : kKinds) {
       for (int k = 0; k < n; ++k) {
@@ -153,7 +155,7 @@ TEST(Barycentric, StayAccurateAndContinuousNextToTheBoundary) {
 }
 
 TEST(Barycentric, InterpolateAtAndNearVertices) {
-  for (int n = 3; n <= 12; ++n) {
+  for (int n = 3; n <= 16; ++n) {
     const Domain domain(n);
     for (CoordinateKind kind : kKinds) {
       for (int k = 0; k < n; ++k) {
@@ -166,7 +168,9 @@ TEST(Barycentric, InterpolateAtAndNearVertices) {
                                 domain.side_point(k - 1, 1.0 - delta)}) {
             const auto near = coordinates(domain, x, kind);
             expect_barycentric(domain, x, near, 1e-14);
-            EXPECT_NEAR(at(near, domain, k), 1.0, 1e-13 + 10.0 * delta) << n << " " << k << " " << delta;
+            // The slope of lambda_k near its vertex grows with n (just above 10 for n = 14..16).
+            EXPECT_NEAR(at(near, domain, k), 1.0, 1e-13 + std::max(10.0, static_cast<double>(n)) * delta)
+                << n << " " << k << " " << delta;
           }
         }
       }
@@ -208,7 +212,7 @@ TEST(Barycentric, BothKindsAreTheLinearCoordinatesOnTheTriangle) {
 }
 
 TEST(Barycentric, MeanValueDiffersFromWachspressForFiveOrMoreSides) {
-  for (int n = 4; n <= 12; ++n) {
+  for (int n = 4; n <= 16; ++n) {
     const Domain domain(n);
     double largest = 0.0;
     for (const Vec2& x : random_interior_points(domain, 100, 23)) {

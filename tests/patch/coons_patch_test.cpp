@@ -89,7 +89,7 @@ TEST(CoonsPatch, InterpolatesRandomBoundaryCurves) {
 }
 
 TEST(CoonsPatch, PlanarStraightLoopStaysInItsPlane) {
-  for (int n = 3; n <= 12; ++n) {
+  for (int n = 3; n <= 16; ++n) {
     // A convex planar polygon (an ellipse's inscribed n-gon) in a tilted plane.
     const Vec3 e1 = Vec3(1, 1, 0).normalized(), e2 = Vec3(-1, 1, 2).normalized();
     const Vec3 origin(0.3, -0.2, 0.5), normal = e1.cross(e2);
@@ -120,7 +120,7 @@ TEST(CoonsPatch, PlanarStraightLoopStaysInItsPlane) {
 TEST(CoonsPatch, RibbonWeightsArePartitionOfUnity) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  for (int n = 3; n <= 12; ++n) {
+  for (int n = 3; n <= 16; ++n) {
     const Domain domain(n);
     for (CoordinateKind kind : kCoonsKinds)
       for (int trial = 0; trial < 50; ++trial) {

@@ -173,13 +173,13 @@ void check_template(const PatchTemplate& tpl) {
 }
 
 TEST(PatchTemplate, AllSideCountsAndSmallResolutionsAreValidDisks) {
-  for (int n = 3; n <= 12; ++n) {
+  for (int n = 3; n <= 16; ++n) {
     for (int r = 1; r <= 10; ++r) check_template(PatchTemplate(n, r, CoordinateKind::Wachspress));
   }
 }
 
 TEST(PatchTemplate, MeanValueTemplatesAreValidToo) {
-  for (int n = 3; n <= 12; ++n) check_template(PatchTemplate(n, 6, CoordinateKind::MeanValue));
+  for (int n = 3; n <= 16; ++n) check_template(PatchTemplate(n, 6, CoordinateKind::MeanValue));
 }
 
 TEST(PatchTemplate, LargestResolutionHasTheDocumentedCounts) {
@@ -199,6 +199,12 @@ TEST(PatchTemplate, MinimumDomainAngleDoesNotShrinkWithResolution) {
     EXPECT_GE(angle, 30.0 - 1e-9);
     RecordProperty("min_angle_n" + std::to_string(n), std::to_string(angle));
   }
+  // The patches of general convex cells have up to 16 sides: the centre's 360 / n, down to 22.5 degrees.
+  for (int n = 13; n <= 16; ++n) {
+    const double angle = min_angle_degrees(*patch_template(n, 64, CoordinateKind::Wachspress));
+    EXPECT_NEAR(angle, expected_min_angle_degrees(n), 1e-9) << "n=" << n;
+    EXPECT_GE(angle, 22.5 - 1e-9);
+  }
 }
 
 TEST(PatchTemplate, RejectsOutOfRangeSidesAndResolutions) {
@@ -206,7 +212,7 @@ TEST(PatchTemplate, RejectsOutOfRangeSidesAndResolutions) {
     EXPECT_THROW(PatchTemplate(5, r, CoordinateKind::Wachspress), InputError) << r;
     EXPECT_THROW(patch_template(5, r, CoordinateKind::Wachspress), InputError) << r;
   }
-  for (int n : {0, 2, 13}) {
+  for (int n : {0, 2, 17}) {
     EXPECT_THROW(PatchTemplate(n, 4, CoordinateKind::Wachspress), InputError) << n;
     EXPECT_THROW(patch_template(n, 4, CoordinateKind::MeanValue), InputError) << n;
   }
@@ -229,13 +235,13 @@ TEST(PatchTemplate, CacheIsSafeUnderConcurrentFirstUse) {
   std::vector<std::thread> threads;
   for (int i = 0; i < kThreads; ++i) {
     threads.emplace_back([&seen, i] {
-      for (int n = 3; n <= 12; ++n)
+      for (int n = 3; n <= 16; ++n)
         seen[static_cast<std::size_t>(i)].push_back(patch_template(n, 13, CoordinateKind::MeanValue));
     });
   }
   for (auto& thread : threads) thread.join();
   for (int i = 1; i < kThreads; ++i) EXPECT_EQ(seen[static_cast<std::size_t>(i)], seen[0]);
-  for (int n = 3; n <= 12; ++n) EXPECT_EQ(seen[0][static_cast<std::size_t>(n - 3)]->sides(), n);
+  for (int n = 3; n <= 16; ++n) EXPECT_EQ(seen[0][static_cast<std::size_t>(n - 3)]->sides(), n);
 }
 
 }  // namespace

@@ -1,0 +1,60 @@
+// Meshing in a rotated frame (frame_meshing.hpp).
+#include "api/frame_meshing.hpp"
+
+#include <isopatch/error.hpp>
+
+#include "api/rotated_surface.hpp"
+
+namespace isopatch {
+namespace {
+
+ConvexRegion rotated(const ConvexRegion& region, const Mat3& r) {
+  ConvexRegion out;
+  for (const HalfSpace& h : region) {
+    const Vec3 n = r.transpose() * Vec3(h.a, h.b, h.c);
+    out.push_back(HalfSpace{n.x(), n.y(), n.z(), h.d});
+  }
+  return out;
+}
+
+ConvexRegion box_planes(const Box& b) {
+  return {{-1, 0, 0, b.lo.x()}, {1, 0, 0, -b.hi.x()}, {0, -1, 0, b.lo.y()},
+          {0, 1, 0, -b.hi.y()}, {0, 0, -1, b.lo.z()}, {0, 0, 1, -b.hi.z()}};
+}
+
+bool leaves_box(const Mesh& mesh, const Box& box) {
+  const double margin = 1e-9 * box.diagonal();
+  for (const Vec3& p : mesh.positions)
+    if (!box.contains(p, margin)) return true;
+  return false;
+}
+
+}  // namespace
+
+Mesh mesh_in_frame(const Surface& surface, const Settings& settings, MeshStats* stats, const Mesher& mesher) {
+  if (!settings.frame) throw Error(ErrorKind::Internal, "mesh_in_frame without a frame");
+  const Mat3 r = settings.frame->rotation();
+  const Box user = valid_box(settings.box.value_or(surface.box()));
+  Settings s = settings;
+  s.frame.reset();
+  // Sizes come from the user's box, not from the larger frame box that holds it.
+  s.edge_length = default_edge_length(settings, user);
+  s.region = rotated(settings.region, r);
+  s.cells.clear();
+  for (const ConvexRegion& c : settings.cells) s.cells.push_back(rotated(c, r));
+  // A region without a box stands instead of the box: it keeps to itself.
+  if (settings.box || settings.region.empty()) s.box = frame_bounds(user, r);
+  const RotatedSurface framed(surface, r, frame_bounds(surface.box(), r));
+  Mesh mesh = mesher(framed, s, stats);
+  if (settings.region.empty() && settings.cells.empty()) {
+    Mesh back = mesh;
+    for (Vec3& p : back.positions) p = r * p;
+    if (!leaves_box(back, user)) return back;
+    s.region = rotated(box_planes(user), r);
+    mesh = mesher(framed, s, stats);
+  }
+  for (Vec3& p : mesh.positions) p = r * p;
+  return mesh;
+}
+
+}  // namespace isopatch
