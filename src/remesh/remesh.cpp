@@ -18,6 +18,7 @@
 #include "remesh/editable_mesh.hpp"
 #include "remesh/laplacian_exactness.hpp"
 #include "remesh/remesh_checks.hpp"
+#include "remesh/remesh_thresholds.hpp"
 #include "remesh/size_field.hpp"
 #include "remesh/triangle_angle.hpp"
 #include "remesh/valence_flips.hpp"
@@ -30,45 +31,7 @@
 namespace isopatch {
 namespace {
 
-/// A triangle is valid when its normal lies within about 72 degrees of the surface normal at each of
-/// its vertices: no fold, no flipped orientation, no bridge between two sheets.
-constexpr double kMinNormalDot = 0.3;
-/// Triangles below this smallest angle are removed by the final pass (degrees).
-constexpr double kRepairAngle = 20.0;
-/// The preview's local repair (run_local): triangles under this smallest angle (degrees) need it; the
-/// vertices near a defect are those within kLocalRings rings of one, relaxed kLocalRelaxationRounds
-/// times.
-constexpr double kLocalAngle = 30.0;
-constexpr int kLocalRings = 2;
-constexpr int kLocalRelaxationRounds = 3;
-/// Flips tried per neutral glide chain in the local repair's flip passes (200 in the whole-mesh rounds).
-constexpr int kLocalGlideBudget = 30;
-/// The local repair collapses only the short edges that cells clipped near a corner leave: the patch
-/// lattices' own short edges (down to about half the size across a stretched template) are kept, or
-/// their collapses would leave irregular vertices behind.
-constexpr double kLocalCollapseFactor = 0.35;
-/// Smallest angle (degrees) a neutral flip of a glide chain may leave in its two triangles.
-constexpr double kGlideAngle = 15.0;
-/// The Laplacian-exactness sweeps may not take a triangle's smallest angle below min(its current one,
-/// this) (degrees). 25 rather than the repair's 20: the same or lower curvature error on every surface
-/// but the torus at 2k vertices (docs/whole-surface-quality.md), and a better smallest angle.
-constexpr double kExactnessAngleFloor = 25.0;
-/// Edge length thresholds relative to the target size. The n-gon templates stretch the patch lattice
-/// (a quad patch fills 90 degrees with each 60-degree lattice wedge: 1.5 times across), so rings are
-/// anisotropic (median 1.24-1.41 on the report's surfaces) until edges beyond 4/3 h are split and edges
-/// under 0.7 h collapsed: median 1.17-1.19 and a lower curvature error at the same vertex count on most
-/// surfaces (docs/whole-surface-quality.md; 0.8 h, Botsch & Kobbelt's 4/5, costs more on thin surfaces).
-/// With a chordal error bound, edges shorter than the size are the bound's margin (size_for_error assumes
-/// edges up to 4/3 h), so only slivers' edges (0.1 h) are collapsed there.
-constexpr double kSplitFactor = 4.0 / 3.0;
-constexpr double kCollapseFactor = 0.7;
-constexpr double kErrorCollapseFactor = 0.1;
-/// The chordal error bound is enforced at the end down to this fraction of EPS, in at most kBoundRounds
-/// rounds of splits (enforce_error_bound).
-constexpr double kBoundMargin = 0.9;
-/// Within this fraction of the largest size of a region plane, a vertex lies on it (box_boundary.hpp).
-constexpr double kCutPlaneTolerance = 1e-9;
-constexpr int kBoundRounds = 8;
+using namespace remesh_thresholds;
 
 class Remesher {
  public:
