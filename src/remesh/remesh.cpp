@@ -130,11 +130,16 @@ class Remesher {
   void compact() {
     const std::vector<std::uint32_t> new_id = mesh_.compact();
     sizes_.renumber(new_id);
-    if (slide_axis_.empty()) return;
-    std::vector<int> axes(mesh_.vertex_slots(), -1);
-    for (std::uint32_t v = 0; v < slide_axis_.size() && v < new_id.size(); ++v)
-      if (new_id[v] != EditableMesh::kDeadSlot) axes[new_id[v]] = slide_axis_[v];
-    slide_axis_ = std::move(axes);
+    // New slots (from splits) were never in these lists: they stay -1.
+    const auto renumber = [&](std::vector<int>& per_vertex) {
+      if (per_vertex.empty()) return;
+      std::vector<int> kept(mesh_.vertex_slots(), -1);
+      for (std::uint32_t v = 0; v < per_vertex.size() && v < new_id.size(); ++v)
+        if (new_id[v] != EditableMesh::kDeadSlot) kept[new_id[v]] = per_vertex[v];
+      per_vertex = std::move(kept);
+    };
+    renumber(slide_axis_);
+    renumber(slide_plane_);
   }
 
   /// Runs `pass`, adding its wall time to stage `name` of the statistics; returns what it returns.
