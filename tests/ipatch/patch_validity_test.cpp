@@ -1,0 +1,76 @@
+// The validity check finds the folds beside patch boundaries that make the mesher close a patch by a
+// fan (a tapered prism's side faces, the base corners of a steep rounded pyramid), and nothing on
+// patches that mesh cleanly.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "ipatch/ipatch_file.hpp"
+#include "ipatch/patch_validity.hpp"
+
+namespace isopatch {
+namespace {
+
+/// A hexagonal prism with unequal sides whose top is the bottom scaled by `taper`.
+std::string hexagonal_prism(double taper) {
+  const double base[6][2] = {{1, 0},    {0.6, 1.03923048454},    {-0.45, 0.779422863406},
+                             {-1.1, 0}, {-0.5, -0.866025403784}, {0.65, -1.12583302492}};
+  std::string text = "ipatch-model 1\n";
+  for (double z : {-0.8, 0.8}) {
+    const double s = z < 0.0 ? 1.0 : taper;
+    for (const auto& p : base)
+      text +=
+          "v " + std::to_string(s * p[0]) + " " + std::to_string(s * p[1]) + " " + std::to_string(z) + "\n";
+  }
+  return text +
+         "f 6 5 4 3 2 1\nf 7 8 9 10 11 12\nf 1 2 8 7\nf 2 3 9 8\nf 3 4 10 9\nf 4 5 11 10\nf 5 6 12 11\nf 6 1 "
+         "7 12\n";
+}
+
+const char* kSquarePyramidBlend =
+    "ipatch-model 1\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nv 0 0 1\nf 1 4 3 2\nf 1 2 5\nf 2 3 5\nf 3 4 5\n"
+    "f 4 1 5\nblend radius 0.12 setback 0.45 facecurve conic\n";
+
+const char* kOctahedronBlend =
+    "ipatch-model 1\nv 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\nf 2 4 5\n"
+    "f 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\nblend radius 0.1 setback 0.3 facecurve conic\n";
+
+bool has_fold(const std::vector<PatchFinding>& findings) {
+  for (const auto& f : findings)
+    if (f.message.find("folds beside side") != std::string::npos) return true;
+  return false;
+}
+
+TEST(PatchValidity, FindsTheFoldsOfATaperedPrism) {
+  EXPECT_TRUE(has_fold(check_patch_validity(parse_ipatch(hexagonal_prism(0.8), "tapered.ipatch"))));
+  EXPECT_TRUE(has_fold(check_patch_validity(parse_ipatch(hexagonal_prism(0.7), "tapered.ipatch"))));
+}
+
+TEST(PatchValidity, FindsTheFoldsOfASteepPyramidsBaseBlends) {
+  const Composite c = parse_ipatch(kSquarePyramidBlend, "pyramid.ipatch");
+  const auto findings = check_patch_validity(c);
+  ASSERT_TRUE(has_fold(findings));
+  for (const auto& f : findings)
+    EXPECT_NE(c.patches[f.patch].name.find("vertex blend"), std::string::npos) << f.message;
+}
+
+TEST(PatchValidity, FindsNothingOnCleanPatches) {
+  for (const std::string& text : {hexagonal_prism(1.0), std::string(kOctahedronBlend)}) {
+    for (const auto& f : check_patch_validity(parse_ipatch(text, "clean.ipatch"))) ADD_FAILURE() << f.message;
+  }
+}
+
+TEST(PatchValidity, TheSpherePatchesMeetTheirRibbonsSmoothly) {
+  const Composite c = parse_ipatch(
+      "ipatch-model 1\nv 1 0 0\nv -1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nv 0 0 -1\nf 1 3 5\nf 3 2 5\nf 2 4 5\n"
+      "f 4 1 5\nf 3 1 6\nf 2 3 6\nf 4 2 6\nf 1 4 6\n",
+      "octahedron.ipatch");
+  for (std::size_t p = 0; p < c.patches.size(); ++p) {
+    const BoundaryBend b = measure_boundary_bend(c, p);
+    EXPECT_EQ(b.missing, 0);
+    EXPECT_LT(b.worst_angle, 5.0);  // the ribbons are Liming quadrics that curve as the sphere does
+  }
+}
+
+}  // namespace
+}  // namespace isopatch
