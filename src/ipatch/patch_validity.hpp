@@ -21,11 +21,17 @@ struct PatchFinding {
   std::string message;  ///< one line: "<patch name>: ..."
 };
 
+/// Degrees between a patch's normal and its ribbon's a small step beside a side (measure_boundary_bend):
+/// beyond kFoldBend the patch folds there (the mesher cannot project onto it); the constructions'
+/// searches for reference points stop at one that bends less than kGoodBend.
+inline constexpr double kFoldBend = 80.0;
+inline constexpr double kGoodBend = 45.0;
+
 struct ValidityOptions {
   int lines_per_axis = 20;        ///< lines_per_axis^2 lines per patch
   int steps_per_line = 240;       ///< samples along each line
   double bulge_tolerance = 1e-3;  ///< relative to the patch's size
-  double fold_angle = 80.0;       ///< degrees, see measure_boundary_bend
+  double fold_angle = kFoldBend;  ///< degrees, see measure_boundary_bend
 };
 
 /// The unit direction d that maximizes min_k directions[k].d (approximately; it starts from their
