@@ -146,8 +146,8 @@ BoundaryBend measure_boundary_bend(const Composite& composite, std::size_t index
       inward.normalize();
       if (bound.value_gradient(p0).gradient.dot(inward) < 0.0) inward = -inward;
       const Vec3 nr = normal.normalized();
-      for (double factor : {1.0}) {
-        const double delta = factor * step_fraction * size;
+      {
+        const double delta = step_fraction * size;
         const Vec3 q = p0 + delta * inward;
         // The root of F on q + s nr, s in [-2 delta, 2 delta], nearest to s = 0.
         constexpr int kSteps = 32;

@@ -5,6 +5,8 @@
 /// of a reference point badly placed): lines along the direction most central to the patch's corner
 /// directions are marched through the part of its region near its boundary, counting the sign changes of its
 /// function. The lines run along the direction most central to the corner directions (central_direction).
+/// Folds that hug a side, which such lines miss, are found by stepping just inside each side and
+/// comparing the patch's normal with its ribbon's there (measure_boundary_bend).
 
 #include "ipatch/composite.hpp"
 
@@ -57,8 +59,8 @@ struct BoundaryBend {
   int missing = 0;           ///< samples where no point of the patch lies within reach of the ribbon
 };
 
-/// Beside each side i, at the points of its curve t = 1/8 ... 7/8: steps `step_fraction` (and 4 times
-/// that) of the patch's size into the region, across the curve in the ribbon's tangent plane, finds the
+/// Beside each side i, at the points of its curve t = 1/8 ... 7/8: steps `step_fraction` of the patch's size
+/// into the region, across the curve in the ribbon's tangent plane, finds the
 /// patch's root on the line along the ribbon's normal there (within as far again on either side) and
 /// measures the angle between grad F there and grad R_i. A patch that folds or bends sharply beside its
 /// boundary (its function approaches the ribbon only very close to the curve) shows a large angle or
