@@ -46,6 +46,19 @@ TEST(CompositeCli, MeshesAFileByProjectionAndByMarchingCubes) {
   EXPECT_EQ(test::read_text(one), test::read_text(two));
 }
 
+TEST(CompositeCli, WarnsOfPatchesThatFoldBesideTheirBoundary) {
+  // A steep square pyramid whose base vertex blends fold beside their trimlines (a short setback).
+  const auto dir = test::scratch_dir("composite_cli_fold");
+  const auto file = dir / "pyramid.ipatch";
+  std::ofstream(file)
+      << "ipatch-model 1\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nv 0 0 1\nf 1 4 3 2\n"
+         "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\nblend radius 0.12 setback 0.45 facecurve conic\n";
+  const auto r = test::run_command(
+      kCli + " mesh " + file.string() + " --edge-length 0.1 -q -o " + (dir / "m.ply").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: vertex blend 1: folds beside side"), std::string::npos) << r.err;
+}
+
 TEST(CompositeCli, RendersAndAnalysesAgainstTheComposite) {
   const auto dir = test::scratch_dir("composite_cli_fields");
   const auto mesh = dir / "m.ply";
