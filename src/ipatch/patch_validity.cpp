@@ -188,6 +188,25 @@ BoundaryBend measure_boundary_bend(const Composite& composite, std::size_t index
   return bend;
 }
 
+BoundaryExit measure_boundary_exit(const Composite& composite, const CompositePatch& patch) {
+  BoundaryExit worst;
+  const std::size_t n = patch.sides.size();
+  if (patch.bounds.size() != n) return worst;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ConicArc& curve = composite.curves.at(patch.sides[i].curve);
+    for (int k = 1; k < 16; ++k) {
+      const Vec3 x = curve.point(k / 16.0);
+      for (std::size_t j = 0; j < n; ++j) {
+        if (j == i) continue;
+        const ValueGradient b = patch.bounds[j]->value_gradient(x);
+        const double outside = -b.value / std::max(b.gradient.norm(), 1e-300);
+        if (outside > worst.distance) worst = {outside, i, j};
+      }
+    }
+  }
+  return worst;
+}
+
 std::vector<PatchFinding> check_patch_validity(const Composite& composite, const ValidityOptions& options) {
   std::vector<PatchFinding> findings;
   for (std::size_t p = 0; p < composite.patches.size(); ++p) {
@@ -209,6 +228,15 @@ std::vector<PatchFinding> check_patch_validity(const Composite& composite, const
       std::ostringstream out;
       out << patch.name << ": rises " << shape.bulge << " above a face plane it should stay below (size "
           << shape.size << ")";
+      findings.push_back({p, out.str()});
+    }
+    const BoundaryExit exit = measure_boundary_exit(composite, patch);
+    if (exit.distance > 1e-9 * shape.size) {
+      std::ostringstream out;
+      out << patch.name << ": side " << exit.side + 1 << " runs " << exit.distance
+          << " outside the bounding surface of side " << exit.bound + 1
+          << ", so the patch cannot reach its own boundary there (for a vertex blend: a setback too short "
+             "for the blend radii at this vertex)";
       findings.push_back({p, out.str()});
     }
     const BoundaryBend bend = measure_boundary_bend(composite, p);

@@ -68,6 +68,16 @@ struct BoundaryBend {
 BoundaryBend measure_boundary_bend(const Composite& composite, std::size_t patch,
                                    double step_fraction = 0.005);
 
+/// The farthest the patch's boundary runs outside its own region: B_j / |grad B_j| (> 0 outside) at 15
+/// interior points of every side i against every other side's bound j, with the sides (0-based). A
+/// patch whose region does not hold its boundary cannot reach it (the mesher fans it). Uses the
+/// patch's region functions (CompositePatch::bounds, one per side; else all zero), not its surface.
+struct BoundaryExit {
+  double distance = 0.0;
+  std::size_t side = 0, bound = 0;
+};
+BoundaryExit measure_boundary_exit(const Composite& composite, const CompositePatch& patch);
+
 /// Marches the lines through one I-patch (\pre its surface is an IPatchSurface; else all zero).
 PatchShape measure_patch(const Composite& composite, std::size_t patch, const ValidityOptions& options = {});
 
@@ -75,7 +85,9 @@ PatchShape measure_patch(const Composite& composite, std::size_t patch, const Va
 /// a finding when some line meets the patch more than once inside its region, or when the patch rises
 /// above one of its planar ribbons (a face plane of a setback vertex blend) by more than
 /// bulge_tolerance times its size, or when measure_boundary_bend finds its normal more than
-/// fold_angle degrees from its ribbon's beside a side (or no patch there): a fold beside the boundary.
+/// fold_angle degrees from its ribbon's beside a side (or no patch there): a fold beside the boundary;
+/// or when a side's curve runs outside another side's bounding surface (by more than 1e-9 of the size,
+/// measured as B_j / |grad B_j|): the region does not hold the patch's own boundary.
 /// Deterministic; about lines * steps * n evaluations per patch.
 std::vector<PatchFinding> check_patch_validity(const Composite& composite,
                                                const ValidityOptions& options = {});

@@ -380,6 +380,28 @@ Composite build_setback_solid(const SetbackSolid& solid) {
       centre += pc.corner.at({v, w, before}) + pc.corner.at({v, w, f});
     }
     centre /= static_cast<double>(2 * n);
+    {
+      Composite trial;
+      trial.curves = pc.curves;
+      const BoundaryExit exit = measure_boundary_exit(trial, patch);
+      double reach = 0.0;
+      for (const PatchSide& s : patch.sides) reach = std::max(reach, (pc.curves[s.curve].start - pv).norm());
+      if (exit.distance > 1e-9 * reach) {
+        const auto side_name = [&](std::size_t k) {
+          return k % 2 == 0 ? "the arc of edge " + one_based(v) + "-" + one_based(fan.neighbours[k / 2])
+                            : "the trimline on face " + one_based(fan.faces[k / 2]);
+        };
+        const auto bound_name = [&](std::size_t k) {
+          return k % 2 == 0
+                     ? "the setback plane of edge " + one_based(v) + "-" + one_based(fan.neighbours[k / 2])
+                     : "the bound of the trimline on face " + one_based(fan.faces[k / 2]);
+        };
+        throw InputError("vertex " + one_based(v) + ": the setback " + std::to_string(setback[v]) +
+                         " is too short for the blend radii there: " + side_name(exit.side) + " runs " +
+                         std::to_string(exit.distance) + " beyond " + bound_name(exit.bound) +
+                         ", so no vertex blend can reach it; use a longer setback");
+      }
+    }
     Vec3 m = Vec3::Zero();
     double size = 0.0;
     for (Id f : fan.faces) m += normal(f);
