@@ -122,6 +122,9 @@ int run_mesh(const MeshOptions& o) {
     throw InputError("--param is for formulas, not composite surfaces (.ipatch)");
   std::optional<CompositeModel> composite;  // a .ipatch file: its patches are meshed with their curves
   if (is_composite_path(o.surface)) composite.emplace(read_composite(o.surface));
+  if (composite && settings.method != Method::MarchingCubes) {
+    for (const std::string& w : composite->shape_warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  }
   const SurfacePtr surface = composite ? composite->surface()
                              : is_volume_path(o.surface)
                                  ? volume_input(o.surface, o.volume)

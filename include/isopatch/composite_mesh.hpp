@@ -17,6 +17,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace isopatch {
 
@@ -32,6 +33,10 @@ class CompositeModel {
   const SurfacePtr& surface() const { return surface_; }
   const Composite& composite() const { return *composite_; }
   std::size_t patch_count() const;
+  /// One line per defect the validity check finds in a patch function (an extra sheet in its region, a
+  /// bulge above a face plane, a fold or a sharp bend beside its boundary): such a patch is likely
+  /// rejected by projection and closed by a fan. Empty when every patch passes. Deterministic.
+  std::vector<std::string> shape_warnings() const;
 
  private:
   std::shared_ptr<const Composite> composite_;

@@ -13,6 +13,7 @@
 #include "composite/composite_mesher.hpp"
 #include "ipatch/composite_surface.hpp"
 #include "ipatch/ipatch_file.hpp"
+#include "ipatch/patch_validity.hpp"
 
 namespace isopatch {
 
@@ -21,6 +22,12 @@ CompositeModel::CompositeModel(std::shared_ptr<const Composite> composite)
 
 std::size_t CompositeModel::patch_count() const {
   return composite_->patches.size();
+}
+
+std::vector<std::string> CompositeModel::shape_warnings() const {
+  std::vector<std::string> out;
+  for (const PatchFinding& f : check_patch_validity(*composite_)) out.push_back(f.message);
+  return out;
 }
 
 CompositeModel read_composite(const std::string& path) {

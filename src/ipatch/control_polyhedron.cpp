@@ -13,6 +13,8 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
+#include <tuple>
 
 namespace isopatch {
 
@@ -252,7 +254,9 @@ Composite build_control_polyhedron(const ControlPolyhedron& polyhedron) {
     radius /= static_cast<double>(mesh.faces[f].size());
     std::vector<Vec3> candidates{centres[f]};
     for (int k = -5; k <= 15; ++k) candidates.push_back(fc + (0.1 * k * radius) * n);
-    int fewest = -1;  // multi-root lines of the best candidate so far; -1: none valid yet
+    // The best candidate so far: fewest lines meeting the patch twice, then no fold beside the boundary,
+    // then the least bend there (measure_boundary_bend); the default is kept when it is good.
+    std::optional<std::tuple<int, bool, double>> best;
     for (const Vec3& c : candidates) {
       try {
         trial.patches = {build_patch(f, trial_box, c)};
@@ -260,11 +264,13 @@ Composite build_control_polyhedron(const ControlPolyhedron& polyhedron) {
         continue;  // outside the region, or the ribbons differ in sign there
       }
       const int lines = measure_patch(trial, 0, quick).multi_root_lines;
-      if (fewest < 0 || lines < fewest) {
-        fewest = lines;
+      const double bend = measure_boundary_bend(trial, 0).worst_angle;
+      const auto key = std::make_tuple(lines, bend > kFoldBend, bend);
+      if (!best || key < *best) {
+        best = key;
         centres[f] = c;
       }
-      if (lines == 0) break;
+      if (&c == &candidates.front() && lines == 0 && bend <= kGoodBend) break;  // the default is good
     }
   }
   out.box = curves_box(out.curves, centres, 0.15);

@@ -115,6 +115,98 @@ PatchShape measure_patch(const Composite& composite, std::size_t index, const Va
   return shape;
 }
 
+BoundaryBend measure_boundary_bend(const Composite& composite, std::size_t index, double step_fraction) {
+  BoundaryBend bend;
+  const CompositePatch& patch = composite.patches.at(index);
+  const auto* ip = dynamic_cast<const IPatchSurface*>(patch.surface.get());
+  if (!ip || ip->sides() != patch.sides.size()) return bend;
+  Vec3 lo = Vec3::Constant(HUGE_VAL), hi = Vec3::Constant(-HUGE_VAL);
+  for (const PatchSide& s : patch.sides) {
+    for (int j = 0; j <= 16; ++j) {
+      const Vec3 x = composite.curves[s.curve].point(j / 16.0);
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+    }
+  }
+  const double size = (hi - lo).norm();
+  const auto angle = [](const Vec3& a, const Vec3& b) {
+    return std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / M_PI;
+  };
+  for (std::size_t i = 0; i < patch.sides.size(); ++i) {
+    const ConicArc& curve = composite.curves[patch.sides[i].curve];
+    const Surface& ribbon = *ip->ribbons()[i];
+    const Surface& bound = *ip->bounds()[i];
+    for (int k = 1; k < 8; ++k) {
+      const double t = k / 8.0, dt = 1e-4;
+      const Vec3 p0 = curve.point(t);
+      const Vec3 tangent = curve.point(t + dt) - curve.point(t - dt);
+      const Vec3 normal = ribbon.value_gradient(p0).gradient;
+      Vec3 inward = normal.cross(tangent);
+      if (!(inward.norm() > 0.0) || !(normal.norm() > 0.0)) continue;
+      inward.normalize();
+      if (bound.value_gradient(p0).gradient.dot(inward) < 0.0) inward = -inward;
+      const Vec3 nr = normal.normalized();
+      {
+        const double delta = step_fraction * size;
+        const Vec3 q = p0 + delta * inward;
+        // The root of F on q + s nr, s in [-2 delta, 2 delta], nearest to s = 0.
+        constexpr int kSteps = 32;
+        double best = HUGE_VAL;
+        Vec3 root = q;
+        double previous = ip->value(q - 2.0 * delta * nr);
+        for (int j = 1; j <= kSteps; ++j) {
+          const double s0 = -2.0 * delta + 4.0 * delta * (j - 1) / kSteps;
+          const double s1 = -2.0 * delta + 4.0 * delta * j / kSteps;
+          const double value = ip->value(q + s1 * nr);
+          if ((value > 0.0) != (previous > 0.0)) {
+            double a = s0, b = s1;
+            const bool a_positive = previous > 0.0;
+            for (int halving = 0; halving < 40; ++halving) {
+              const double mid = 0.5 * (a + b);
+              ((ip->value(q + mid * nr) > 0.0) == a_positive ? a : b) = mid;
+            }
+            const double s = 0.5 * (a + b);
+            if (std::abs(s) < std::abs(best)) {
+              best = s;
+              root = q + s * nr;
+            }
+          }
+          previous = value;
+        }
+        const double a = std::isfinite(best)
+                             ? angle(ip->value_gradient(root).gradient, ribbon.value_gradient(root).gradient)
+                             : 180.0;
+        if (!std::isfinite(best)) ++bend.missing;
+        if (a > bend.worst_angle) {
+          bend.worst_angle = a;
+          bend.distance = delta;
+          bend.side = i;
+        }
+      }
+    }
+  }
+  return bend;
+}
+
+BoundaryExit measure_boundary_exit(const Composite& composite, const CompositePatch& patch) {
+  BoundaryExit worst;
+  const std::size_t n = patch.sides.size();
+  if (patch.bounds.size() != n) return worst;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ConicArc& curve = composite.curves.at(patch.sides[i].curve);
+    for (int k = 1; k < 16; ++k) {
+      const Vec3 x = curve.point(k / 16.0);
+      for (std::size_t j = 0; j < n; ++j) {
+        if (j == i) continue;
+        const ValueGradient b = patch.bounds[j]->value_gradient(x);
+        const double outside = -b.value / std::max(b.gradient.norm(), 1e-300);
+        if (outside > worst.distance) worst = {outside, i, j};
+      }
+    }
+  }
+  return worst;
+}
+
 std::vector<PatchFinding> check_patch_validity(const Composite& composite, const ValidityOptions& options) {
   std::vector<PatchFinding> findings;
   for (std::size_t p = 0; p < composite.patches.size(); ++p) {
@@ -136,6 +228,28 @@ std::vector<PatchFinding> check_patch_validity(const Composite& composite, const
       std::ostringstream out;
       out << patch.name << ": rises " << shape.bulge << " above a face plane it should stay below (size "
           << shape.size << ")";
+      findings.push_back({p, out.str()});
+    }
+    const BoundaryExit exit = measure_boundary_exit(composite, patch);
+    if (exit.distance > 1e-9 * shape.size) {
+      std::ostringstream out;
+      out << patch.name << ": side " << exit.side + 1 << " runs " << exit.distance
+          << " outside the bounding surface of side " << exit.bound + 1
+          << ", so the patch cannot reach its own boundary there (for a vertex blend: a setback too short "
+             "for the blend radii at this vertex)";
+      findings.push_back({p, out.str()});
+    }
+    const BoundaryBend bend = measure_boundary_bend(composite, p);
+    if (bend.worst_angle > options.fold_angle) {
+      std::ostringstream out;
+      out << patch.name << ": folds beside side " << bend.side + 1 << ": ";
+      if (bend.missing > 0) {
+        out << "no point of the patch near its ribbon at " << bend.missing << " samples";
+      } else {
+        out << "its normal turns " << bend.worst_angle << " degrees from its ribbon's within "
+            << bend.distance;
+      }
+      out << " (size " << shape.size << ")";
       findings.push_back({p, out.str()});
     }
   }

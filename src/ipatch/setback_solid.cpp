@@ -85,7 +85,10 @@ IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<Surf
   for (int k = 1; k <= 10; ++k) candidates.push_back(centroid - (0.04 * k * size) * m);
   for (int k = 1; k <= 8; ++k) candidates.push_back(centroid + (k / 10.0) * (vertex - centroid));
   std::optional<Vec3> best_centre;
-  const auto perfect = [&] { return best && best_shape.multi_root_lines == 0 && best_shape.bulge <= 0.0; };
+  double best_bend = HUGE_VAL;
+  const auto perfect = [&] {
+    return best && best_shape.multi_root_lines == 0 && best_shape.bulge <= 0.0 && best_bend <= kGoodBend;
+  };
   const auto consider = [&](const Vec3& c, const std::vector<double>& d) {
     for (std::size_t i = 0; i < ribbons.size(); ++i) {
       if (!(patch.bounds[i]->value(c) > 0.0) || !(ribbons[i]->value(c) < 0.0)) return;
@@ -95,12 +98,17 @@ IPatchWeights choose_weights(const CompositePatch& patch, const std::vector<Surf
     candidate.surface = std::make_shared<IPatchSurface>(patch.name, box, ribbons, patch.bounds, w);
     trial.patches = {candidate};
     const PatchShape shape = measure_patch(trial, 0, quick);
-    if (!best || shape.multi_root_lines < best_shape.multi_root_lines ||
-        (shape.multi_root_lines == best_shape.multi_root_lines &&
-         shape.bulge < best_shape.bulge - 1e-12 * size)) {
+    const double bend = measure_boundary_bend(trial, 0).worst_angle;
+    const bool folds = bend > kFoldBend, best_folds = best_bend > kFoldBend;
+    const auto key = [&](int lines, bool fold, double bulge, double b) {
+      return std::make_tuple(lines, fold, bulge > 1e-12 * size ? bulge : 0.0, b);
+    };
+    if (!best || key(shape.multi_root_lines, folds, shape.bulge, bend) <
+                     key(best_shape.multi_root_lines, best_folds, best_shape.bulge, best_bend)) {
       best = w;
       best_shape = shape;
       best_centre = c;
+      best_bend = bend;
     }
   };
   for (const Vec3& c : candidates) {
@@ -372,6 +380,28 @@ Composite build_setback_solid(const SetbackSolid& solid) {
       centre += pc.corner.at({v, w, before}) + pc.corner.at({v, w, f});
     }
     centre /= static_cast<double>(2 * n);
+    {
+      Composite trial;
+      trial.curves = pc.curves;
+      const BoundaryExit exit = measure_boundary_exit(trial, patch);
+      double reach = 0.0;
+      for (const PatchSide& s : patch.sides) reach = std::max(reach, (pc.curves[s.curve].start - pv).norm());
+      if (exit.distance > 1e-9 * reach) {
+        const auto side_name = [&](std::size_t k) {
+          return k % 2 == 0 ? "the arc of edge " + one_based(v) + "-" + one_based(fan.neighbours[k / 2])
+                            : "the trimline on face " + one_based(fan.faces[k / 2]);
+        };
+        const auto bound_name = [&](std::size_t k) {
+          return k % 2 == 0
+                     ? "the setback plane of edge " + one_based(v) + "-" + one_based(fan.neighbours[k / 2])
+                     : "the bound of the trimline on face " + one_based(fan.faces[k / 2]);
+        };
+        throw InputError("vertex " + one_based(v) + ": the setback " + std::to_string(setback[v]) +
+                         " is too short for the blend radii there: " + side_name(exit.side) + " runs " +
+                         std::to_string(exit.distance) + " beyond " + bound_name(exit.bound) +
+                         ", so no vertex blend can reach it; use a longer setback");
+      }
+    }
     Vec3 m = Vec3::Zero();
     double size = 0.0;
     for (Id f : fan.faces) m += normal(f);

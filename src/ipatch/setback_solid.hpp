@@ -44,7 +44,9 @@ struct SetbackSolid {
 ///        vertices (a vertex blend or a trimmed face has at most 16 sides), a non-planar face, a concave or
 ///        flat vertex or edge (mixed and concave vertices are not supported), radius or setback <= 0, a
 ///        setback too small for a face corner (the springlines meet beyond it) or too large for an edge (the
-///        two ends' setbacks overlap), or a reference point outside its region.
+///        two ends' setbacks overlap), a setback too short for the blend radii at a vertex (a boundary
+///        curve of its vertex blend runs outside another side's bound, measure_boundary_exit: the blend
+///        could not reach it), or a reference point outside its region.
 Composite build_setback_solid(const SetbackSolid& solid);
 
 }  // namespace isopatch

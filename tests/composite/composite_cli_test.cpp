@@ -46,6 +46,27 @@ TEST(CompositeCli, MeshesAFileByProjectionAndByMarchingCubes) {
   EXPECT_EQ(test::read_text(one), test::read_text(two));
 }
 
+TEST(CompositeCli, WarnsOfPatchesThatFoldAndRefusesTooShortSetbacks) {
+  const auto dir = test::scratch_dir("composite_cli_fold");
+  // The tapered prism's face 3 through a reference point deep inside: it folds beside its boundary.
+  const auto prism = dir / "prism.ipatch";
+  std::ofstream(prism) << test::read_text(kExamples + "tapered_hexagonal_prism.ipatch")
+                       << "face 3 centre 0.312285 0.300139 -0.068947\n";
+  const auto r = test::run_command(
+      kCli + " mesh " + prism.string() + " --edge-length 0.1 -q -o " + (dir / "m.ply").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: face 3: folds beside side"), std::string::npos) << r.err;
+  // A steep pyramid whose setback is too short for its blend radii: refused with one line.
+  const auto pyramid = dir / "pyramid.ipatch";
+  std::ofstream(pyramid)
+      << "ipatch-model 1\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nv 0 0 1\nf 1 4 3 2\n"
+         "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\nblend radius 0.12 setback 0.45 facecurve conic\n";
+  const auto refused =
+      test::run_command(kCli + " mesh " + pyramid.string() + " -q -o " + (dir / "p.ply").string(), dir);
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.err.find("is too short for the blend radii there"), std::string::npos) << refused.err;
+}
+
 TEST(CompositeCli, RendersAndAnalysesAgainstTheComposite) {
   const auto dir = test::scratch_dir("composite_cli_fields");
   const auto mesh = dir / "m.ply";
