@@ -351,5 +351,36 @@ TEST(ConvexMesh, UnboundedRegionWithoutABoxLiesInTheSurfacesBox) {
   }
 }
 
+// The gyroid leaves its box, and oblique planes cut it too: its cut runs along the box faces and the
+// planes, and turns from one onto the other where they meet. The vertices there stay put in the
+// clean-up (none slides along its box face off the plane), so every boundary edge lies on one box
+// face or one plane, with and without a rotated frame.
+TEST(ConvexMesh, CutsThatTurnFromABoxFaceOntoAPlaneStayOnBoth) {
+  const SurfacePtr f = resolve_surface("gyroid", std::nullopt, {});
+  const Box box = f->box();
+  const ConvexRegion faces = {{-1, 0, 0, box.lo.x()}, {1, 0, 0, -box.hi.x()}, {0, -1, 0, box.lo.y()},
+                              {0, 1, 0, -box.hi.y()}, {0, 0, -1, box.lo.z()}, {0, 0, 1, -box.hi.z()}};
+  for (const ConvexRegion& region :
+       {ConvexRegion{{1, 0.4, 0.3, -0.1}}, ConvexRegion{{1, 0.4, 0.3, -0.1}, {-0.3, 1, 0.5, -0.2}}}) {
+    for (const bool framed : {false, true}) {
+      SCOPED_TRACE(std::to_string(region.size()) + (framed ? " planes, framed" : " planes"));
+      Settings s;
+      s.region = region;
+      if (framed) s.frame = Frame{30, 20, 10};
+      const Mesh mesh = mesh_surface(*f, s);
+      ConvexRegion all = region;
+      all.insert(all.end(), faces.begin(), faces.end());
+      const double tol = 1e-12 * box.diagonal();
+      const BoundaryReport b = boundary(mesh, all, tol);
+      EXPECT_GT(b.edges, 0u);
+      EXPECT_EQ(b.edges_off_one_plane, 0u);
+      EXPECT_LE(b.worst_plane_distance, tol);
+      EXPECT_TRUE(b.every_vertex_of_degree_two);
+      EXPECT_EQ(analyze_topology(mesh).components.size(), 1u);
+      EXPECT_GE(interior_min_angle(mesh, b.boundary_vertices), 20.0);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace isopatch
