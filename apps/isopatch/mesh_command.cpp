@@ -176,7 +176,8 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off, .stl or .glb (glTF 2.0 binary)")
       ->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
-  cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
+  cmd->add_option("--box", o->box,
+                  "Region x0,y0,z0,x1,y1,z1 (a formula needs one, unless a bounded --region stands for it)");
   cmd->add_option(
       "--region", o->region,
       "Projection: mesh inside the convex polytope of planes 'a,b,c,d;...' (a x + b y + c z + d <= 0), "
