@@ -1,6 +1,8 @@
 // `isopatch mesh`: SURFACE (catalogue name, formula or @file) -> Settings -> mesh_surface -> file.
 #include <isopatch/composite_mesh.hpp>
+#include <isopatch/convex_region.hpp>
 #include <isopatch/curvature.hpp>
+#include <isopatch/error.hpp>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/remesh.hpp>
@@ -10,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +67,21 @@ struct MeshOptions {
   int threads = 0;
   VolumeOptions volume;
 };
+
+/// The surface of the argument; a formula without --box is given the bounds of a bounded --region as
+/// its box (a catalogue surface keeps its own box: an unbounded region lies inside it).
+SurfacePtr surface_in_region(const std::string& spec, const Settings& settings,
+                             const std::map<std::string, double>& params) {
+  if (settings.box || settings.region.empty()) return resolve_surface(spec, settings.box, params);
+  const std::optional<Box> bounds = region_bounds(settings.region);
+  try {
+    return resolve_surface(spec, bounds, params);
+  } catch (const InputError& e) {
+    if (e.setting() != "box") throw;
+    throw SettingError("region",
+                       "the region is unbounded: give a box as well (a formula has no box of its own)");
+  }
+}
 
 int run_mesh(const MeshOptions& o) {
   Settings settings;
@@ -128,7 +146,7 @@ int run_mesh(const MeshOptions& o) {
   const SurfacePtr surface = composite ? composite->surface()
                              : is_volume_path(o.surface)
                                  ? volume_input(o.surface, o.volume)
-                                 : resolve_surface(o.surface, settings.box, parse_params(o.params));
+                                 : surface_in_region(o.surface, settings, parse_params(o.params));
   MeshStats stats;
   std::optional<ProgressLine> line;  // ended (newline) before anything else is printed, also on errors
   if (progress_wanted(o.progress, o.quiet)) {
@@ -161,11 +179,13 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off, .stl or .glb (glTF 2.0 binary)")
       ->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
-  cmd->add_option("--box", o->box, "Region x0,y0,z0,x1,y1,z1 (a formula needs one)");
+  cmd->add_option("--box", o->box,
+                  "Region x0,y0,z0,x1,y1,z1 (a formula needs one, unless a bounded --region stands for it)");
   cmd->add_option(
       "--region", o->region,
       "Projection: mesh inside the convex polytope of planes 'a,b,c,d;...' (a x + b y + c z + d <= 0), "
-      "or @FILE with one plane a line; inside --box, or instead of it when bounded");
+      "or @FILE with one plane a line; inside --box when given, else instead of it when bounded, else "
+      "inside the surface's own box (a formula needs --box for an unbounded region)");
   cmd->add_option("--frame", o->frame, "The partition in a frame rotated by AZ,EL,ROLL degrees");
   cmd->add_option("--param", o->params, "Override a definition of the formula: name=value (repeatable)");
   cmd->add_option("--level", o->volume.level, "Volume: the level of the samples to mesh (default 0)");

@@ -7,6 +7,7 @@
 #include <isopatch/geometry.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,16 @@ ConvexRegion parse_region(const std::string& text);
 /// in the error.
 /// \throw SettingError(setting, ...) naming the first bad plane.
 void validate_region(const ConvexRegion& region, const char* setting);
+
+/// The bounds of a bounded region, grown by 0.1% of their diagonal, or nothing when the region is
+/// unbounded, i.e. reaches the faces of `far` (which stands for infinity). What a region without a box
+/// covers (Settings::region).
+/// \throw SettingError("region") for a bad plane (validate_region) or a region with no volume in `far`.
+std::optional<Box> region_bounds(const ConvexRegion& region, const Box& far);
+
+/// region_bounds with `far` the cube of half-side 10^4 times the planes' largest distance from the
+/// origin (at least 1) about the origin: for a region with no surface box to judge it by (a formula).
+std::optional<Box> region_bounds(const ConvexRegion& region);
 
 /// A rotated frame for the partition: azimuth about z, then elevation about the new y, then roll about
 /// the new x, in degrees. Frame coordinates y map to the user's x = R y with R = Rz(az) Ry(-el) Rx(roll),

@@ -29,9 +29,10 @@ struct Settings : SizeSettings,
   Method method = Method::Projection;
   /// The region to mesh; the surface's default box when empty. Must be valid().
   std::optional<Box> box;
-  /// Projection only. A convex polytope to mesh inside (inside the box when one is given, else instead
-  /// of it, and then it must be bounded): the partition is the lattice of cubes clipped by its planes,
-  /// and where the surface leaves the region its boundary lies on the planes. Empty: the box alone.
+  /// Projection only. A convex polytope to mesh inside (inside the box when one is given; else instead
+  /// of it when bounded, and inside the surface's own box when not): the partition is the lattice of
+  /// cubes clipped by its planes, and where the surface leaves the region its boundary lies on the
+  /// planes. Empty: the box alone.
   ConvexRegion region;
   /// Projection only. The partition in a rotated frame (the surface, box and region are seen in it;
   /// the mesh comes back in the user's coordinates). Empty: the coordinate axes.

@@ -42,15 +42,16 @@ Mesh mesh_in_frame(const Surface& surface, const Settings& settings, MeshStats* 
   s.region = rotated(settings.region, r);
   s.cells.clear();
   for (const ConvexRegion& c : settings.cells) s.cells.push_back(rotated(c, r));
-  // A region without a box stands instead of the box: it keeps to itself.
-  if (settings.box || settings.region.empty()) s.box = frame_bounds(user, r);
+  s.box = frame_bounds(user, r);
   const RotatedSurface framed(surface, r, frame_bounds(surface.box(), r));
   Mesh mesh = mesher(framed, s, stats);
-  if (settings.region.empty() && settings.cells.empty()) {
+  if (settings.cells.empty()) {
     Mesh back = mesh;
     for (Vec3& p : back.positions) p = r * p;
     if (!leaves_box(back, user)) return back;
-    s.region = rotated(box_planes(user), r);
+    // The frame's box holds the user's box: the user's box's planes join the region.
+    const ConvexRegion planes = rotated(box_planes(user), r);
+    s.region.insert(s.region.end(), planes.begin(), planes.end());
     mesh = mesher(framed, s, stats);
   }
   for (Vec3& p : mesh.positions) p = r * p;

@@ -13,9 +13,9 @@ namespace isopatch {
 using Mesher = std::function<Mesh(const Surface&, const Settings&, MeshStats*)>;
 
 /// Meshes with `mesher` in the frame of settings.frame (which must be set). The frame's box is the
-/// bounds of the user's box (settings.box, else the surface's) in the frame; when, without a region
-/// or cells, that mesh leaves the user's box (the surface is cut open by it), the box's six planes
-/// become the region and the mesh is made again, so the cut lies on the box faces. The default edge
+/// bounds of the user's box (settings.box, else the surface's) in the frame; when, without given
+/// cells, that mesh leaves the user's box (the surface is cut open by it), the box's six planes join
+/// the region's and the mesh is made again, so the cut lies on the box faces. The default edge
 /// length (or largest size) is that of the user's box.
 Mesh mesh_in_frame(const Surface& surface, const Settings& settings, MeshStats* stats, const Mesher& mesher);
 

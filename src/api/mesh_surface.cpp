@@ -91,13 +91,14 @@ Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats
 
 /// Meshes in the frame of the settings, or in the coordinate axes.
 Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats) {
-  if (settings.frame) return mesh_in_frame(surface, settings, stats, dispatch);
-  // A region or given cells decide the box when none is given.
+  // A region or given cells decide the box when none is given (in the user's coordinates, also for a
+  // frame: the region is then inside that box in the frame too).
   if (const std::optional<Box> box = convex_meshing_box(surface, settings); box && !settings.box) {
     Settings s = settings;
     s.box = *box;
-    return dispatch_in_box(surface, s, stats);
+    return dispatch(surface, s, stats);
   }
+  if (settings.frame) return mesh_in_frame(surface, settings, stats, dispatch);
   return dispatch_in_box(surface, settings, stats);
 }
 

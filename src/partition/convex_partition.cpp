@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <set>
 #include <utility>
 
 #include <tbb/blocked_range.h>
@@ -33,13 +35,56 @@ void check_cancel(const ConvexPartitionSettings& s) {
   if (s.cancel && s.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
 }
 
-/// f at every point of the index from `values.size()` on (in parallel, slot per point).
-void sample_new_points(const Sampler& f, const PointIndex& points, std::vector<double>& values) {
+/// f at every point of the index from `values.size()` on (in parallel, slot per point). A point whose
+/// distance to f = 0 (to first order, |f| / |grad f|) is within `tolerance`, the distance under which
+/// points are one, lies on the surface: its value is taken as 0 (positive by the sign rule, as an exact
+/// zero). Where a cell's vertex lies on the surface (a region's corner the surface passes through, or
+/// only touches), rounding no longer decides its sign, and every crossing next to it is that vertex.
+void sample_new_points(const Sampler& f, const PointIndex& points, std::vector<double>& values,
+                       double& largest, double tolerance) {
   const std::size_t first = values.size();
   values.resize(points.points().size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(first, values.size(), 256), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) values[i] = f.value(points.points()[i]);
   });
+  for (std::size_t i = first; i < values.size(); ++i) largest = std::max(largest, std::abs(values[i]));
+  // Only values far below f's spread over the cells can be this close to f = 0 (|grad f| times a
+  // cell's size is of the order of that spread, the tolerance 1e-9 of a cell's size or less).
+  const double small = 1e-6 * largest;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(first, values.size(), 256), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      if (!(std::abs(values[i]) <= small) || values[i] == 0.0) continue;
+      const ValueGradient vg = f.value_gradient_unchecked(points.points()[i]);
+      if (std::abs(values[i]) <= tolerance * vg.gradient.norm()) values[i] = 0.0;
+    }
+  });
+}
+
+/// A vertex on the surface (value 0, see sample_new_points) makes a crossing, at itself, on every edge
+/// to a neighbour of the other sign: it takes the sign that makes fewer of them (positive on a tie, as
+/// 0 is), so that crossings at one point, and pieces of surface of no area, are rare. Where the surface
+/// only touches the cells (a region's corner that f = 0 meets in that point alone) its neighbours share
+/// a sign and no crossing is made; where it passes through a corner of three planes, one.
+void zeros_take_the_sign_of_fewer_crossings(const std::vector<ConvexLeaf>& leaves,
+                                            const std::vector<std::vector<std::uint32_t>>& leaf_vertices,
+                                            std::vector<double>& values) {
+  std::map<std::uint32_t, std::set<std::uint32_t>> neighbours;  // of each zero vertex
+  for (std::size_t c = 0; c < leaves.size(); ++c)
+    for (const ConvexCell::Face& face : leaves[c].cell.faces())
+      for (std::size_t k = 0; k < face.vertices.size(); ++k) {
+        const std::uint32_t a = leaf_vertices[c][face.vertices[k]];
+        const std::uint32_t b = leaf_vertices[c][face.vertices[(k + 1) % face.vertices.size()]];
+        if (values[a] == 0.0) neighbours[a].insert(b);
+        if (values[b] == 0.0) neighbours[b].insert(a);
+      }
+  for (const auto& [z, around] : neighbours) {
+    std::size_t positive = 0, negative = 0;
+    for (std::uint32_t n : around) {
+      positive += values[n] > 0.0 ? 1 : 0;
+      negative += is_negative(values[n]) ? 1 : 0;
+    }
+    if (positive < negative) values[z] = -std::numeric_limits<double>::min();
+  }
 }
 
 /// A piece's vertices as the cell sees them: counter-clockwise about the cell's outward normal.
@@ -79,16 +124,18 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
                    sorted.end());
   const double median = sorted[sorted.size() / 2];
   const double magnitude = std::max(region.lo.cwiseAbs().maxCoeff(), region.hi.cwiseAbs().maxCoeff());
-  PointIndex points(region.lo, median,
-                    std::max(1e-9 * *std::min_element(sizes.begin(), sizes.end()),
-                             1024.0 * std::numeric_limits<double>::epsilon() * magnitude));
+  const double tolerance = std::max(1e-9 * *std::min_element(sizes.begin(), sizes.end()),
+                                    1024.0 * std::numeric_limits<double>::epsilon() * magnitude);
+  PointIndex points(region.lo, median, tolerance);
+  double largest = 0.0;  // the largest |f| sampled so far
   // 1. Vertices of every leaf, their signs, and the leaves holding a sign change.
   std::vector<bool> wanted(leaves.size(), false);
   std::vector<std::vector<std::uint32_t>> leaf_vertices(leaves.size());
   for (std::size_t c = 0; c < leaves.size(); ++c)
     for (const Vec3& p : leaves[c].cell.vertices()) leaf_vertices[c].push_back(points.insert(p));
   std::vector<double> values;
-  sample_new_points(f, points, values);
+  sample_new_points(f, points, values, largest, tolerance);
+  zeros_take_the_sign_of_fewer_crossings(leaves, leaf_vertices, values);
   check_cancel(settings);
   for (std::size_t c = 0; c < leaves.size(); ++c) {
     bool neg = false, pos = false;
@@ -105,7 +152,7 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
   Overlay overlay;
   for (bool grown = true; grown;) {
     overlay = overlay_cells(cells, wanted, points, settings.strict);
-    sample_new_points(f, points, values);
+    sample_new_points(f, points, values, largest, tolerance);
     check_cancel(settings);
     grown = false;
     for (std::size_t c = 0; c < leaves.size(); ++c)
@@ -175,7 +222,8 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
           0.0, values[a], 1.0, values[b], kSegmentRootTolerance, kSegmentRootIterations);
       const auto i = static_cast<std::size_t>(crossing_of[s]);
       root_evaluations[i] = count;
-      const Vec3 position = A + t * d;
+      // An end on the surface is the crossing itself, to the bit.
+      const Vec3 position = t == 1.0 ? P[b] : t == 0.0 ? A : A + t * d;
       out.corners[i] = CellCorner{position, d, f.value_gradient(position).gradient};
     }
   });

@@ -3,6 +3,8 @@
 
 #include <isopatch/error.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace isopatch {
@@ -32,6 +34,31 @@ Box grown(const Box& b) {
 
 }  // namespace
 
+std::optional<Box> region_bounds(const ConvexRegion& region, const Box& far) {
+  validate_region(region, "region");
+  if (region.empty()) return std::nullopt;
+  ConvexCell cell;
+  try {
+    cell = intersect_half_spaces(valid_box(far), cell_planes(region), 0.0);
+  } catch (const InputError&) {
+    throw SettingError("region", "the region is empty");
+  }
+  for (const ConvexCell::Face& face : cell.faces())
+    if (cell.planes()[face.plane].label < 0) return std::nullopt;
+  return grown(cell.bounds());
+}
+
+std::optional<Box> region_bounds(const ConvexRegion& region) {
+  // Within 10^4 times the planes' largest distance from the origin (at least 1).
+  double reach = 1.0;
+  for (const HalfSpace& h : region) {
+    const double n = Vec3(h.a, h.b, h.c).stableNorm();
+    if (n > 0.0 && std::isfinite(h.d)) reach = std::max(reach, std::abs(h.d) / n);
+  }
+  const Vec3 r = Vec3::Constant(1e4 * reach);
+  return region_bounds(region, Box{-r, r});
+}
+
 std::vector<CellPlane> cell_planes(const ConvexRegion& region) {
   std::vector<CellPlane> planes;
   for (std::size_t i = 0; i < region.size(); ++i) {
@@ -49,8 +76,14 @@ std::optional<Box> convex_meshing_box(const Surface& surface, const Settings& se
                 surface.box().centre() + 1e4 * surface.box().size()};
   const Box within = given ? valid_box(*settings.box) : far;
   if (!settings.region.empty()) {
-    const Box b = bounds_within(cell_planes(settings.region), within, "region", "the region", !given);
-    return given ? within : grown(b);
+    if (given) {
+      bounds_within(cell_planes(settings.region), within, "region", "the region", false);
+      return within;
+    }
+    // A bounded region stands instead of the box; an unbounded one lies inside the surface's own box.
+    if (const std::optional<Box> b = region_bounds(settings.region, far)) return *b;
+    bounds_within(cell_planes(settings.region), valid_box(surface.box()), "region", "the region", false);
+    return valid_box(surface.box());
   }
   Box all{Vec3::Constant(std::numeric_limits<double>::infinity()),
           Vec3::Constant(-std::numeric_limits<double>::infinity())};

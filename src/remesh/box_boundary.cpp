@@ -5,7 +5,8 @@
 
 namespace isopatch {
 
-std::vector<int> sliding_axes(const EditableMesh& mesh, const Box& box) {
+std::vector<int> sliding_axes(const EditableMesh& mesh, const Box& box, const std::vector<CutPlane>& planes,
+                              double tolerance) {
   std::vector<int> axes(mesh.vertex_slots(), -1);
   for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v) {
     if (!mesh.alive(v) || !mesh.locked[v]) continue;
@@ -16,7 +17,11 @@ std::vector<int> sliding_axes(const EditableMesh& mesh, const Box& box) {
         axis = k;
       }
     }
-    if (faces == 1) axes[v] = axis;
+    if (faces != 1) continue;
+    bool on_plane = false;
+    for (const CutPlane& plane : planes)
+      on_plane = on_plane || std::abs(plane.distance(mesh.positions[v])) <= tolerance;
+    if (!on_plane) axes[v] = axis;
   }
   return axes;
 }

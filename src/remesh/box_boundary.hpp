@@ -18,16 +18,18 @@
 
 namespace isopatch {
 
-/// Per vertex slot: the axis (0, 1, 2) of the one box face a locked vertex lies on, exactly (the
-/// meshers clamp the cut to the box), or -1 for every other vertex.
-std::vector<int> sliding_axes(const EditableMesh& mesh, const Box& box);
-
 /// A plane of a region with a unit normal: n . x + offset = 0 on it, <= 0 inside.
 struct CutPlane {
   Vec3 normal = Vec3::UnitX();
   double offset = 0.0;
   double distance(const Vec3& p) const { return normal.dot(p) + offset; }
 };
+
+/// Per vertex slot: the axis (0, 1, 2) of the one box face a locked vertex lies on, exactly (the
+/// meshers clamp the cut to the box), when it lies on none of the region's `planes` (within
+/// `tolerance`: where the cut turns from a box face onto a plane it stays put); -1 for every other.
+std::vector<int> sliding_axes(const EditableMesh& mesh, const Box& box,
+                              const std::vector<CutPlane>& planes = {}, double tolerance = 0.0);
 
 /// Whether p lies on a face of `box` (exactly), false without a box.
 inline bool on_box_face(const std::optional<Box>& box, const Vec3& p) {

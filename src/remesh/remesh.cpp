@@ -243,7 +243,7 @@ class Remesher {
   int slide_plane(std::uint32_t v) const { return v < slide_plane_.size() ? slide_plane_[v] : -1; }
   void find_sliding_vertices() {
     planes_ = cut_planes(settings_.cut_planes);
-    if (settings_.box) slide_axis_ = sliding_axes(mesh_, *settings_.box);
+    if (settings_.box) slide_axis_ = sliding_axes(mesh_, *settings_.box, planes_, plane_margin());
     slide_plane_ = sliding_planes(mesh_, planes_, settings_.box ? &*settings_.box : nullptr, plane_margin());
   }
 

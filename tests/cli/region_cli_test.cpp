@@ -49,6 +49,33 @@ TEST(RegionCli, RotatedFrameMeshesTheTorusClosed) {
   EXPECT_EQ(t.genus, 1);
 }
 
+// A formula needs no --box when the region is bounded; a catalogue surface with an unbounded region
+// and no --box is cut inside its own box.
+TEST(RegionCli, BoundedRegionStandsForTheBoxAndCatalogueBoxesHoldUnboundedOnes) {
+  const auto dir = test::scratch_dir("cli_region_box");
+  const auto out = dir / "m.ply";
+  const std::string cube = "1,0,0,-2;-1,0,0,-2;0,1,0,-2;0,-1,0,-2;0,0,-1,-2";
+  auto r = test::run_command(
+      kRegionCli + " mesh \"x^2+y^2+z^2-1\" --region \"0,0,1,0;" + cube + "\" -q -o " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  TopologyReport t = analyze_topology(read_mesh(out.string()));
+  EXPECT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(t.euler_characteristic, 1);  // the lower half sphere: a disc
+  struct Case {
+    std::string surface, region;
+    int euler;
+  };
+  for (const Case& c : {Case{"torus", "0,0,1,0.1", 0}, Case{"sphere", "0,0,1,0", 1}}) {
+    r = test::run_command(
+        kRegionCli + " mesh " + c.surface + " --region " + c.region + " -q -o " + out.string(), dir);
+    ASSERT_EQ(r.exit_code, 0) << c.surface << "\n" << r.err;
+    t = analyze_topology(read_mesh(out.string()));
+    EXPECT_EQ(t.components.size(), 1u) << c.surface;
+    EXPECT_EQ(t.euler_characteristic, c.euler) << c.surface;
+    EXPECT_GT(t.boundary_edges, 0u) << c.surface;
+  }
+}
+
 TEST(RegionCli, BadRegionsAndFramesGiveOneLineAndTheirExitCode) {
   const auto dir = test::scratch_dir("cli_region_bad");
   const std::string out = " -o " + (dir / "m.ply").string();
@@ -63,7 +90,9 @@ TEST(RegionCli, BadRegionsAndFramesGiveOneLineAndTheirExitCode) {
       {"mesh sphere --region 0,0,1,x" + box + out, ErrorKind::InvalidArgument, "plane 1"},
       {"mesh sphere --region \"0,0,1,0;0,0,0,1\"" + box + out, ErrorKind::InvalidArgument, "plane 2"},
       {"mesh sphere --region \";\"" + box + out, ErrorKind::InvalidArgument, "no plane"},
-      {"mesh sphere --region 0,0,1,0" + out, ErrorKind::InvalidArgument, "unbounded"},
+      {"mesh \"x^2+y^2+z^2-1\" --region 0,0,1,0" + out, ErrorKind::InvalidArgument, "unbounded"},
+      {"mesh \"x^2+y^2+z^2-1\"" + out, ErrorKind::InvalidArgument, "needs a box"},
+      {"mesh sphere --region 0,0,1,5" + out, ErrorKind::InvalidArgument, "does not meet"},
       {"mesh sphere --region \"0,0,1,0;0,0,-1,0.5\"" + box + out, ErrorKind::InvalidArgument, "--region"},
       {"mesh sphere --region 0,0,1,0 --method mc" + box + out, ErrorKind::InvalidArgument, "--method"},
       {"mesh sphere --region @" + (dir / "missing.txt").string() + box + out, ErrorKind::Io, "cannot read"},

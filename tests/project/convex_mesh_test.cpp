@@ -303,7 +303,7 @@ std::string setting_of(const Surface& f, const Settings& s) {
 TEST(ConvexMesh, BadRegionsAndCellsNameTheirSetting) {
   const SurfacePtr f = resolve_surface("sphere", std::nullopt, {});
   Settings s;
-  s.region = {{0, 0, 1, 0}};  // unbounded, and no box
+  s.region = {{0, 0, 1, 5}};  // z <= -5, no box: misses the surface's own box
   EXPECT_EQ(setting_of(*f, s), "region");
   s.box = kSphereBox;
   s.region = {{0, 0, 1, 5}};  // z <= -5: misses the box
@@ -323,6 +323,63 @@ TEST(ConvexMesh, BadRegionsAndCellsNameTheirSetting) {
                     {0, -1, 0, -0.8}, {0, 0, 1, -0.8},  {0, 0, -1, -0.8}};
   const Mesh mesh = mesh_surface(*f, bounded);
   EXPECT_EQ(analyze_topology(mesh).euler_characteristic, 2 - 6);
+}
+
+// An unbounded region without a box lies inside the surface's own box, as with that box given; in a
+// frame too (the region and the surface's box both cut the mesh, and it keeps inside both).
+TEST(ConvexMesh, UnboundedRegionWithoutABoxLiesInTheSurfacesBox) {
+  for (const char* name : {"torus", "gyroid"}) {
+    const SurfacePtr f = resolve_surface(name, std::nullopt, {});
+    const Box own = f->box();
+    for (const bool framed : {false, true}) {
+      Settings s;
+      s.region = {{0, 0.3, 1, -0.1}};
+      if (framed) s.frame = Frame{30, 20, 10};
+      const Mesh without = mesh_surface(*f, s);
+      s.box = own;
+      const Mesh with = mesh_surface(*f, s);
+      EXPECT_EQ(without.positions, with.positions) << name << (framed ? " framed" : "");
+      EXPECT_EQ(without.triangles, with.triangles) << name << (framed ? " framed" : "");
+      ASSERT_GT(without.triangles.size(), 100u) << name;
+      const double margin = 1e-12 * own.diagonal();
+      for (const Vec3& p : without.positions) {
+        ASSERT_TRUE(own.contains(p, margin)) << name << (framed ? " framed " : " ") << p.transpose();
+        ASSERT_LE(0.3 * p.y() + p.z() - 0.1, margin * std::sqrt(1.09)) << name;
+      }
+      EXPECT_EQ(analyze_topology(without).components.size(), 1u) << name << (framed ? " framed" : "");
+    }
+  }
+}
+
+// The gyroid leaves its box, and oblique planes cut it too: its cut runs along the box faces and the
+// planes, and turns from one onto the other where they meet. The vertices there stay put in the
+// clean-up (none slides along its box face off the plane), so every boundary edge lies on one box
+// face or one plane, with and without a rotated frame.
+TEST(ConvexMesh, CutsThatTurnFromABoxFaceOntoAPlaneStayOnBoth) {
+  const SurfacePtr f = resolve_surface("gyroid", std::nullopt, {});
+  const Box box = f->box();
+  const ConvexRegion faces = {{-1, 0, 0, box.lo.x()}, {1, 0, 0, -box.hi.x()}, {0, -1, 0, box.lo.y()},
+                              {0, 1, 0, -box.hi.y()}, {0, 0, -1, box.lo.z()}, {0, 0, 1, -box.hi.z()}};
+  for (const ConvexRegion& region :
+       {ConvexRegion{{1, 0.4, 0.3, -0.1}}, ConvexRegion{{1, 0.4, 0.3, -0.1}, {-0.3, 1, 0.5, -0.2}}}) {
+    for (const bool framed : {false, true}) {
+      SCOPED_TRACE(std::to_string(region.size()) + (framed ? " planes, framed" : " planes"));
+      Settings s;
+      s.region = region;
+      if (framed) s.frame = Frame{30, 20, 10};
+      const Mesh mesh = mesh_surface(*f, s);
+      ConvexRegion all = region;
+      all.insert(all.end(), faces.begin(), faces.end());
+      const double tol = 1e-12 * box.diagonal();
+      const BoundaryReport b = boundary(mesh, all, tol);
+      EXPECT_GT(b.edges, 0u);
+      EXPECT_EQ(b.edges_off_one_plane, 0u);
+      EXPECT_LE(b.worst_plane_distance, tol);
+      EXPECT_TRUE(b.every_vertex_of_degree_two);
+      EXPECT_EQ(analyze_topology(mesh).components.size(), 1u);
+      EXPECT_GE(interior_min_angle(mesh, b.boundary_vertices), 20.0);
+    }
+  }
 }
 
 }  // namespace
