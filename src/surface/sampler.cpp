@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <tbb/task_arena.h>
+
 namespace isopatch {
 
 void throw_not_finite(const char* what, double value, const Vec3& p) {
@@ -14,15 +16,28 @@ void throw_not_finite(const char* what, double value, const Vec3& p) {
   throw EvaluationError(buffer);
 }
 
+void SpreadCounter::add() const {
+  // -1 outside every arena (tbb::task_arena::not_initialized): slot 0.
+  const int worker = tbb::this_task_arena::current_thread_index();
+  const std::size_t slot = worker > 0 ? static_cast<std::size_t>(worker) % kSlots : 0;
+  slots_[slot].count.fetch_add(1, std::memory_order_relaxed);
+}
+
+std::uint64_t SpreadCounter::total() const {
+  std::uint64_t sum = 0;
+  for (const Slot& s : slots_) sum += s.count.load(std::memory_order_relaxed);
+  return sum;
+}
+
 double Sampler::value(const Vec3& p) const {
-  values_.fetch_add(1, std::memory_order_relaxed);
+  values_.add();
   const double v = surface_.value(p);
   if (!std::isfinite(v)) throw_not_finite("f", v, p);
   return v;
 }
 
 ValueGradient Sampler::value_gradient(const Vec3& p) const {
-  gradients_.fetch_add(1, std::memory_order_relaxed);
+  gradients_.add();
   const ValueGradient vg = surface_.value_gradient(p);
   if (!std::isfinite(vg.value)) throw_not_finite("f", vg.value, p);
   for (int i = 0; i < 3; ++i)
@@ -31,7 +46,7 @@ ValueGradient Sampler::value_gradient(const Vec3& p) const {
 }
 
 ValueGradient Sampler::value_gradient_unchecked(const Vec3& p) const {
-  gradients_.fetch_add(1, std::memory_order_relaxed);
+  gradients_.add();
   return surface_.value_gradient(p);
 }
 
