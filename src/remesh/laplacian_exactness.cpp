@@ -182,8 +182,10 @@ class ExactnessSweeper {
     for (const std::vector<std::uint32_t>& members : classes_)
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, members.size(), 64), [&](const auto& range) {
         Scratch& scratch = scratch_.local();
+        std::size_t moved = 0;  // one shared increment per range, not per move
         for (std::size_t i = range.begin(); i != range.end(); ++i)
-          if (usable_[members[i]] && move(members[i], scratch)) kept.fetch_add(1, std::memory_order_relaxed);
+          if (usable_[members[i]] && move(members[i], scratch)) ++moved;
+        kept.fetch_add(moved, std::memory_order_relaxed);
       });
     return kept.load();
   }
