@@ -12,7 +12,7 @@ namespace isopatch {
 namespace {
 
 using Key = std::array<double, 3>;
-Key key(const Vec3& p) {
+Key position_key(const Vec3& p) {
   return {p.x(), p.y(), p.z()};
 }
 
@@ -31,7 +31,7 @@ PatchPiece relax_patch(const PatchPiece& piece, const std::vector<Vec3>& positio
   for (auto& [id, local] : local_of) {
     local = static_cast<std::uint32_t>(mesh.positions.size());
     mesh.positions.push_back(positions[id]);
-    boundary_at.emplace(key(positions[id]), id);
+    boundary_at.emplace(position_key(positions[id]), id);
   }
   const auto first_own = static_cast<std::uint32_t>(mesh.positions.size());
   for (const Vec3& p : piece.points) mesh.positions.push_back(p);
@@ -62,7 +62,7 @@ PatchPiece relax_patch(const PatchPiece& piece, const std::vector<Vec3>& positio
   std::vector<std::uint32_t> id_of(mesh.positions.size());
   std::size_t boundary_seen = 0;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const auto it = boundary_at.find(key(mesh.positions[v]));
+    const auto it = boundary_at.find(position_key(mesh.positions[v]));
     if (it != boundary_at.end()) {
       id_of[v] = it->second;
       ++boundary_seen;

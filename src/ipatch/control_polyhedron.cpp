@@ -1,6 +1,7 @@
 /// \file control_polyhedron.cpp
 /// Control polyhedron -> composite of I-patches (control_polyhedron.hpp).
 #include "ipatch/control_polyhedron.hpp"
+#include "ipatch/line_meeting.hpp"
 
 #include "ipatch/composite_checks.hpp"
 #include "ipatch/ipatch_surface.hpp"
@@ -32,17 +33,6 @@ struct EdgeData {
   Affine bounding;  ///< through the chord and the mean normal (either orientation)
   Quadric ribbon;   ///< negative inside, its gradient along the vertex normals at the ends
 };
-
-/// Solves alpha u - beta v = w in the least-squares sense; false when u and v are parallel.
-bool meet(const Vec3& u, const Vec3& v, const Vec3& w, double& alpha, double& beta) {
-  const double a11 = u.dot(u), a12 = -u.dot(v), a22 = v.dot(v);
-  const double r1 = u.dot(w), r2 = -v.dot(w);
-  const double det = a11 * a22 - a12 * a12;
-  if (!(std::abs(det) > 1e-12 * a11 * a22)) return false;
-  alpha = (r1 * a22 - r2 * a12) / det;
-  beta = (a11 * r2 - a12 * r1) / det;
-  return true;
-}
 
 /// The weight of the conic (a, q, b; w) through m: with barycentric coordinates (ta, tq, tb) of m in
 /// the triangle, the conic is tq^2 = 4 w^2 ta tb.

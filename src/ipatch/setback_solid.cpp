@@ -1,6 +1,7 @@
 /// \file setback_solid.cpp
 /// Convex solid -> faces, edge blends and setback vertex blends (setback_solid.hpp).
 #include "ipatch/setback_solid.hpp"
+#include "ipatch/line_meeting.hpp"
 
 #include "ipatch/composite_checks.hpp"
 #include "ipatch/ipatch_surface.hpp"
@@ -48,17 +49,6 @@ void add_side(CompositePatch& patch, const std::vector<ConicArc>& curves, Id cur
 
 SurfacePtr quadric(const std::string& name, const Box& box, const Quadric& q) {
   return std::make_shared<QuadricSurface>(name, box, q);
-}
-
-/// Solves t u - s v = w (least squares); false when u and v are parallel.
-bool meet(const Vec3& u, const Vec3& v, const Vec3& w, double& t, double& s) {
-  const double a11 = u.dot(u), a12 = -u.dot(v), a22 = v.dot(v);
-  const double r1 = u.dot(w), r2 = -v.dot(w);
-  const double det = a11 * a22 - a12 * a12;
-  if (!(std::abs(det) > 1e-12 * a11 * a22)) return false;
-  t = (r1 * a22 - r2 * a12) / det;
-  s = (a11 * r2 - a12 * r1) / det;
-  return true;
 }
 
 /// The vertex blend's weights: reference points from the centroid of its corners outward along the

@@ -25,7 +25,7 @@
 namespace isopatch {
 namespace {
 
-std::pair<std::uint32_t, std::uint32_t> ordered_pair(std::uint32_t a, std::uint32_t b) {
+std::pair<std::uint32_t, std::uint32_t> segment_key(std::uint32_t a, std::uint32_t b) {
   return a < b ? std::pair{a, b} : std::pair{b, a};
 }
 
@@ -171,13 +171,12 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
   for (std::size_t c = 0; c < leaves.size(); ++c)
     for (std::uint32_t piece : overlay.cell_pieces[c]) {
       const auto& v = overlay.pieces[piece].vertices;
-      for (std::size_t k = 0; k < v.size(); ++k)
-        segments.push_back(ordered_pair(v[k], v[(k + 1) % v.size()]));
+      for (std::size_t k = 0; k < v.size(); ++k) segments.push_back(segment_key(v[k], v[(k + 1) % v.size()]));
     }
   std::sort(segments.begin(), segments.end());
   segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
   const auto segment_index = [&](std::uint32_t a, std::uint32_t b) {
-    const auto key = ordered_pair(a, b);
+    const auto key = segment_key(a, b);
     return static_cast<std::size_t>(std::lower_bound(segments.begin(), segments.end(), key) -
                                     segments.begin());
   };

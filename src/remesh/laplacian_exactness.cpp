@@ -19,25 +19,25 @@ namespace isopatch {
 namespace {
 
 /// A vertex's tangent frame.
-struct Frame {
+struct TangentFrame {
   Vec3 e1, e2;
-  explicit Frame(const Vec3& normal) : e1(normal.unitOrthogonal()), e2(normal.cross(e1)) {}
-  Frame() = default;
+  explicit TangentFrame(const Vec3& normal) : e1(normal.unitOrthogonal()), e2(normal.cross(e1)) {}
+  TangentFrame() = default;
 };
 
 /// A frame kept in single precision for the sweeps' per-vertex cache: any orthonormal pair serves as a
 /// tangent frame, and the rounding only tilts it by 1e-7 (the same frame at every use within a sweep).
-struct CompactFrame {
+struct CompactTangentFrame {
   std::array<float, 3> e1{}, e2{};
-  CompactFrame() = default;
-  explicit CompactFrame(const Frame& f) {
+  CompactTangentFrame() = default;
+  explicit CompactTangentFrame(const TangentFrame& f) {
     for (int c = 0; c < 3; ++c) {
       e1[static_cast<std::size_t>(c)] = static_cast<float>(f.e1[c]);
       e2[static_cast<std::size_t>(c)] = static_cast<float>(f.e2[c]);
     }
   }
-  Frame widen() const {
-    Frame f;
+  TangentFrame widen() const {
+    TangentFrame f;
     f.e1 = Vec3(static_cast<double>(e1[0]), static_cast<double>(e1[1]), static_cast<double>(e1[2]));
     f.e2 = Vec3(static_cast<double>(e2[0]), static_cast<double>(e2[1]), static_cast<double>(e2[2]));
     return f;
@@ -61,7 +61,7 @@ struct MomentSums {
 /// The sums of triangle (x0, x1, x2) at each of its corners, corner k in frame *frames[k] (null: that
 /// corner is not needed). False for a degenerate triangle. The mixed area follows Meyer et al. (2003)
 /// exactly as the curvature analysis computes it.
-bool triangle_sums(const std::array<const Vec3*, 3>& x, const std::array<const Frame*, 3>& frames,
+bool triangle_sums(const std::array<const Vec3*, 3>& x, const std::array<const TangentFrame*, 3>& frames,
                    std::array<MomentSums, 3>& out) {
   // Plain arithmetic on doubles: this is the inner loop of the sweeps (and Eigen expressions are not
   // inlined in the sanitizer builds at -O1).
@@ -81,7 +81,7 @@ bool triangle_sums(const std::array<const Vec3*, 3>& x, const std::array<const F
   }
   const int obtuse = cot[0] < 0.0 ? 0 : cot[1] < 0.0 ? 1 : cot[2] < 0.0 ? 2 : -1;
   for (int k = 0; k < 3; ++k) {
-    const Frame* f = frames[static_cast<std::size_t>(k)];
+    const TangentFrame* f = frames[static_cast<std::size_t>(k)];
     if (!f) continue;
     const int i = (k + 1) % 3, j = (k + 2) % 3;
     // The corner's edges: to corner i is edge[j], to corner j is -edge[i] (the sign drops out of the
@@ -111,13 +111,13 @@ const Vec3& position(const EditableMesh& mesh, std::uint32_t w, std::uint32_t mo
 }
 
 /// Moment sums of v over its triangles in `frame`, `moved` at p; false when one is degenerate.
-bool vertex_sums(const EditableMesh& mesh, std::uint32_t v, const Frame& frame, std::uint32_t moved,
+bool vertex_sums(const EditableMesh& mesh, std::uint32_t v, const TangentFrame& frame, std::uint32_t moved,
                  const Vec3& p, MomentSums& sums) {
   sums = {};
   std::array<MomentSums, 3> corners;
   for (std::uint32_t t : mesh.incident[v]) {
     const Triangle& tri = mesh.triangles[t];
-    std::array<const Frame*, 3> frames{nullptr, nullptr, nullptr};
+    std::array<const TangentFrame*, 3> frames{nullptr, nullptr, nullptr};
     const std::size_t k = corner_index(tri, v);
     frames[k] = &frame;
     if (!triangle_sums({&position(mesh, tri[0], moved, p), &position(mesh, tri[1], moved, p),
@@ -134,7 +134,8 @@ bool vertex_sums(const EditableMesh& mesh, std::uint32_t v, const Frame& frame, 
 Eigen::Vector3d quadratic_exactness_residual(const EditableMesh& mesh, std::uint32_t v, std::uint32_t moved,
                                              const Vec3& p) {
   MomentSums sums;
-  if (!vertex_sums(mesh, v, Frame(mesh.normals[v]), moved, p, sums)) return Eigen::Vector3d::Constant(1e3);
+  if (!vertex_sums(mesh, v, TangentFrame(mesh.normals[v]), moved, p, sums))
+    return Eigen::Vector3d::Constant(1e3);
   return residual_of(sums);
 }
 
@@ -150,12 +151,12 @@ namespace {
 
 /// What one move works with (one per thread).
 struct Scratch {
-  std::vector<std::uint32_t> ring;                 ///< u's neighbours and u
-  std::vector<std::size_t> corner_slot;            ///< [3 k + c]: ring index of corner c of u's k-th triangle
-  std::vector<MomentSums> ring_sums;               ///< the ring's sums with u at the trial position
-  std::vector<std::array<MomentSums, 3>> trial;    ///< corner sums of u's triangles at the last trial
-  std::vector<std::array<Frame, 3>> frames;        ///< the frames of the corners of u's triangles
-  std::vector<std::array<MomentSums, 3>> current;  ///< corner sums of u's triangles as they are
+  std::vector<std::uint32_t> ring;               ///< u's neighbours and u
+  std::vector<std::size_t> corner_slot;          ///< [3 k + c]: ring index of corner c of u's k-th triangle
+  std::vector<MomentSums> ring_sums;             ///< the ring's sums with u at the trial position
+  std::vector<std::array<MomentSums, 3>> trial;  ///< corner sums of u's triangles at the last trial
+  std::vector<std::array<TangentFrame, 3>> frames;  ///< the frames of the corners of u's triangles
+  std::vector<std::array<MomentSums, 3>> current;   ///< corner sums of u's triangles as they are
   Eigen::VectorXd r0, r1;
   Eigen::VectorXd column[2];  ///< the Jacobian's columns (forward differences along e1, e2)
 };
@@ -200,12 +201,12 @@ class ExactnessSweeper {
     const std::size_t n = mesh_.vertex_slots();
     frame_.resize(n), sums_.assign(n, MomentSums{}), usable_.assign(n, true);
     for (std::uint32_t v = 0; v < n; ++v)
-      if (mesh_.alive(v)) frame_[v] = CompactFrame(Frame(mesh_.normals[v]));
+      if (mesh_.alive(v)) frame_[v] = CompactTangentFrame(TangentFrame(mesh_.normals[v]));
     for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
       if (!mesh_.triangle_alive[t]) continue;
       const Triangle& tri = mesh_.triangles[t];
       std::array<MomentSums, 3> corner;
-      const Frame frames[3] = {frame_[tri[0]].widen(), frame_[tri[1]].widen(), frame_[tri[2]].widen()};
+      const TangentFrame frames[3] = {frame_[tri[0]].widen(), frame_[tri[1]].widen(), frame_[tri[2]].widen()};
       if (!triangle_sums({&mesh_.positions[tri[0]], &mesh_.positions[tri[1]], &mesh_.positions[tri[2]]},
                          {&frames[0], &frames[1], &frames[2]}, corner)) {
         for (std::uint32_t v : tri) usable_[v] = false;
@@ -284,7 +285,7 @@ class ExactnessSweeper {
     const double before = r0.squaredNorm();
     const Vec3 p = mesh_.positions[u];
     const Vec3 n = mesh_.normals[u];
-    const Frame f = frame_[u].widen();
+    const TangentFrame f = frame_[u].widen();
     const double h = rules_.size(u);
     const double delta = 1e-4 * h;
     for (int k = 0; k < 2; ++k) {
@@ -333,9 +334,10 @@ class ExactnessSweeper {
   EditableMesh& mesh_;
   const ExactnessMoveRules& rules_;
   double floor_cosine_;
-  std::vector<CompactFrame> frame_;  ///< per vertex slot: tangent frame of its normal at the sweep's start
-  std::vector<MomentSums> sums_;     ///< per vertex slot: moment sums in that frame
-  std::vector<bool> usable_;         ///< per vertex slot: no degenerate triangle around it
+  std::vector<CompactTangentFrame>
+      frame_;                     ///< per vertex slot: tangent frame of its normal at the sweep's start
+  std::vector<MomentSums> sums_;  ///< per vertex slot: moment sums in that frame
+  std::vector<bool> usable_;      ///< per vertex slot: no degenerate triangle around it
   std::vector<std::vector<std::uint32_t>> classes_;  ///< free vertices, by classes of disjoint rings
   tbb::enumerable_thread_specific<Scratch> scratch_;
 };
