@@ -48,27 +48,9 @@ class ChargedSurface final : public Surface {
 
 }  // namespace
 
-void BudgetedComposite::Budget::charge(std::uint64_t n) {
-  const std::uint64_t before = count.fetch_add(n, std::memory_order_relaxed);
-  const std::uint64_t after = before + n;
-  if (max_evaluations > 0 && after > max_evaluations)
-    throw LimitError(
-        "the evaluation budget of " + std::to_string(max_evaluations) + " evaluations of f is exhausted",
-        "max_evaluations");
-  // The clock is read every 256 evaluations, as BudgetedSurface does.
-  if (seconds > 0.0 && (before >> 8) != (after >> 8)) {
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (elapsed > seconds)
-      throw LimitError("the time limit of " + std::to_string(seconds) + " s is exceeded", "time_limit");
-  }
-}
-
 BudgetedComposite::BudgetedComposite(const Composite& composite, std::uint64_t max_evaluations,
                                      double seconds)
-    : budget_(std::make_shared<Budget>()), composite_(composite) {
-  budget_->max_evaluations = max_evaluations;
-  budget_->seconds = seconds;
-  budget_->start = std::chrono::steady_clock::now();
+    : budget_(std::make_shared<Budget>(max_evaluations, seconds)), composite_(composite) {
   const auto charged = [this](const SurfacePtr& s) -> SurfacePtr {
     return s ? std::make_shared<ChargedSurface>(s, budget_) : s;
   };

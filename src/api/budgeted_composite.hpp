@@ -3,11 +3,10 @@
 // (BudgetSettings), so that the composite mesher, like every other, cannot run past its budget,
 // whichever patch it is working on. Thread-safe.
 
-#include <atomic>
-#include <chrono>
 #include <cstdint>
 #include <memory>
 
+#include "api/evaluation_budget.hpp"
 #include "ipatch/composite.hpp"
 
 namespace isopatch {
@@ -20,14 +19,7 @@ class BudgetedComposite {
   const Composite& composite() const { return composite_; }
 
   /// The shared budget (public for the forwarding surfaces of budgeted_composite.cpp).
-  struct Budget {
-    std::uint64_t max_evaluations = 0;
-    double seconds = 0.0;
-    std::chrono::steady_clock::time_point start;
-    std::atomic<std::uint64_t> count{0};
-    /// Counts n evaluations. \throw LimitError naming the budget once it is exhausted.
-    void charge(std::uint64_t n);
-  };
+  using Budget = EvaluationBudget;
 
  private:
   std::shared_ptr<Budget> budget_;

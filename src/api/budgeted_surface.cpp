@@ -1,33 +1,10 @@
 // Evaluation and time budgets around a Surface (see budgeted_surface.hpp).
 #include "api/budgeted_surface.hpp"
 
-#include <isopatch/error.hpp>
-
-#include <string>
-
 namespace isopatch {
 
 BudgetedSurface::BudgetedSurface(const Surface& inner, std::uint64_t max_evaluations, double seconds)
-    : Surface(inner.name(), inner.box()),
-      inner_(inner),
-      max_evaluations_(max_evaluations),
-      seconds_(seconds),
-      start_(std::chrono::steady_clock::now()) {}
-
-void BudgetedSurface::charge(std::uint64_t n) const {
-  const std::uint64_t before = count_.fetch_add(n, std::memory_order_relaxed);
-  const std::uint64_t after = before + n;
-  if (max_evaluations_ > 0 && after > max_evaluations_)
-    throw LimitError(
-        "the evaluation budget of " + std::to_string(max_evaluations_) + " evaluations of f is exhausted",
-        "max_evaluations");
-  // The clock is read every 256 evaluations: cheap, and at most a few microseconds late.
-  if (seconds_ > 0.0 && (before >> 8) != (after >> 8)) {
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    if (elapsed > seconds_)
-      throw LimitError("the time limit of " + std::to_string(seconds_) + " s is exceeded", "time_limit");
-  }
-}
+    : Surface(inner.name(), inner.box()), inner_(inner), budget_(max_evaluations, seconds) {}
 
 double BudgetedSurface::value(const Vec3& p) const {
   charge(1);

@@ -6,9 +6,9 @@
 
 #include <isopatch/surface.hpp>
 
-#include <atomic>
-#include <chrono>
 #include <cstdint>
+
+#include "api/evaluation_budget.hpp"
 
 namespace isopatch {
 
@@ -25,17 +25,14 @@ class BudgetedSurface final : public Surface {
   std::optional<Interval> bound(const Box& box) const override;
   std::optional<IntervalGradient> gradient_bound(const Box& box) const override;
 
-  std::uint64_t evaluations() const { return count_.load(std::memory_order_relaxed); }
+  std::uint64_t evaluations() const { return budget_.evaluations(); }
 
  private:
   /// Counts n evaluations; throws LimitError when a budget is exhausted.
-  void charge(std::uint64_t n) const;
+  void charge(std::uint64_t n) const { budget_.charge(n); }
 
   const Surface& inner_;
-  std::uint64_t max_evaluations_;
-  double seconds_;
-  std::chrono::steady_clock::time_point start_;
-  mutable std::atomic<std::uint64_t> count_{0};
+  mutable EvaluationBudget budget_;
 };
 
 }  // namespace isopatch

@@ -15,6 +15,7 @@
 #include "api/budgeted_surface.hpp"
 #include "api/frame_meshing.hpp"
 #include "project/convex_meshing.hpp"
+#include "remesh/remesh_presets.hpp"
 #include "surface/singular_level_set.hpp"
 #include "surface/target_size.hpp"
 #include "surface/zero_function.hpp"
@@ -41,26 +42,9 @@ double median_edge_length(const Mesh& mesh) {
 /// The remeshing settings derived from the mesher's: the requested edge length (else the output's
 /// median edge length) or, with max_error or a size_field, the varying sizes of target_size.hpp.
 RemeshSettings remesh_settings(const Mesh& mesh, const Box& box, const Settings& s, int iterations) {
-  RemeshSettings r;
-  r.iterations = iterations;
-  r.valence_search = s.valence_search;
-  r.curvature_sweeps = s.curvature_sweeps;
-  switch (s.quality) {
-    case Quality::Preview:
-      r.local_only = true;
-      break;
-    case Quality::Default:
-      break;
-    case Quality::Fine:
-      // More of what lowers the curvature error (docs/performance.md).
-      r.curvature_sweeps = std::min(kMaxCurvatureSweeps, 2 * s.curvature_sweeps);
-      r.final_relaxation_rounds = 12;
-      r.valence_search = std::min(kMaxValenceSearch, 2 * s.valence_search);
-      break;
-  }
+  RemeshSettings r = preset_remesh_settings(s, iterations);
   r.box = box;
   r.cut_planes = s.region;
-  r.cancel = s.cancel;
   // The projection mesher's sizes, shared; only where uniform sizes were not asked for by length does
   // the clean-up follow the output's median edge instead of the default length.
   r.sizes = target_sizes(s, box);

@@ -20,6 +20,7 @@
 #include "composite/patch_projection.hpp"
 #include "composite/patch_relaxation.hpp"
 #include "project/vertex_role.hpp"
+#include "remesh/remesh_presets.hpp"
 #include "surface/sampler.hpp"
 #include "surface/target_size.hpp"
 
@@ -33,15 +34,6 @@ constexpr int kSizeSamples = 9;      // points of a curve where a varying target
 using Key = std::array<double, 3>;
 Key key(const Vec3& p) {
   return {p.x(), p.y(), p.z()};
-}
-
-Vec3 side_start(const Composite& c, const PatchSide& s) {
-  const ConicArc& a = c.curves[s.curve];
-  return s.reversed ? a.end : a.start;
-}
-Vec3 side_end(const Composite& c, const PatchSide& s) {
-  const ConicArc& a = c.curves[s.curve];
-  return s.reversed ? a.start : a.end;
 }
 
 /// The curves sampled at their segment counts, with mesh ids: the corners first (in the order the
@@ -115,26 +107,10 @@ int curve_segment_count(const ConicArc& arc, const Surface& surface, const Targe
   return static_cast<int>(std::clamp(count, 1.0, static_cast<double>(kMaxPatchResolution)));
 }
 
-/// The per-patch clean-up's settings, as the whole-surface clean-up derives them (api/mesh_surface.cpp).
+/// The per-patch clean-up's settings: the preset's passes (remesh_presets.hpp) with these sizes.
 RemeshSettings cleanup_settings(const Settings& s, const TargetSizes& sizes, int iterations) {
-  RemeshSettings r;
-  r.iterations = iterations;
-  r.valence_search = s.valence_search;
-  r.curvature_sweeps = s.curvature_sweeps;
-  switch (s.quality) {
-    case Quality::Preview:
-      r.local_only = true;
-      break;
-    case Quality::Default:
-      break;
-    case Quality::Fine:
-      r.curvature_sweeps = std::min(kMaxCurvatureSweeps, 2 * s.curvature_sweeps);
-      r.final_relaxation_rounds = 12;
-      r.valence_search = std::min(kMaxValenceSearch, 2 * s.valence_search);
-      break;
-  }
+  RemeshSettings r = preset_remesh_settings(s, iterations);
   r.sizes = sizes;
-  r.cancel = s.cancel;
   return r;
 }
 

@@ -14,4 +14,14 @@ Vec3 ConicArc::point(double t) const {
   return (a * start + b * control + c * end) / (a + b + c);
 }
 
+Vec3 side_start(const Composite& c, const PatchSide& side) {
+  const ConicArc& a = c.curves[side.curve];
+  return side.reversed ? a.end : a.start;
+}
+
+Vec3 side_end(const Composite& c, const PatchSide& side) {
+  const ConicArc& a = c.curves[side.curve];
+  return side.reversed ? a.start : a.end;
+}
+
 }  // namespace isopatch

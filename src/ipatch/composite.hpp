@@ -64,4 +64,9 @@ struct Composite {
   std::vector<CompositePatch> patches;
 };
 
+/// Where `side` of a patch starts and ends (the curve's ends, swapped when the side is reversed).
+/// \pre side.curve < c.curves.size().
+Vec3 side_start(const Composite& c, const PatchSide& side);
+Vec3 side_end(const Composite& c, const PatchSide& side);
+
 }  // namespace isopatch

@@ -10,19 +10,7 @@
 
 namespace isopatch {
 
-namespace {
-
-Vec3 side_start(const Composite& c, const PatchSide& s) {
-  const ConicArc& a = c.curves[s.curve];
-  return s.reversed ? a.end : a.start;
-}
-
-Vec3 side_end(const Composite& c, const PatchSide& s) {
-  const ConicArc& a = c.curves[s.curve];
-  return s.reversed ? a.start : a.end;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 void check_composite_closed(const Composite& composite) {
   std::vector<int> forward(composite.curves.size(), 0), backward(composite.curves.size(), 0);

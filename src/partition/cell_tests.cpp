@@ -1,6 +1,7 @@
 // Sample-based cell tests. They are heuristics (they look at samples, not at the whole cell); the
 // reasons they imply a single disk when they hold everywhere are in docs/algorithms.md 2.9.5.
 #include "partition/cell_tests.hpp"
+#include "partition/convex_cell_tests.hpp"
 
 #include "core/cyclic.hpp"
 #include "partition/sample_cache.hpp"
@@ -21,20 +22,8 @@ int sign_changes(double first, std::span<const double> interior, double last) {
 }
 
 bool in_plane_gradients_agree(std::span<const Vec3> gradients, int axis) {
-  // A gradient that is not finite (f not differentiable there) fails the test.
-  for (const Vec3& g : gradients)
-    if (!g.allFinite()) return false;
-  auto in_plane = [axis](Vec3 g) {
-    g[axis] = 0.0;
-    return g;
-  };
-  for (std::size_t i = 0; i < gradients.size(); ++i) {
-    const Vec3 a = in_plane(gradients[i]);
-    if (!(a.squaredNorm() > 0.0)) return false;
-    for (std::size_t j = i + 1; j < gradients.size(); ++j)
-      if (!(a.dot(in_plane(gradients[j])) > 0.0)) return false;
-  }
-  return true;
+  // The general test with the axis as the normal: g - (g . e) e zeroes that component exactly.
+  return in_plane_gradients_agree(gradients, Vec3::Unit(axis));
 }
 
 bool gradients_within_cone(std::span<const Vec3> gradients, double cos_max) {
