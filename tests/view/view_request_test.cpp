@@ -76,5 +76,26 @@ TEST(ViewRequest, RefusesBadBodiesNamingTheMember) {
   EXPECT_THROW(parse_mesh_request(R"({"surface": "torus"})", small), InputError);
 }
 
+TEST(ViewRequest, EchoedMemberNamesStayOnOneLine) {
+  // A member name with a newline (found by fuzz_view_request) or a very long one is escaped and cut.
+  for (const char* body :
+       {R"({"surface": "torus", "su1\nnror": 1})", R"({"surface": "torus", "a\u0007b": 1})"}) {
+    try {
+      parse_mesh_request(body);
+      ADD_FAILURE() << "accepted " << body;
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      EXPECT_EQ(message.find('\a'), std::string::npos) << message;
+    }
+  }
+  try {
+    parse_mesh_request(R"({"surface": "torus", ")" + std::string(500, 'k') + R"(": 1})");
+    ADD_FAILURE() << "accepted a long unknown member";
+  } catch (const InputError& e) {
+    EXPECT_LT(std::string(e.what()).size(), 250u);
+  }
+}
+
 }  // namespace
 }  // namespace isopatch::view

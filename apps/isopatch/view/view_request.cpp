@@ -15,8 +15,29 @@ namespace {
 
 using nlohmann::json;
 
+/// `text` as it may stand in a one-line message: control characters escaped (\n, \xHH), at most 60
+/// characters (a client's member names are echoed).
+std::string printable(const std::string& text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (const char c : text) {
+    if (out.size() >= 60) return out + "...";
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') {
+      out += "\\n";
+    } else if (u < 0x20 || u == 0x7f) {
+      out += "\\x";
+      out += kHex[u >> 4];
+      out += kHex[u & 0xf];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
 [[noreturn]] void bad(const std::string& member, const std::string& problem) {
-  throw InputError(member + ": " + problem, member);
+  throw InputError(printable(member) + ": " + problem, member);
 }
 
 double positive_number(const json& value, const std::string& member) {
