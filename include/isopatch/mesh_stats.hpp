@@ -98,6 +98,21 @@ struct RemeshStats {
   std::uint64_t gradient_evaluations = 0;
   std::uint64_t hessian_evaluations = 0;
   StageTimes times;  ///< per pass, "cleanup_<pass>" (StageTimes)
+
+  /// Adds the counts of another clean-up run (iterations: the larger; times are not merged: callers
+  /// time their runs as a whole or merge StageTimes themselves).
+  void add_counts(const RemeshStats& o) {
+    iterations = iterations > o.iterations ? iterations : o.iterations;
+    splits += o.splits;
+    collapses += o.collapses;
+    flips += o.flips;
+    repairs += o.repairs;
+    rejected_moves += o.rejected_moves;
+    exactness_moves += o.exactness_moves;
+    error_bound_violations += o.error_bound_violations;
+    gradient_evaluations += o.gradient_evaluations;
+    hessian_evaluations += o.hessian_evaluations;
+  }
 };
 
 /// What the mesh written may get wrong, for warnings.

@@ -310,18 +310,7 @@ CompositeMesh mesh_composite_projection(const Composite& c, const Settings& sett
     }
     if (iterations > 0) {
       RemeshStats total;
-      for (const RemeshStats& r : cleanup) {
-        total.iterations = std::max(total.iterations, r.iterations);
-        total.splits += r.splits;
-        total.collapses += r.collapses;
-        total.flips += r.flips;
-        total.repairs += r.repairs;
-        total.rejected_moves += r.rejected_moves;
-        total.exactness_moves += r.exactness_moves;
-        total.error_bound_violations += r.error_bound_violations;
-        total.gradient_evaluations += r.gradient_evaluations;
-        total.hessian_evaluations += r.hessian_evaluations;
-      }
+      for (const RemeshStats& r : cleanup) total.add_counts(r);
       stats->gradient_evaluations += total.gradient_evaluations;
       stats->cleanup = total;
       if (settings.max_error) stats->warnings.error_bound_violations = total.error_bound_violations;

@@ -43,16 +43,7 @@ PatchPiece relax_patch(const PatchPiece& piece, const std::vector<Vec3>& positio
     mesh.triangles.push_back(local);
   }
   const RemeshStats r = remesh_on_surface(mesh, surface, settings);
-  stats.iterations = std::max(stats.iterations, r.iterations);
-  stats.splits += r.splits;
-  stats.collapses += r.collapses;
-  stats.flips += r.flips;
-  stats.repairs += r.repairs;
-  stats.rejected_moves += r.rejected_moves;
-  stats.exactness_moves += r.exactness_moves;
-  stats.error_bound_violations += r.error_bound_violations;
-  stats.gradient_evaluations += r.gradient_evaluations;
-  stats.hessian_evaluations += r.hessian_evaluations;
+  stats.add_counts(r);
   // Back to mesh ids: a vertex at the exact position of a boundary vertex is that vertex (the remesher
   // keeps boundary vertices where they are); every other one is new.
   PatchPiece out;
