@@ -5,6 +5,10 @@
 
 #include <algorithm>
 #include <iterator>
+#include <type_traits>
+#include <utility>
+
+#include "remesh/spatial_order.hpp"
 
 namespace isopatch {
 
@@ -15,8 +19,15 @@ EditableMesh::EditableMesh(const Mesh& mesh, std::vector<Vec3> vertex_normals)
       triangles(mesh.triangles),
       triangle_alive(mesh.triangles.size(), true),
       incident(mesh.positions.size()) {
+  // Lists laid out in vertex order with room for two more entries each.
+  {
+    std::vector<std::uint32_t> counts(positions.size(), 0);
+    for (const Triangle& t : triangles)
+      for (std::uint32_t v : t) ++counts[v];
+    for (std::uint32_t v = 0; v < positions.size(); ++v) incident.make_room(v, counts[v] + 2);
+  }
   for (std::uint32_t t = 0; t < triangles.size(); ++t)
-    for (std::uint32_t v : triangles[t]) incident[v].push_back(t);
+    for (std::uint32_t v : triangles[t]) incident.push_back(v, t);
   for (const VertexAttribute& a : mesh.attributes) {
     attribute_names.push_back(a.name);
     attributes.push_back(a.values);
@@ -181,16 +192,14 @@ void EditableMesh::replace_vertex(std::uint32_t t, std::uint32_t from, std::uint
 }
 
 void EditableMesh::detach(std::uint32_t v, std::uint32_t t) {
-  auto& list = incident[v];
-  const auto it = std::find(list.begin(), list.end(), t);
-  if (it != list.end()) list.erase(it);
+  incident.remove(v, t);
 }
 
 std::uint32_t EditableMesh::add_triangle(const Triangle& t) {
   const auto id = static_cast<std::uint32_t>(triangles.size());
   triangles.push_back(t);
   triangle_alive.push_back(true);
-  for (std::uint32_t v : t) incident[v].push_back(id);
+  for (std::uint32_t v : t) incident.push_back(v, id);
   return id;
 }
 
@@ -198,7 +207,7 @@ void EditableMesh::reserve_splits(std::size_t splits) {
   positions.reserve(positions.size() + splits);
   normals.reserve(normals.size() + splits);
   locked.reserve(locked.size() + splits);
-  incident.reserve(incident.size() + splits);
+  incident.reserve(splits);
   for (std::vector<float>& values : attributes) values.reserve(values.size() + splits);
   triangles.reserve(triangles.size() + 2 * splits);
   triangle_alive.reserve(triangle_alive.size() + 2 * splits);
@@ -209,17 +218,18 @@ std::uint32_t EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n) {
   positions.push_back(p);
   normals.push_back(n);
   locked.push_back(false);
-  incident.emplace_back();
+  incident.add_vertex();
+  incident.make_room(m, 8);  // four triangles now, about six once the clean-up is done with it
   for (std::size_t k = 0; k < attributes.size(); ++k)
     attributes[k].push_back(attribute_names[k] == "role" ? 5.0f : attributes[k][e.a]);
   // (a, b, c) -> (a, m, c) + (m, b, c); (b, a, d) -> (b, m, d) + (m, a, d).
   replace_vertex(e.t_ab, e.b, m);
   detach(e.b, e.t_ab);
-  incident[m].push_back(e.t_ab);
+  incident.push_back(m, e.t_ab);
   add_triangle({m, e.b, e.c});
   replace_vertex(e.t_ba, e.a, m);
   detach(e.a, e.t_ba);
-  incident[m].push_back(e.t_ba);
+  incident.push_back(m, e.t_ba);
   add_triangle({m, e.a, e.d});
   return m;
 }
@@ -229,11 +239,8 @@ void EditableMesh::collapse(const Edge& e, const Vec3& p, const Vec3& n) {
     triangle_alive[t] = false;
     for (std::uint32_t v : triangles[t]) detach(v, t);
   }
-  for (std::uint32_t t : incident[e.a]) {
-    replace_vertex(t, e.a, e.b);
-    incident[e.b].push_back(t);
-  }
-  incident[e.a].clear();
+  for (std::uint32_t t : incident[e.a]) replace_vertex(t, e.a, e.b);
+  incident.move_all(e.a, e.b);
   positions[e.b] = p;
   normals[e.b] = n;
 }
@@ -241,11 +248,8 @@ void EditableMesh::collapse(const Edge& e, const Vec3& p, const Vec3& n) {
 void EditableMesh::collapse_boundary(const BoundaryEdge& e) {
   triangle_alive[e.t] = false;
   for (std::uint32_t v : triangles[e.t]) detach(v, e.t);
-  for (std::uint32_t t : incident[e.a]) {
-    replace_vertex(t, e.a, e.b);
-    incident[e.b].push_back(t);
-  }
-  incident[e.a].clear();
+  for (std::uint32_t t : incident[e.a]) replace_vertex(t, e.a, e.b);
+  incident.move_all(e.a, e.b);
 }
 
 void EditableMesh::flip(const Edge& e) {
@@ -254,8 +258,8 @@ void EditableMesh::flip(const Edge& e) {
   triangles[e.t_ba] = {e.b, e.c, e.d};
   detach(e.b, e.t_ab);
   detach(e.a, e.t_ba);
-  incident[e.d].push_back(e.t_ab);
-  incident[e.c].push_back(e.t_ba);
+  incident.push_back(e.d, e.t_ab);
+  incident.push_back(e.c, e.t_ba);
 }
 
 std::vector<std::uint32_t> EditableMesh::compact() {
@@ -283,9 +287,7 @@ std::vector<std::uint32_t> EditableMesh::compact() {
     values.resize(vertices);
     values.shrink_to_fit();
   };
-  for (std::vector<std::uint32_t>& list : incident)
-    for (std::uint32_t& t : list) t = triangle_id[t];
-  squeeze(incident);
+  incident.renumber_in_order(vertex_id, vertices, triangle_id);
   squeeze(positions);
   squeeze(normals);
   for (std::uint32_t v = 0; v < locked.size(); ++v)
@@ -293,6 +295,63 @@ std::vector<std::uint32_t> EditableMesh::compact() {
   locked.resize(vertices);
   locked.shrink_to_fit();
   for (std::vector<float>& values : attributes) squeeze(values);
+  return vertex_id;
+}
+
+std::vector<std::uint32_t> EditableMesh::compact_in_space_order() {
+  std::vector<bool> live(positions.size());
+  for (std::uint32_t v = 0; v < positions.size(); ++v) live[v] = alive(v);
+  const std::vector<std::uint32_t> order = z_order(positions, live);  // new id -> old slot
+  std::vector<std::uint32_t> vertex_id(positions.size(), kDeadSlot);
+  for (std::uint32_t k = 0; k < order.size(); ++k) vertex_id[order[k]] = k;
+  // Triangles by their smallest new corner id (a counting sort: stable, linear).
+  std::vector<std::uint32_t> first(order.size() + 1, 0);
+  const auto smallest = [&](const Triangle& t) {
+    return std::min({vertex_id[t[0]], vertex_id[t[1]], vertex_id[t[2]]});
+  };
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+    if (triangle_alive[t]) ++first[smallest(triangles[t]) + 1];
+  for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+  std::vector<std::uint32_t> triangle_id(triangles.size(), kDeadSlot);
+  std::vector<Triangle> new_triangles(first.back());
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    if (!triangle_alive[t]) continue;
+    const std::uint32_t slot = first[smallest(triangles[t])]++;
+    triangle_id[t] = slot;
+    for (std::size_t c = 0; c < 3; ++c) new_triangles[slot][c] = vertex_id[triangles[t][c]];
+  }
+  triangles = std::move(new_triangles);
+  triangle_alive.assign(triangles.size(), true);
+  triangle_alive.shrink_to_fit();
+  incident.rebuild(order, triangle_id);
+  // Per-vertex arrays permuted in place (no second copy): each value is carried along its cycle of
+  // slots until it lands in a dead slot, a slot already emptied, or where its cycle began.
+  std::vector<bool> moved(positions.size(), false);
+  const auto permute = [&](auto& values) {
+    std::fill(moved.begin(), moved.end(), false);
+    for (std::uint32_t s = 0; s < values.size(); ++s) {
+      if (moved[s] || vertex_id[s] == kDeadSlot) continue;
+      auto carry = std::move(values[s]);
+      moved[s] = true;
+      for (std::uint32_t at = vertex_id[s];;) {
+        if (moved[at] || vertex_id[at] == kDeadSlot) {
+          values[at] = std::move(carry);
+          break;
+        }
+        std::swap(carry, values[at]);
+        moved[at] = true;
+        at = vertex_id[at];
+      }
+    }
+    values.resize(order.size());
+    values.shrink_to_fit();
+  };
+  permute(positions);
+  permute(normals);
+  std::vector<bool> new_locked(order.size());  // bits: gathered (a bit has no value to carry)
+  for (std::uint32_t k = 0; k < order.size(); ++k) new_locked[k] = locked[order[k]];
+  locked = std::move(new_locked);
+  for (std::vector<float>& values : attributes) permute(values);
   return vertex_id;
 }
 

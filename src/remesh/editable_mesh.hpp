@@ -5,6 +5,8 @@
 
 #include <isopatch/mesh.hpp>
 
+#include "remesh/incidence_lists.hpp"
+
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -71,10 +73,16 @@ class EditableMesh {
   /// releases the spare capacity. Returns the new id of every old vertex slot (kDeadSlot for a dead
   /// one), for the per-vertex data that callers hold.
   std::vector<std::uint32_t> compact();
+  /// The same, but the live vertices are renumbered along the Z-order curve of their positions
+  /// (spatial_order.hpp) and the triangles by their smallest new vertex id (ties in their old order),
+  /// so that neighbours in the mesh sit mostly near each other in memory; every incidence list is
+  /// rebuilt (in its old order) in one sweep, so the lists of near vertices are near each other too.
+  /// The mesh is the same up to the numbering; deterministic.
+  std::vector<std::uint32_t> compact_in_space_order();
   static constexpr std::uint32_t kDeadSlot = 0xffffffffu;
 
   std::size_t vertex_slots() const { return positions.size(); }
-  bool alive(std::uint32_t v) const { return !incident[v].empty(); }
+  bool alive(std::uint32_t v) const { return !incident.empty(v); }
   /// The mesh of live triangles and referenced vertices, attributes carried along.
   Mesh to_mesh() const;
 
@@ -83,8 +91,8 @@ class EditableMesh {
   std::vector<bool> locked;  ///< on a boundary edge at construction: never moved or removed
   std::vector<Triangle> triangles;
   std::vector<bool> triangle_alive;
-  std::vector<std::vector<std::uint32_t>> incident;  ///< live triangles per vertex
-  std::vector<std::vector<float>> attributes;        ///< per attribute, per vertex slot
+  IncidenceLists incident;                     ///< live triangles per vertex
+  std::vector<std::vector<float>> attributes;  ///< per attribute, per vertex slot
   std::vector<std::string> attribute_names;
 
  private:

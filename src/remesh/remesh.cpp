@@ -68,8 +68,10 @@ class Remesher {
     // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
     // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     timed("cleanup_relax", [&] { relax(settings_.final_relaxation_rounds); });
-    // The rounds of splits and collapses left dead slots behind: the sweeps cache data per slot.
-    compact();
+    // The rounds of splits and collapses left dead slots behind: the sweeps cache data per slot. The
+    // connectivity is final, so the vertices are renumbered along a space-filling curve: each sweep
+    // then reads the mesh mostly in memory order (on a 1M-vertex sphere the sweeps took half the time).
+    compact(true);
     if (settings_.curvature_sweeps > 0) {
       const ExactnessMoveRules rules{
           .project = [this](Vec3& p, Vec3& n, double max_step) { return project(p, n, max_step); },
@@ -126,9 +128,10 @@ class Remesher {
   }
 
  private:
-  /// Drops the mesh's dead slots (EditableMesh::compact) and renumbers the per-vertex data held here.
-  void compact() {
-    const std::vector<std::uint32_t> new_id = mesh_.compact();
+  /// Drops the mesh's dead slots (EditableMesh::compact) and renumbers the per-vertex data held here;
+  /// In space order: EditableMesh::compact_in_space_order.
+  void compact(bool space_order = false) {
+    const std::vector<std::uint32_t> new_id = space_order ? mesh_.compact_in_space_order() : mesh_.compact();
     sizes_.renumber(new_id);
     // New slots (from splits) were never in these lists: they stay -1.
     const auto renumber = [&](std::vector<int>& per_vertex) {
