@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
   // Large arrays (the clean-up's per-vertex and per-triangle arrays) straight from the system, so that
   // freeing one returns its pages: glibc otherwise raises this threshold after the first such free and
   // serves later large arrays from its heap, whose freed holes stay resident. A sphere of 1M vertices
-  // peaked at 365 MB resident without this and 270 MB with it, in the same time (docs/performance.md).
+  // peaked at 365 MB resident without this and 274 MB with it, in about the same time (docs/algorithms.md,
+  // "Memory layout").
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
 #endif
   CLI::App app{"isopatch: good-quality triangle meshes of smooth implicit surfaces f(x,y,z) = 0"};

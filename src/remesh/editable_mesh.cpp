@@ -5,9 +5,9 @@
 
 #include <algorithm>
 #include <iterator>
-#include <type_traits>
 #include <utility>
 
+#include "remesh/slot_renumbering.hpp"
 #include "remesh/spatial_order.hpp"
 
 namespace isopatch {
@@ -19,12 +19,13 @@ EditableMesh::EditableMesh(const Mesh& mesh, std::vector<Vec3> vertex_normals)
       triangles(mesh.triangles),
       triangle_alive(mesh.triangles.size(), true),
       incident(mesh.positions.size()) {
-  // Lists laid out in vertex order with room for two more entries each.
+  // Lists laid out in vertex order with the spare room a rebuilt run has.
   {
     std::vector<std::uint32_t> counts(positions.size(), 0);
     for (const Triangle& t : triangles)
       for (std::uint32_t v : t) ++counts[v];
-    for (std::uint32_t v = 0; v < positions.size(); ++v) incident.make_room(v, counts[v] + 2);
+    for (std::uint32_t v = 0; v < positions.size(); ++v)
+      incident.make_room(v, counts[v] + IncidenceLists::kSpare);
   }
   for (std::uint32_t t = 0; t < triangles.size(); ++t)
     for (std::uint32_t v : triangles[t]) incident.push_back(v, t);
@@ -263,95 +264,54 @@ void EditableMesh::flip(const Edge& e) {
 }
 
 std::vector<std::uint32_t> EditableMesh::compact() {
-  std::vector<std::uint32_t> vertex_id(positions.size(), kDeadSlot);
-  std::uint32_t vertices = 0;
+  std::vector<std::uint32_t> order;
   for (std::uint32_t v = 0; v < positions.size(); ++v)
-    if (alive(v)) vertex_id[v] = vertices++;
-  std::vector<std::uint32_t> triangle_id(triangles.size(), kDeadSlot);
-  std::uint32_t kept = 0;
-  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-    if (!triangle_alive[t]) continue;
-    triangle_id[t] = kept;
-    Triangle& tri = triangles[kept++];
-    tri = triangles[t];
-    for (std::uint32_t& v : tri) v = vertex_id[v];
-  }
-  triangles.resize(kept);
-  triangles.shrink_to_fit();
-  triangle_alive.assign(kept, true);
-  triangle_alive.shrink_to_fit();
-  // Per-vertex arrays moved down in place (a live vertex's new id is never above its old one).
-  const auto squeeze = [&](auto& values) {
-    for (std::uint32_t v = 0; v < values.size(); ++v)
-      if (vertex_id[v] != kDeadSlot && vertex_id[v] != v) values[vertex_id[v]] = std::move(values[v]);
-    values.resize(vertices);
-    values.shrink_to_fit();
-  };
-  incident.renumber_in_order(vertex_id, vertices, triangle_id);
-  squeeze(positions);
-  squeeze(normals);
-  for (std::uint32_t v = 0; v < locked.size(); ++v)
-    if (vertex_id[v] != kDeadSlot) locked[vertex_id[v]] = locked[v];
-  locked.resize(vertices);
-  locked.shrink_to_fit();
-  for (std::vector<float>& values : attributes) squeeze(values);
-  return vertex_id;
+    if (alive(v)) order.push_back(v);
+  return renumber(order, false);
 }
 
 std::vector<std::uint32_t> EditableMesh::compact_in_space_order() {
   std::vector<bool> live(positions.size());
   for (std::uint32_t v = 0; v < positions.size(); ++v) live[v] = alive(v);
-  const std::vector<std::uint32_t> order = z_order(positions, live);  // new id -> old slot
+  return renumber(z_order(positions, live), true);
+}
+
+std::vector<std::uint32_t> EditableMesh::renumber(const std::vector<std::uint32_t>& order, bool space_order) {
   std::vector<std::uint32_t> vertex_id(positions.size(), kDeadSlot);
   for (std::uint32_t k = 0; k < order.size(); ++k) vertex_id[order[k]] = k;
-  // Triangles by their smallest new corner id (a counting sort: stable, linear).
-  std::vector<std::uint32_t> first(order.size() + 1, 0);
-  const auto smallest = [&](const Triangle& t) {
-    return std::min({vertex_id[t[0]], vertex_id[t[1]], vertex_id[t[2]]});
-  };
-  for (std::uint32_t t = 0; t < triangles.size(); ++t)
-    if (triangle_alive[t]) ++first[smallest(triangles[t]) + 1];
-  for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+  // The live triangles in their order, or (in space order) by their smallest new corner id with ties
+  // in their order (a counting sort: stable, linear).
   std::vector<std::uint32_t> triangle_id(triangles.size(), kDeadSlot);
-  std::vector<Triangle> new_triangles(first.back());
-  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-    if (!triangle_alive[t]) continue;
-    const std::uint32_t slot = first[smallest(triangles[t])]++;
-    triangle_id[t] = slot;
-    for (std::size_t c = 0; c < 3; ++c) new_triangles[slot][c] = vertex_id[triangles[t][c]];
+  if (space_order) {
+    const auto smallest = [&](const Triangle& t) {
+      return std::min({vertex_id[t[0]], vertex_id[t[1]], vertex_id[t[2]]});
+    };
+    std::vector<std::uint32_t> first(order.size() + 1, 0);
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+      if (triangle_alive[t]) ++first[smallest(triangles[t]) + 1];
+    for (std::size_t k = 1; k < first.size(); ++k) first[k] += first[k - 1];
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+      if (triangle_alive[t]) triangle_id[t] = first[smallest(triangles[t])]++;
+  } else {
+    std::uint32_t kept = 0;
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+      if (triangle_alive[t]) triangle_id[t] = kept++;
   }
-  triangles = std::move(new_triangles);
+  renumber_slots(triangles, triangle_id, Triangle{});
+  for (Triangle& tri : triangles)
+    for (std::uint32_t& v : tri) v = vertex_id[v];
   triangle_alive.assign(triangles.size(), true);
   triangle_alive.shrink_to_fit();
-  incident.rebuild(order, triangle_id);
-  // Per-vertex arrays permuted in place (no second copy): each value is carried along its cycle of
-  // slots until it lands in a dead slot, a slot already emptied, or where its cycle began.
-  std::vector<bool> moved(positions.size(), false);
-  const auto permute = [&](auto& values) {
-    std::fill(moved.begin(), moved.end(), false);
-    for (std::uint32_t s = 0; s < values.size(); ++s) {
-      if (moved[s] || vertex_id[s] == kDeadSlot) continue;
-      auto carry = std::move(values[s]);
-      moved[s] = true;
-      for (std::uint32_t at = vertex_id[s];;) {
-        if (moved[at] || vertex_id[at] == kDeadSlot) {
-          values[at] = std::move(carry);
-          break;
-        }
-        std::swap(carry, values[at]);
-        moved[at] = true;
-        at = vertex_id[at];
-      }
-    }
-    values.resize(order.size());
-    values.shrink_to_fit();
-  };
-  permute(positions);
-  permute(normals);
-  std::vector<bool> new_locked(order.size());  // bits: gathered (a bit has no value to carry)
-  for (std::uint32_t k = 0; k < order.size(); ++k) new_locked[k] = locked[order[k]];
-  locked = std::move(new_locked);
-  for (std::vector<float>& values : attributes) permute(values);
+  // Kept order: the runs squeezed in place (no second copy while the clean-up is at its largest);
+  // space order: laid out afresh in the new order, so that near vertices' lists are near too.
+  if (space_order)
+    incident.rebuild(order, triangle_id);
+  else
+    incident.renumber_in_order(vertex_id, order.size(), triangle_id);
+  renumber_slots(positions, vertex_id, Vec3::Zero().eval());
+  renumber_slots(normals, vertex_id, Vec3::Zero().eval());
+  renumber_slots(locked, vertex_id, false);
+  for (std::vector<float>& values : attributes) renumber_slots(values, vertex_id, 0.0f);
   return vertex_id;
 }
 

@@ -6,6 +6,7 @@
 #include <isopatch/mesh.hpp>
 
 #include "remesh/incidence_lists.hpp"
+#include "remesh/slot_renumbering.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -79,7 +80,7 @@ class EditableMesh {
   /// rebuilt (in its old order) in one sweep, so the lists of near vertices are near each other too.
   /// The mesh is the same up to the numbering; deterministic.
   std::vector<std::uint32_t> compact_in_space_order();
-  static constexpr std::uint32_t kDeadSlot = 0xffffffffu;
+  static constexpr std::uint32_t kDeadSlot = kDroppedSlot;
 
   std::size_t vertex_slots() const { return positions.size(); }
   bool alive(std::uint32_t v) const { return !incident.empty(v); }
@@ -99,6 +100,9 @@ class EditableMesh {
   void replace_vertex(std::uint32_t t, std::uint32_t from, std::uint32_t to);
   void detach(std::uint32_t v, std::uint32_t t);
   std::uint32_t add_triangle(const Triangle& t);
+  /// compact() with the live vertices renumbered in `order` (new id -> old slot); the triangles in
+  /// their order, or with space_order by their smallest new vertex id.
+  std::vector<std::uint32_t> renumber(const std::vector<std::uint32_t>& order, bool space_order);
 };
 
 /// The elements of both sorted lists, sorted (e.g. two vertices' neighbours()).

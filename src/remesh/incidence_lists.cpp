@@ -7,11 +7,12 @@
 #include <cstdint>
 #include <utility>
 
+#include "remesh/slot_renumbering.hpp"
+
 namespace isopatch {
 namespace {
 
 constexpr std::size_t kMaxEntries = 65535;  // a count is 16 bits (and a run fits in one block)
-constexpr std::size_t kSpare = 2;           // entries of room a rebuilt run keeps beyond its list
 
 }  // namespace
 
@@ -97,7 +98,7 @@ void IncidenceLists::renumber_in_order(const std::vector<std::uint32_t>& vertex_
   std::vector<std::uint32_t> owners;  // kept vertices with a run, in the order the runs lie
   owners.reserve(vertices);
   for (std::uint32_t v = 0; v < start_.size(); ++v)
-    if (vertex_id[v] != UINT32_MAX && room_[v] > 0) owners.push_back(v);
+    if (vertex_id[v] != kDroppedSlot && room_[v] > 0) owners.push_back(v);
   std::sort(owners.begin(), owners.end(), [&](std::uint32_t a, std::uint32_t b) {
     return start_[a] < start_[b] || (start_[a] == start_[b] && a < b);
   });
@@ -116,7 +117,7 @@ void IncidenceLists::renumber_in_order(const std::vector<std::uint32_t>& vertex_
   end_ = next;
   blocks_.resize((std::size_t{end_} + kBlock - 1) >> kBlockBits);
   for (std::uint32_t v = 0; v < start_.size(); ++v) {
-    if (vertex_id[v] == UINT32_MAX) continue;
+    if (vertex_id[v] == kDroppedSlot) continue;
     const std::uint32_t k = vertex_id[v];  // k <= v: moved down in place
     if (room_[v] == 0) start_[v] = end_;
     start_[k] = start_[v], count_[k] = count_[v], room_[k] = room_[v];

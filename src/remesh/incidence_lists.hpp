@@ -3,8 +3,8 @@
 // slots (its list and some spare room), so that a pass over the vertices in order reads memory in
 // order and a list costs no heap block of its own (a std::vector per vertex costs 24 bytes of header
 // plus a scattered heap block of 32-48 bytes). A list that outgrows its run moves to the end of the
-// store with twice the room; the runs left behind stay unused until rebuild(), which the clean-up calls
-// whenever it compacts the mesh. The store grows by whole blocks, never by copying into a larger array:
+// store with four more entries of room; the runs left behind stay unused until rebuild(), which the clean-up
+// calls whenever it compacts the mesh. The store grows by whole blocks, never by copying into a larger array:
 // growing never holds two copies of the lists, and a list that is read never moves unless it is its
 // own vertex's list that changes.
 //
@@ -46,8 +46,6 @@ class IncidenceLists {
   void push_back(std::uint32_t v, std::uint32_t t);
   /// Removes the first t from v's list, keeping the order of the others; nothing when t is absent.
   void remove(std::uint32_t v, std::uint32_t t);
-  /// Empties v's list.
-  void clear(std::uint32_t v) { count_[v] = 0; }
   /// Appends every entry of `from`'s list to `to`'s and empties `from`'s. \pre from != to
   void move_all(std::uint32_t from, std::uint32_t to);
   /// Adds an empty list for a new vertex slot; returns its id.
@@ -63,12 +61,13 @@ class IncidenceLists {
   /// \pre every id in the kept lists has triangle_id[id] valid
   void rebuild(const std::vector<std::uint32_t>& order, const std::vector<std::uint32_t>& triangle_id);
 
-  /// The same numbering change when it keeps the order (vertex_id rises over the kept slots, kDead
-  /// = UINT32_MAX for a dropped one; `vertices` kept): in place, the runs squeezed down in the order
+  /// The same numbering change when it keeps the order (vertex_id rises over the kept slots,
+  /// kDroppedSlot for a dropped one; `vertices` kept): in place, the runs squeezed down in the order
   /// they lie, so no second copy of the lists is held. \pre vertex_id.size() == size()
   void renumber_in_order(const std::vector<std::uint32_t>& vertex_id, std::size_t vertices,
                          const std::vector<std::uint32_t>& triangle_id);
 
+  static constexpr std::size_t kSpare = 2;  ///< entries of room a rebuilt run keeps beyond its list
   static constexpr std::size_t kBlockBits = 16;
   static constexpr std::size_t kBlock = std::size_t{1} << kBlockBits;  ///< entries per block
   static constexpr std::size_t kMaxBlocks = 16384;                     ///< 2^30 entries in all

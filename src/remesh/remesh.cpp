@@ -20,6 +20,7 @@
 #include "remesh/remesh_checks.hpp"
 #include "remesh/remesh_thresholds.hpp"
 #include "remesh/size_field.hpp"
+#include "remesh/slot_renumbering.hpp"
 #include "remesh/triangle_angle.hpp"
 #include "remesh/valence_flips.hpp"
 
@@ -128,21 +129,14 @@ class Remesher {
   }
 
  private:
-  /// Drops the mesh's dead slots (EditableMesh::compact) and renumbers the per-vertex data held here;
-  /// In space order: EditableMesh::compact_in_space_order.
+  /// Drops the mesh's dead slots (EditableMesh::compact, or with space_order
+  /// EditableMesh::compact_in_space_order) and renumbers the per-vertex data held here.
   void compact(bool space_order = false) {
     const std::vector<std::uint32_t> new_id = space_order ? mesh_.compact_in_space_order() : mesh_.compact();
     sizes_.renumber(new_id);
     // New slots (from splits) were never in these lists: they stay -1.
-    const auto renumber = [&](std::vector<int>& per_vertex) {
-      if (per_vertex.empty()) return;
-      std::vector<int> kept(mesh_.vertex_slots(), -1);
-      for (std::uint32_t v = 0; v < per_vertex.size() && v < new_id.size(); ++v)
-        if (new_id[v] != EditableMesh::kDeadSlot) kept[new_id[v]] = per_vertex[v];
-      per_vertex = std::move(kept);
-    };
-    renumber(slide_axis_);
-    renumber(slide_plane_);
+    renumber_slots(slide_axis_, new_id, -1);
+    renumber_slots(slide_plane_, new_id, -1);
   }
 
   /// Runs `pass`, adding its wall time to stage `name` of the statistics; returns what it returns.

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
-#include <utility>
+
+#include "remesh/slot_renumbering.hpp"
 
 namespace isopatch {
 
@@ -50,32 +50,9 @@ void SizeField::update(const EditableMesh& mesh) {
 }
 
 void SizeField::renumber(const std::vector<std::uint32_t>& new_id) {
-  // Any permutation of the live slots (EditableMesh::compact keeps their order, compact_in_space_order
-  // does not): gathered into new arrays.
-  std::size_t size = 0;
-  for (std::uint32_t v = 0; v < new_id.size(); ++v)
-    if (new_id[v] != EditableMesh::kDeadSlot) size = std::max<std::size_t>(size, new_id[v] + 1);
-  bool in_order = true;  // then moved down in place, with no second copy
-  for (std::uint32_t v = 0, next = 0; v < new_id.size(); ++v)
-    if (new_id[v] != EditableMesh::kDeadSlot) in_order = in_order && new_id[v] == next++;
-  const auto squeeze = [&](auto& values, auto fill) {  // fill: a slot that had no value
-    if (in_order) {
-      std::size_t kept = 0;
-      for (std::uint32_t v = 0; v < values.size() && v < new_id.size(); ++v)
-        if (new_id[v] != EditableMesh::kDeadSlot) values[new_id[v]] = values[v], kept = new_id[v] + 1;
-      values.resize(kept);
-      values.resize(size, fill);
-      values.shrink_to_fit();
-      return;
-    }
-    std::remove_reference_t<decltype(values)> moved(size, fill);
-    for (std::uint32_t v = 0; v < values.size() && v < new_id.size(); ++v)
-      if (new_id[v] != EditableMesh::kDeadSlot) moved[new_id[v]] = values[v];
-    values = std::move(moved);
-  };
-  squeeze(raw_, std::numeric_limits<double>::quiet_NaN());
-  squeeze(raw_at_, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()).eval());
-  squeeze(graded_, 0.0);
+  renumber_slots(raw_, new_id, std::numeric_limits<double>::quiet_NaN());
+  renumber_slots(raw_at_, new_id, Vec3::Constant(std::numeric_limits<double>::quiet_NaN()).eval());
+  renumber_slots(graded_, new_id, 0.0);
 }
 
 }  // namespace isopatch

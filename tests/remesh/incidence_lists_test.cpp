@@ -1,5 +1,6 @@
 // IncidenceLists against a plain list per vertex under random edits (growth, moves between runs,
-// new blocks, rebuilds), the Z-order of points, and the space-order compaction of EditableMesh.
+// new blocks, rebuilds), the in-place renumbering of per-slot arrays, the Z-order of points, and the
+// space-order compaction of EditableMesh.
 #include <isopatch/error.hpp>
 #include <isopatch/topology.hpp>
 
@@ -15,6 +16,7 @@
 
 #include "remesh/editable_mesh.hpp"
 #include "remesh/incidence_lists.hpp"
+#include "remesh/slot_renumbering.hpp"
 #include "remesh/spatial_order.hpp"
 
 namespace isopatch {
@@ -37,7 +39,7 @@ TEST(IncidenceLists, MatchAListPerVertexUnderRandomEditsAcrossBlocks) {
   for (int step = 0; step < 400000; ++step) {
     const int op = static_cast<int>(random() % 10);
     const auto v = static_cast<std::uint32_t>(random() % model.size());
-    if (op < 6) {
+    if (op < 6 && model[v].size() < 3000) {  // lists stay under the 16-bit count
       const auto t = static_cast<std::uint32_t>(random() % 1000);
       lists.push_back(v, t);
       model[v].push_back(t);
@@ -54,10 +56,6 @@ TEST(IncidenceLists, MatchAListPerVertexUnderRandomEditsAcrossBlocks) {
     } else if (random() % 200 == 0) {
       EXPECT_EQ(lists.add_vertex(), model.size());
       model.emplace_back();
-    }
-    if (model[v].size() > 3000) {  // keep lists under the 16-bit count
-      lists.clear(v);
-      model[v].clear();
     }
   }
   expect_same(lists, model);
@@ -99,6 +97,41 @@ TEST(IncidenceLists, RefusesMoreThan65535EntriesAtOneVertex) {
   for (std::uint32_t t = 0; t < 65535; ++t) lists.push_back(0, t);
   EXPECT_THROW(lists.push_back(0, 1), InputError);
   EXPECT_EQ(lists[0].size(), 65535u);
+}
+
+TEST(SlotRenumbering, MovesEveryKeptValueToItsNewSlotInPlace) {
+  // A random renumbering with dropped slots, against a gather into a new array.
+  std::mt19937 random(11);
+  for (int round = 0; round < 50; ++round) {
+    const std::size_t slots = 1 + random() % 200;
+    std::vector<std::uint32_t> kept_slots;
+    for (std::uint32_t s = 0; s < slots; ++s)
+      if (random() % 4 != 0) kept_slots.push_back(s);
+    std::vector<std::uint32_t> new_ids(kept_slots.size());
+    for (std::uint32_t k = 0; k < new_ids.size(); ++k) new_ids[k] = k;
+    if (round % 2 == 1) std::shuffle(new_ids.begin(), new_ids.end(), random);  // even rounds keep the order
+    std::vector<std::uint32_t> new_id(slots, kDroppedSlot);
+    for (std::size_t k = 0; k < kept_slots.size(); ++k) new_id[kept_slots[k]] = new_ids[k];
+    // Values for the first slots only: the rest take the fill.
+    const std::size_t filled = slots - random() % (slots / 2 + 1);
+    std::vector<int> values(filled);
+    std::vector<bool> bits(filled);
+    for (std::size_t s = 0; s < filled; ++s) values[s] = static_cast<int>(s) * 10, bits[s] = s % 3 == 0;
+    std::vector<int> expected(kept_slots.size());
+    std::vector<bool> expected_bits(kept_slots.size());
+    for (std::uint32_t s = 0; s < slots; ++s)
+      if (new_id[s] != kDroppedSlot) {
+        expected[new_id[s]] = s < filled ? values[s] : -1;
+        expected_bits[new_id[s]] = s < filled ? bool(bits[s]) : true;
+      }
+    renumber_slots(values, new_id, -1);
+    renumber_slots(bits, new_id, true);
+    EXPECT_EQ(values, expected);
+    EXPECT_EQ(bits, expected_bits);
+  }
+  std::vector<double> never_filled;  // a cache that was never filled stays empty
+  renumber_slots(never_filled, {0, kDroppedSlot, 1}, 1.0);
+  EXPECT_TRUE(never_filled.empty());
 }
 
 TEST(ZOrder, KeyInterleavesBitsAndOrderFollowsTheCurve) {
