@@ -17,7 +17,7 @@ EditableMesh::EditableMesh(const Mesh& mesh, std::vector<Vec3> vertex_normals)
       normals(std::move(vertex_normals)),
       locked(mesh.positions.size(), false),
       triangles(mesh.triangles),
-      triangle_alive(mesh.triangles.size(), true),
+      triangle_alive(mesh.triangles.size(), 1),
       incident(mesh.positions.size()) {
   // Lists laid out in vertex order with the spare room a rebuilt run has.
   {
@@ -199,7 +199,7 @@ void EditableMesh::detach(std::uint32_t v, std::uint32_t t) {
 std::uint32_t EditableMesh::add_triangle(const Triangle& t) {
   const auto id = static_cast<std::uint32_t>(triangles.size());
   triangles.push_back(t);
-  triangle_alive.push_back(true);
+  triangle_alive.push_back(1);
   for (std::uint32_t v : t) incident.push_back(v, id);
   return id;
 }
@@ -237,7 +237,7 @@ std::uint32_t EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n) {
 
 void EditableMesh::collapse(const Edge& e, const Vec3& p, const Vec3& n) {
   for (std::uint32_t t : {e.t_ab, e.t_ba}) {
-    triangle_alive[t] = false;
+    triangle_alive[t] = 0;
     for (std::uint32_t v : triangles[t]) detach(v, t);
   }
   for (std::uint32_t t : incident[e.a]) replace_vertex(t, e.a, e.b);
@@ -247,7 +247,7 @@ void EditableMesh::collapse(const Edge& e, const Vec3& p, const Vec3& n) {
 }
 
 void EditableMesh::collapse_boundary(const BoundaryEdge& e) {
-  triangle_alive[e.t] = false;
+  triangle_alive[e.t] = 0;
   for (std::uint32_t v : triangles[e.t]) detach(v, e.t);
   for (std::uint32_t t : incident[e.a]) replace_vertex(t, e.a, e.b);
   incident.move_all(e.a, e.b);
@@ -300,7 +300,7 @@ std::vector<std::uint32_t> EditableMesh::renumber(const std::vector<std::uint32_
   renumber_slots(triangles, triangle_id, Triangle{});
   for (Triangle& tri : triangles)
     for (std::uint32_t& v : tri) v = vertex_id[v];
-  triangle_alive.assign(triangles.size(), true);
+  triangle_alive.assign(triangles.size(), 1);
   triangle_alive.shrink_to_fit();
   // Kept order: the runs squeezed in place (no second copy while the clean-up is at its largest);
   // space order: laid out afresh in the new order, so that near vertices' lists are near too.

@@ -91,7 +91,9 @@ class EditableMesh {
   std::vector<Vec3> normals;
   std::vector<bool> locked;  ///< on a boundary edge at construction: never moved or removed
   std::vector<Triangle> triangles;
-  std::vector<bool> triangle_alive;
+  /// Per triangle slot: 1 while live. Bytes, not bits: collapses in far-apart regions clear entries
+  /// concurrently (block_edits.hpp).
+  std::vector<std::uint8_t> triangle_alive;
   IncidenceLists incident;                     ///< live triangles per vertex
   std::vector<std::vector<float>> attributes;  ///< per attribute, per vertex slot
   std::vector<std::string> attribute_names;

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/stage_timer.hpp"
+#include "remesh/block_edits.hpp"
 #include "remesh/box_boundary.hpp"
 #include "remesh/defect_region.hpp"
 #include "remesh/editable_mesh.hpp"
@@ -244,7 +245,8 @@ class Remesher {
     slide_plane_ = sliding_planes(mesh_, planes_, settings_.box ? &*settings_.box : nullptr, plane_margin());
   }
 
-  /// Collapses a into b (or b into a when a is locked); `max_length` bounds the new edges. Two locked
+  /// Collapses a into b (or b into a when a is locked); `max_length` bounds the new edges (callers count
+  /// the collapses: this writes only the rings of a and b, so far-apart calls may run at once). Two locked
   /// vertices: along their boundary edge (try_collapse_boundary).
   bool try_collapse(std::uint32_t a, std::uint32_t b, double max_length) {
     if (mesh_.locked[a] && mesh_.locked[b]) return try_collapse_boundary(a, b, max_length);
@@ -270,7 +272,6 @@ class Remesher {
       for (std::uint32_t t : mesh_.incident[v])
         if (t != e->t_ab && t != e->t_ba && !triangle_ok_with(t, v, p, n)) return false;
     mesh_.collapse(*e, p, n);
-    ++stats_.collapses;
     return true;
   }
 
@@ -291,7 +292,6 @@ class Remesher {
     for (std::uint32_t t : mesh_.incident[a])
       if (t != e->t && !triangle_ok_with(t, a, p, mesh_.normals[b])) return false;
     mesh_.collapse_boundary(*e);
-    ++stats_.collapses;
     return true;
   }
 
@@ -303,13 +303,16 @@ class Remesher {
       if (l < collapse_factor() * sizes_.edge(a, b)) work.push_back({l, {a, b}});
     }
     std::sort(work.begin(), work.end());
-    for (const auto& [l, edge] : work) {
-      const auto [a, b] = edge;
-      if (!mesh_.alive(a) || !mesh_.alive(b) || !mesh_.adjacent(a, b)) continue;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges(work.size());
+    for (std::size_t i = 0; i < work.size(); ++i) edges[i] = work[i].second;
+    work = {};
+    // Shortest first within each block; a collapse reads and writes only the rings of its edge's ends.
+    stats_.collapses += edit_edges_in_blocks(mesh_, edges, [this](std::uint32_t a, std::uint32_t b) {
+      if (!mesh_.alive(a) || !mesh_.alive(b) || !mesh_.adjacent(a, b)) return false;
       const double h = sizes_.edge(a, b);
-      if (length(a, b) >= collapse_factor() * h) continue;
-      try_collapse(a, b, kSplitFactor * h);
-    }
+      if (length(a, b) >= collapse_factor() * h) return false;
+      return try_collapse(a, b, kSplitFactor * h);
+    });
   }
 
   /// Flips e when its two new triangles are valid and `accept` agrees, given the cosines of the
@@ -477,6 +480,7 @@ class Remesher {
         const std::uint32_t d = tri[static_cast<std::size_t>((i + 1) % 3)];
         if (try_collapse(c, d, 2.0 * sizes_.edge(c, d))) {
           ++changes;
+          ++stats_.collapses;
           break;
         }
       }
