@@ -1,11 +1,12 @@
 #pragma once
-// Local edits of a list of edges (collapses) in parallel with one result for any number of threads,
+// Local edits of a list of edges (splits, collapses) in parallel with one result for any number of threads,
 // by the spatial blocks of flip_blocks.hpp: an edge whose two ends lie in one cube is edited by that
 // cube's task, in the list's order; the cubes of one colour run concurrently (they are at least one
 // cube apart, and an edit reads and writes only the rings of its edge's ends). The edges across the
 // first grid's faces get their turn in a grid shifted by half a cube, and the few across both grids'
 // faces last, one after the other.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -19,18 +20,30 @@
 
 namespace isopatch {
 
-/// Calls edit(a, b) for every (a, b) of `work`, each once: first the edges inside one cube of a grid
+using EdgeList = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
+/// The edges of `keyed` in ascending order of their keys (ties by the edge), each once per entry;
+/// releases `keyed`.
+inline EdgeList edges_by_key(
+    std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>>&& keyed) {
+  std::sort(keyed.begin(), keyed.end());
+  EdgeList edges(keyed.size());
+  for (std::size_t i = 0; i < keyed.size(); ++i) edges[i] = keyed[i].second;
+  keyed = {};
+  return edges;
+}
+
+/// Calls edit(a, b, k) for every (a, b) = work[k], each once: first the edges inside one cube of a grid
 /// of cubes (flip_block_width), the cubes of one colour in parallel, each cube's edges in work's
 /// order; then the rest inside one cube of the grid shifted by half a cube, the same way; then what is
 /// left, in work's order. Returns how many calls returned true.
-/// \pre edit(a, b) reads and writes only a, b, their neighbours and the triangles incident to them,
+/// \pre edit(a, b, k) reads and writes only a, b, their neighbours, the triangles incident to them and
+/// slots of its own (new slots numbered by k),
 /// and nothing else that another call writes (a counter of its own, say, returned instead), and
 /// touches only vertices within a few of the mesh's longest edges of a and b.
 /// \post the same edits, in the same order within each cube, for any number of threads.
 template <class Edit>
-std::size_t edit_edges_in_blocks(const EditableMesh& mesh,
-                                 const std::vector<std::pair<std::uint32_t, std::uint32_t>>& work,
-                                 Edit edit) {
+std::size_t edit_edges_in_blocks(const EditableMesh& mesh, const EdgeList& work, Edit edit) {
   using Index = std::vector<std::size_t>;
   Index pending(work.size());
   for (std::size_t i = 0; i < work.size(); ++i) pending[i] = i;
@@ -56,14 +69,14 @@ std::size_t edit_edges_in_blocks(const EditableMesh& mesh,
         for (std::size_t k = range.begin(); k != range.end(); ++k) {
           const std::uint32_t cube = cubes[k];
           for (const std::size_t i : inside[cube])
-            if (edit(work[i].first, work[i].second)) ++per_cube[cube];
+            if (edit(work[i].first, work[i].second, i)) ++per_cube[cube];
         }
       });
     for (const std::size_t n : per_cube) edits += n;
     pending = std::move(across);
   }
   for (const std::size_t i : pending)
-    if (edit(work[i].first, work[i].second)) ++edits;
+    if (edit(work[i].first, work[i].second, i)) ++edits;
   return edits;
 }
 

@@ -196,42 +196,47 @@ void EditableMesh::detach(std::uint32_t v, std::uint32_t t) {
   incident.remove(v, t);
 }
 
-std::uint32_t EditableMesh::add_triangle(const Triangle& t) {
-  const auto id = static_cast<std::uint32_t>(triangles.size());
-  triangles.push_back(t);
-  triangle_alive.push_back(1);
+void EditableMesh::set_triangle(std::uint32_t id, const Triangle& t) {
+  triangles[id] = t;
+  triangle_alive[id] = 1;
   for (std::uint32_t v : t) incident.push_back(v, id);
-  return id;
 }
 
-void EditableMesh::reserve_splits(std::size_t splits) {
-  positions.reserve(positions.size() + splits);
-  normals.reserve(normals.size() + splits);
-  locked.reserve(locked.size() + splits);
+std::pair<std::uint32_t, std::uint32_t> EditableMesh::add_split_slots(std::size_t splits) {
+  const auto first_vertex = static_cast<std::uint32_t>(positions.size());
+  const auto first_triangle = static_cast<std::uint32_t>(triangles.size());
+  const std::size_t vertices = positions.size() + splits;
+  positions.resize(vertices, Vec3::Zero());
+  normals.resize(vertices, Vec3::UnitZ());
+  locked.resize(vertices, false);
   incident.reserve(splits);
-  for (std::vector<float>& values : attributes) values.reserve(values.size() + splits);
-  triangles.reserve(triangles.size() + 2 * splits);
-  triangle_alive.reserve(triangle_alive.size() + 2 * splits);
+  for (std::size_t k = 0; k < splits; ++k) incident.add_vertex();
+  for (std::vector<float>& values : attributes) values.resize(vertices, 0.0f);
+  triangles.resize(triangles.size() + 2 * splits, Triangle{0, 0, 0});
+  triangle_alive.resize(triangles.size(), 0);
+  return {first_vertex, first_triangle};
 }
 
-std::uint32_t EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n) {
-  const auto m = static_cast<std::uint32_t>(positions.size());
-  positions.push_back(p);
-  normals.push_back(n);
-  locked.push_back(false);
-  incident.add_vertex();
+void EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n, std::uint32_t m, std::uint32_t t) {
+  positions[m] = p;
+  normals[m] = n;
   incident.make_room(m, 8);  // four triangles now, about six once the clean-up is done with it
   for (std::size_t k = 0; k < attributes.size(); ++k)
-    attributes[k].push_back(attribute_names[k] == "role" ? 5.0f : attributes[k][e.a]);
+    attributes[k][m] = attribute_names[k] == "role" ? 5.0f : attributes[k][e.a];
   // (a, b, c) -> (a, m, c) + (m, b, c); (b, a, d) -> (b, m, d) + (m, a, d).
   replace_vertex(e.t_ab, e.b, m);
   detach(e.b, e.t_ab);
   incident.push_back(m, e.t_ab);
-  add_triangle({m, e.b, e.c});
+  set_triangle(t, {m, e.b, e.c});
   replace_vertex(e.t_ba, e.a, m);
   detach(e.a, e.t_ba);
   incident.push_back(m, e.t_ba);
-  add_triangle({m, e.a, e.d});
+  set_triangle(t + 1, {m, e.a, e.d});
+}
+
+std::uint32_t EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n) {
+  const auto [m, t] = add_split_slots(1);
+  split(e, p, n, m, t);
   return m;
 }
 

@@ -55,10 +55,17 @@ class EditableMesh {
   std::vector<std::vector<std::uint32_t>> ring_disjoint_classes(
       const std::vector<std::uint32_t>& vertices) const;
 
-  /// Room for `splits` more splits without reallocation (the slot arrays otherwise double).
-  void reserve_splits(std::size_t splits);
-  /// Splits the edge at the new vertex (position p, normal n); returns its id. Attributes are copied
-  /// from e.a.
+  /// Slots for `splits` splits at the end: that many dead vertex slots (not locked, attributes 0,
+  /// empty incidence) and twice that many dead triangle slots. Returns the first new vertex slot and
+  /// the first new triangle slot; split k of them (0 <= k < splits) uses vertex first_vertex + k and
+  /// triangles first_triangle + 2k, + 2k + 1 (split()). Slots no split used stay dead until compact().
+  std::pair<std::uint32_t, std::uint32_t> add_split_slots(std::size_t splits);
+  /// Splits the edge at vertex slot m (position p, normal n), adding triangles t and t + 1; the slots
+  /// come from add_split_slots and are unused. Attributes are copied from e.a. Writes only m, t, t + 1,
+  /// the two triangles of e and the lists of a, b, c, d and m, so splits of far-apart edges may run at
+  /// once.
+  void split(const Edge& e, const Vec3& p, const Vec3& n, std::uint32_t m, std::uint32_t t);
+  /// One split into new slots of its own (add_split_slots(1)); returns the new vertex.
   std::uint32_t split(const Edge& e, const Vec3& p, const Vec3& n);
   /// Removes e.a, merging it into e.b, which moves to (p, n). \pre the link condition holds.
   void collapse(const Edge& e, const Vec3& p, const Vec3& n);
@@ -101,7 +108,8 @@ class EditableMesh {
  private:
   void replace_vertex(std::uint32_t t, std::uint32_t from, std::uint32_t to);
   void detach(std::uint32_t v, std::uint32_t t);
-  std::uint32_t add_triangle(const Triangle& t);
+  /// Triangle slot id becomes t, live, in the lists of its vertices.
+  void set_triangle(std::uint32_t id, const Triangle& t);
   /// compact() with the live vertices renumbered in `order` (new id -> old slot); the triangles in
   /// their order, or with space_order by their smallest new vertex id.
   std::vector<std::uint32_t> renumber(const std::vector<std::uint32_t>& order, bool space_order);

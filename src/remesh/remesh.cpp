@@ -205,7 +205,10 @@ class Remesher {
     return settings_.local_only ? kLocalCollapseFactor : kCollapseFactor;
   }
 
-  bool try_split(std::uint32_t a, std::uint32_t b) {
+  /// Splits a-b at its midpoint moved onto f = 0 into vertex slot m and triangle slots t, t + 1 (from
+  /// EditableMesh::add_split_slots) when the four new triangles are valid. Writes only the rings of a
+  /// and b and the new slots (far-apart calls may run at once; callers count the splits).
+  bool try_split(std::uint32_t a, std::uint32_t b, std::uint32_t m, std::uint32_t t) {
     const auto e = mesh_.interior_edge(a, b);
     if (!e) return false;
     Vec3 p = 0.5 * (mesh_.positions[a] + mesh_.positions[b]);
@@ -218,11 +221,13 @@ class Remesher {
         !triangle_ok(P[e->b], p, P[e->d], N[e->b], n, N[e->d]) ||
         !triangle_ok(p, P[e->a], P[e->d], n, N[e->a], N[e->d]))
       return false;
-    mesh_.split(*e, p, n);
-    ++stats_.splits;
+    mesh_.split(*e, p, n, m, t);
     return true;
   }
 
+  /// Splits the edges longer than kSplitFactor times their size, the longest first within each block
+  /// (block_edits.hpp); edge k of the list has its own new slots, so the numbering does not depend on
+  /// the order the blocks ran in.
   void split_long_edges() {
     check_cancel();
     std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
@@ -230,9 +235,12 @@ class Remesher {
       const double l = length(a, b);
       if (l > kSplitFactor * sizes_.edge(a, b)) work.push_back({-l, {a, b}});
     }
-    std::sort(work.begin(), work.end());
-    mesh_.reserve_splits(work.size());
-    for (const auto& [key, edge] : work) try_split(edge.first, edge.second);
+    const EdgeList edges = edges_by_key(std::move(work));
+    const auto [first_vertex, first_triangle] = mesh_.add_split_slots(edges.size());
+    stats_.splits += edit_edges_in_blocks(mesh_, edges, [&](std::uint32_t a, std::uint32_t b, std::size_t k) {
+      return try_split(a, b, first_vertex + static_cast<std::uint32_t>(k),
+                       first_triangle + 2 * static_cast<std::uint32_t>(k));
+    });
   }
 
   /// The axis of the box face along which boundary vertex v may slide, or -1 (box_boundary.hpp).
@@ -302,17 +310,15 @@ class Remesher {
       const double l = length(a, b);
       if (l < collapse_factor() * sizes_.edge(a, b)) work.push_back({l, {a, b}});
     }
-    std::sort(work.begin(), work.end());
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges(work.size());
-    for (std::size_t i = 0; i < work.size(); ++i) edges[i] = work[i].second;
-    work = {};
+    const EdgeList edges = edges_by_key(std::move(work));
     // Shortest first within each block; a collapse reads and writes only the rings of its edge's ends.
-    stats_.collapses += edit_edges_in_blocks(mesh_, edges, [this](std::uint32_t a, std::uint32_t b) {
-      if (!mesh_.alive(a) || !mesh_.alive(b) || !mesh_.adjacent(a, b)) return false;
-      const double h = sizes_.edge(a, b);
-      if (length(a, b) >= collapse_factor() * h) return false;
-      return try_collapse(a, b, kSplitFactor * h);
-    });
+    stats_.collapses +=
+        edit_edges_in_blocks(mesh_, edges, [this](std::uint32_t a, std::uint32_t b, std::size_t) {
+          if (!mesh_.alive(a) || !mesh_.alive(b) || !mesh_.adjacent(a, b)) return false;
+          const double h = sizes_.edge(a, b);
+          if (length(a, b) >= collapse_factor() * h) return false;
+          return try_collapse(a, b, kSplitFactor * h);
+        });
   }
 
   /// Flips e when its two new triangles are valid and `accept` agrees, given the cosines of the
@@ -535,11 +541,15 @@ class Remesher {
       if (work.empty() || round == kBoundRounds) return beyond;
       std::sort(work.begin(), work.end());
       work.erase(std::unique(work.begin(), work.end()), work.end());
-      std::size_t splits = 0;
-      for (const auto& [key, edge] : work) {
-        const auto [a, b] = edge;
-        if (mesh_.alive(a) && mesh_.alive(b) && mesh_.adjacent(a, b) && try_split(a, b)) ++splits;
-      }
+      const EdgeList edges = edges_by_key(std::move(work));
+      const auto [first_vertex, first_triangle] = mesh_.add_split_slots(edges.size());
+      const std::size_t splits =
+          edit_edges_in_blocks(mesh_, edges, [&](std::uint32_t a, std::uint32_t b, std::size_t k) {
+            return mesh_.alive(a) && mesh_.alive(b) && mesh_.adjacent(a, b) &&
+                   try_split(a, b, first_vertex + static_cast<std::uint32_t>(k),
+                             first_triangle + 2 * static_cast<std::uint32_t>(k));
+          });
+      stats_.splits += splits;
       if (splits == 0) return beyond;
       sizes_.update(mesh_);
       repair_until_settled();
