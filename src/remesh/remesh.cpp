@@ -231,16 +231,26 @@ class Remesher {
   void split_long_edges() {
     check_cancel();
     std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
+    double longest = 0.0;
     for (const auto& [a, b] : mesh_.edges()) {
       const double l = length(a, b);
+      longest = std::max(longest, l);
       if (l > kSplitFactor * sizes_.edge(a, b)) work.push_back({-l, {a, b}});
     }
-    const EdgeList edges = edges_by_key(std::move(work));
+    split_listed(edges_by_key(std::move(work)), longest);
+  }
+
+  /// try_split on the listed edges by blocks (block_edits.hpp; `longest`: the longest edge); the count.
+  std::size_t split_listed(const EdgeList& edges, double longest) {
     const auto [first_vertex, first_triangle] = mesh_.add_split_slots(edges.size());
-    stats_.splits += edit_edges_in_blocks(mesh_, edges, [&](std::uint32_t a, std::uint32_t b, std::size_t k) {
-      return try_split(a, b, first_vertex + static_cast<std::uint32_t>(k),
-                       first_triangle + 2 * static_cast<std::uint32_t>(k));
-    });
+    const std::size_t splits =
+        edit_edges_in_blocks(mesh_, edges, longest, [&](std::uint32_t a, std::uint32_t b, std::size_t k) {
+          return mesh_.alive(a) && mesh_.alive(b) && mesh_.adjacent(a, b) &&
+                 try_split(a, b, first_vertex + static_cast<std::uint32_t>(k),
+                           first_triangle + 2 * static_cast<std::uint32_t>(k));
+        });
+    stats_.splits += splits;
+    return splits;
   }
 
   /// The axis of the box face along which boundary vertex v may slide, or -1 (box_boundary.hpp).
@@ -306,14 +316,16 @@ class Remesher {
   void collapse_short_edges() {
     check_cancel();
     std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
+    double longest = 0.0;
     for (const auto& [a, b] : mesh_.edges()) {
       const double l = length(a, b);
+      longest = std::max(longest, l);
       if (l < collapse_factor() * sizes_.edge(a, b)) work.push_back({l, {a, b}});
     }
     const EdgeList edges = edges_by_key(std::move(work));
     // Shortest first within each block; a collapse reads and writes only the rings of its edge's ends.
     stats_.collapses +=
-        edit_edges_in_blocks(mesh_, edges, [this](std::uint32_t a, std::uint32_t b, std::size_t) {
+        edit_edges_in_blocks(mesh_, edges, longest, [this](std::uint32_t a, std::uint32_t b, std::size_t) {
           if (!mesh_.alive(a) || !mesh_.alive(b) || !mesh_.adjacent(a, b)) return false;
           const double h = sizes_.edge(a, b);
           if (length(a, b) >= collapse_factor() * h) return false;
@@ -541,15 +553,7 @@ class Remesher {
       if (work.empty() || round == kBoundRounds) return beyond;
       std::sort(work.begin(), work.end());
       work.erase(std::unique(work.begin(), work.end()), work.end());
-      const EdgeList edges = edges_by_key(std::move(work));
-      const auto [first_vertex, first_triangle] = mesh_.add_split_slots(edges.size());
-      const std::size_t splits =
-          edit_edges_in_blocks(mesh_, edges, [&](std::uint32_t a, std::uint32_t b, std::size_t k) {
-            return mesh_.alive(a) && mesh_.alive(b) && mesh_.adjacent(a, b) &&
-                   try_split(a, b, first_vertex + static_cast<std::uint32_t>(k),
-                             first_triangle + 2 * static_cast<std::uint32_t>(k));
-          });
-      stats_.splits += splits;
+      const std::size_t splits = split_listed(edges_by_key(std::move(work)), longest_live_edge(mesh_));
       if (splits == 0) return beyond;
       sizes_.update(mesh_);
       repair_until_settled();
