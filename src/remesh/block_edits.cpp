@@ -25,17 +25,6 @@ EdgeList edges_by_key(std::vector<std::pair<double, std::pair<std::uint32_t, std
   return edges;
 }
 
-double longest_live_edge(const EditableMesh& mesh) {
-  double longest = 0.0;
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (!mesh.triangle_alive[t]) continue;
-    const Triangle& tri = mesh.triangles[t];
-    for (std::size_t k = 0; k < 3; ++k)
-      longest = std::max(longest, (mesh.positions[tri[k]] - mesh.positions[tri[(k + 1) % 3]]).squaredNorm());
-  }
-  return std::sqrt(longest);
-}
-
 double edit_block_width(double longest_edge) {
   return kEditBlockEdges * longest_edge;
 }

@@ -41,9 +41,6 @@ struct EdgeCubes {
 EdgeCubes edge_cubes(const EditableMesh& mesh, const EdgeList& work,
                      const std::vector<std::uint32_t>& pending, double width, double shift);
 
-/// The length of the longest edge of a live triangle (0 without one).
-double longest_live_edge(const EditableMesh& mesh);
-
 /// The side of the cubes for edits on a mesh whose longest live edge is `longest_edge`.
 double edit_block_width(double longest_edge);
 

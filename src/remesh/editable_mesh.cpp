@@ -4,6 +4,7 @@
 #include <isopatch/error.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <utility>
 
@@ -232,6 +233,17 @@ void EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n, std::uint3
   detach(e.a, e.t_ba);
   incident.push_back(m, e.t_ba);
   set_triangle(t + 1, {m, e.a, e.d});
+}
+
+double EditableMesh::longest_edge() const {
+  double longest = 0.0;
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+    if (!triangle_alive[t]) continue;
+    const Triangle& tri = triangles[t];
+    for (std::size_t k = 0; k < 3; ++k)
+      longest = std::max(longest, (positions[tri[k]] - positions[tri[(k + 1) % 3]]).squaredNorm());
+  }
+  return std::sqrt(longest);
 }
 
 std::uint32_t EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n) {

@@ -90,6 +90,8 @@ class EditableMesh {
   static constexpr std::uint32_t kDeadSlot = kDroppedSlot;
 
   std::size_t vertex_slots() const { return positions.size(); }
+  /// The length of the longest edge of a live triangle (0 without one).
+  double longest_edge() const;
   bool alive(std::uint32_t v) const { return !incident.empty(v); }
   /// The mesh of live triangles and referenced vertices, attributes carried along.
   Mesh to_mesh() const;

@@ -34,14 +34,7 @@ bool FlipBlocks::near_face(const Vec3& p, double margin) const {
 }
 
 double flip_block_width(const EditableMesh& mesh) {
-  double longest = 0.0;
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (!mesh.triangle_alive[t]) continue;
-    const Triangle& tri = mesh.triangles[t];
-    for (std::size_t k = 0; k < 3; ++k)
-      longest = std::max(longest, (mesh.positions[tri[k]] - mesh.positions[tri[(k + 1) % 3]]).squaredNorm());
-  }
-  return kBlockEdges * std::sqrt(longest);
+  return kBlockEdges * mesh.longest_edge();
 }
 
 FlipBlocks make_flip_blocks(const EditableMesh& mesh, double width, double shift) {

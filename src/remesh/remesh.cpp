@@ -553,7 +553,7 @@ class Remesher {
       if (work.empty() || round == kBoundRounds) return beyond;
       std::sort(work.begin(), work.end());
       work.erase(std::unique(work.begin(), work.end()), work.end());
-      const std::size_t splits = split_listed(edges_by_key(std::move(work)), longest_live_edge(mesh_));
+      const std::size_t splits = split_listed(edges_by_key(std::move(work)), mesh_.longest_edge());
       if (splits == 0) return beyond;
       sizes_.update(mesh_);
       repair_until_settled();
