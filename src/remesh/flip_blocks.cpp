@@ -2,10 +2,8 @@
 #include "remesh/flip_blocks.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <unordered_map>
-#include <vector>
 
 namespace isopatch {
 namespace {
@@ -17,10 +15,6 @@ constexpr double kBlockEdges = 12.0;
 
 /// Grid coordinates fit in 21 bits each, so a cube's key is one 64-bit word.
 constexpr double kMaxCoordinate = 2097151.0;
-
-/// Grids of at most this many cubes (a table of 16 MB; a dozen-edge cube makes far fewer) are indexed by
-/// a dense table, larger ones by a hash map.
-constexpr std::uint64_t kMaxDenseCubes = std::uint64_t{1} << 22;
 
 }  // namespace
 
@@ -46,49 +40,26 @@ FlipBlocks make_flip_blocks(const EditableMesh& mesh, double width, double shift
   for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v)
     if (mesh.alive(v)) lo = lo.cwiseMin(mesh.positions[v]);
   blocks.origin = lo;
-  // Grid coordinates of a vertex, clamped so that a huge mesh with tiny edges still fits the key (its
-  // cubes then grow); and the grid's extent.
-  const auto cell_of = [&](std::uint32_t v) {
-    std::array<std::uint32_t, 3> c{};
-    for (int axis = 0; axis < 3; ++axis)
-      c[static_cast<std::size_t>(axis)] = static_cast<std::uint32_t>(
-          std::clamp(std::floor((mesh.positions[v][axis] - lo[axis]) / width + shift), 0.0, kMaxCoordinate));
-    return c;
-  };
-  std::array<std::uint64_t, 3> extent{1, 1, 1};
-  for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v) {
-    if (!mesh.alive(v)) continue;
-    const auto c = cell_of(v);
-    for (std::size_t k = 0; k < 3; ++k)
-      extent[k] = std::max<std::uint64_t>(extent[k], c[k] + std::uint64_t{1});
-  }
-  // Cube ids by first appearance: a dense table when the grid is small (the usual case: the cubes are
-  // a dozen edges wide), else a hash map of 63-bit keys.
-  const std::uint64_t cubes = extent[0] * extent[1] * extent[2];
-  const bool dense = extent[0] <= kMaxDenseCubes && extent[1] <= kMaxDenseCubes &&
-                     extent[2] <= kMaxDenseCubes && cubes <= kMaxDenseCubes;
-  std::vector<std::uint32_t> table(dense ? cubes : 0, kNoBlock);
   std::unordered_map<std::uint64_t, std::uint32_t> index;
   for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v) {
     if (!mesh.alive(v)) continue;
-    const auto c = cell_of(v);
-    const unsigned colour = (c[0] & 1u) | (c[1] & 1u) << 1 | (c[2] & 1u) << 2;
-    const auto next = static_cast<std::uint32_t>(blocks.members.size());
-    std::uint32_t id = next;
-    if (dense) {
-      std::uint32_t& slot = table[(std::uint64_t{c[2]} * extent[1] + c[1]) * extent[0] + c[0]];
-      if (slot == kNoBlock) slot = next;
-      id = slot;
-    } else {
-      const std::uint64_t key = std::uint64_t{c[0]} | std::uint64_t{c[1]} << 21 | std::uint64_t{c[2]} << 42;
-      id = index.try_emplace(key, next).first->second;
+    std::uint64_t key = 0;
+    unsigned colour = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      // Clamped so that a huge mesh with tiny edges still fits the key (its cubes then grow).
+      const double u =
+          std::clamp(std::floor((mesh.positions[v][axis] - lo[axis]) / width + shift), 0.0, kMaxCoordinate);
+      const auto coordinate = static_cast<std::uint64_t>(u);
+      key |= coordinate << (21 * axis);
+      colour |= static_cast<unsigned>(coordinate & 1u) << axis;
     }
-    if (id == next) {
+    const auto [it, added] = index.try_emplace(key, static_cast<std::uint32_t>(blocks.members.size()));
+    if (added) {
       blocks.members.emplace_back();
-      blocks.colours[colour].push_back(id);
+      blocks.colours[colour].push_back(it->second);
     }
-    blocks.block_of[v] = id;
-    blocks.members[id].push_back(v);
+    blocks.block_of[v] = it->second;
+    blocks.members[it->second].push_back(v);
   }
   return blocks;
 }

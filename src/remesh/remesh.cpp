@@ -245,8 +245,7 @@ class Remesher {
     const auto [first_vertex, first_triangle] = mesh_.add_split_slots(edges.size());
     const std::size_t splits =
         edit_edges_in_blocks(mesh_, edges, longest, [&](std::uint32_t a, std::uint32_t b, std::size_t k) {
-          return mesh_.alive(a) && mesh_.alive(b) && mesh_.adjacent(a, b) &&
-                 try_split(a, b, first_vertex + static_cast<std::uint32_t>(k),
+          return try_split(a, b, first_vertex + static_cast<std::uint32_t>(k),
                            first_triangle + 2 * static_cast<std::uint32_t>(k));
         });
     stats_.splits += splits;
