@@ -52,6 +52,7 @@ class SampleCache {
   std::vector<Sample> samples_;
   IndexMap<SegmentKey, SegmentKeyHash> segment_index_;
   std::vector<double> segment_values_;  // segment_samples_ consecutive values per segment
+  std::vector<Vec3> points_;            // scratch: one segment's sample points
   std::uint64_t segment_evaluations_ = 0;
 };
 

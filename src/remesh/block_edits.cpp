@@ -17,7 +17,7 @@ constexpr double kMaxEditCoordinate = 1048575.0;
 
 }  // namespace
 
-EdgeList edges_by_key(std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>>&& keyed) {
+EdgeList edges_by_key(std::vector<KeyedEdge>&& keyed) {
   std::sort(keyed.begin(), keyed.end());
   EdgeList edges(keyed.size());
   for (std::size_t i = 0; i < keyed.size(); ++i) edges[i] = keyed[i].second;

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -22,10 +23,57 @@
 namespace isopatch {
 
 using EdgeList = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+using KeyedEdge = std::pair<double, std::pair<std::uint32_t, std::uint32_t>>;  ///< (key, (a, b))
 
 /// The edges of `keyed` in ascending order of their keys (ties by the edge), each once per entry;
 /// releases `keyed`.
-EdgeList edges_by_key(std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>>&& keyed);
+EdgeList edges_by_key(std::vector<KeyedEdge>&& keyed);
+
+/// What list_keyed_edges found.
+struct KeyedEdges {
+  std::vector<KeyedEdge> keyed;  ///< (key, (a, b)) in (a, b) order
+  double longest = 0.0;          ///< the longest live edge of the whole mesh
+};
+
+/// Vertices per task of list_keyed_edges: fixed, so the pieces (and their order) do not depend on the
+/// number of threads.
+inline constexpr std::size_t kEdgeListBlock = 2048;
+
+/// Every live edge (a, b), a < b, for which key(a, b, length) returns a key (a std::optional<double>),
+/// with that key, in the order of EditableMesh::edges(), and the longest live edge. The vertices go in
+/// fixed blocks in parallel, joined in order: the same list for any number of threads. `key` may run
+/// concurrently (it only reads).
+template <class Key>
+KeyedEdges list_keyed_edges(const EditableMesh& mesh, Key key) {
+  const std::size_t slots = mesh.vertex_slots();
+  const std::size_t blocks = (slots + kEdgeListBlock - 1) / kEdgeListBlock;
+  std::vector<std::vector<KeyedEdge>> pieces(blocks);
+  std::vector<double> longest(blocks, 0.0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks, 1), [&](const auto& range) {
+    std::vector<std::uint32_t> larger;
+    for (std::size_t block = range.begin(); block != range.end(); ++block) {
+      const std::size_t end = std::min(slots, (block + 1) * kEdgeListBlock);
+      for (std::size_t v = block * kEdgeListBlock; v < end; ++v) {
+        const auto a = static_cast<std::uint32_t>(v);
+        mesh.larger_neighbours(a, larger);
+        for (const std::uint32_t b : larger) {
+          const double length = (mesh.positions[a] - mesh.positions[b]).norm();
+          longest[block] = std::max(longest[block], length);
+          if (const auto k = key(a, b, length)) pieces[block].push_back({*k, {a, b}});
+        }
+      }
+    }
+  });
+  KeyedEdges out;
+  std::size_t total = 0;
+  for (const auto& piece : pieces) total += piece.size();
+  out.keyed.reserve(total);
+  for (std::size_t block = 0; block < blocks; ++block) {
+    out.keyed.insert(out.keyed.end(), pieces[block].begin(), pieces[block].end());
+    out.longest = std::max(out.longest, longest[block]);
+  }
+  return out;
+}
 
 /// The edges of a list (by index) that lie inside one cube of a grid, grouped by cube and by colour.
 struct EdgeCubes {

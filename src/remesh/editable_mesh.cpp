@@ -6,10 +6,14 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <span>
 #include <utility>
 
 #include "remesh/slot_renumbering.hpp"
 #include "remesh/spatial_order.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 namespace isopatch {
 
@@ -102,15 +106,19 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> EditableMesh::edges() const
   list.reserve(triangles.size() * 3 / 2 + 3);  // a closed mesh has 3/2 edges per triangle
   std::vector<std::uint32_t> larger;
   for (std::uint32_t a = 0; a < positions.size(); ++a) {
-    larger.clear();
-    for (std::uint32_t t : incident[a])
-      for (std::uint32_t b : triangles[t])
-        if (b > a) larger.push_back(b);
-    std::sort(larger.begin(), larger.end());
-    larger.erase(std::unique(larger.begin(), larger.end()), larger.end());
+    larger_neighbours(a, larger);
     for (std::uint32_t b : larger) list.emplace_back(a, b);
   }
   return list;
+}
+
+void EditableMesh::larger_neighbours(std::uint32_t a, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  for (std::uint32_t t : incident[a])
+    for (std::uint32_t b : triangles[t])
+      if (b > a) out.push_back(b);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 std::vector<std::uint32_t> EditableMesh::neighbours(std::uint32_t v) const {
@@ -180,11 +188,35 @@ std::vector<std::vector<std::uint32_t>> EditableMesh::independent_classes(
 
 std::vector<std::vector<std::uint32_t>> EditableMesh::ring_disjoint_classes(
     const std::vector<std::uint32_t>& vertices) const {
-  return greedy_classes(positions.size(), vertices, [&](std::uint32_t v, const auto& mark) {
-    for (std::uint32_t t : incident[v])
-      for (std::uint32_t w : triangles[t])
-        for (std::uint32_t t2 : incident[w])
-          for (std::uint32_t x : triangles[t2]) mark(x);
+  // The distinct neighbours of every slot first (in parallel, each slot's own range): the two rings
+  // are then 6 + 36 marks per vertex rather than the 324 of walking triangles of triangles.
+  const std::size_t slots = positions.size();
+  std::vector<std::size_t> start(slots + 1, 0);
+  for (std::size_t v = 0; v < slots; ++v) start[v + 1] = start[v] + 2 * incident[static_cast<std::uint32_t>(v)].size();
+  std::vector<std::uint32_t> table(start[slots]);
+  std::vector<std::uint32_t> count(slots, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, slots, 1024), [&](const auto& range) {
+    std::vector<std::uint32_t> ring;
+    for (std::size_t v = range.begin(); v != range.end(); ++v) {
+      ring.clear();
+      for (std::uint32_t t : incident[static_cast<std::uint32_t>(v)])
+        for (std::uint32_t w : triangles[t])
+          if (w != v) ring.push_back(w);
+      std::sort(ring.begin(), ring.end());
+      ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+      // k triangles hold at most 2k neighbours of v: the range always has room.
+      std::copy(ring.begin(), ring.end(), table.begin() + static_cast<std::ptrdiff_t>(start[v]));
+      count[v] = static_cast<std::uint32_t>(ring.size());
+    }
+  });
+  const auto ring_of = [&](std::uint32_t v) {
+    return std::span<const std::uint32_t>(table.data() + start[v], count[v]);
+  };
+  return greedy_classes(slots, vertices, [&](std::uint32_t v, const auto& mark) {
+    for (std::uint32_t w : ring_of(v)) {
+      mark(w);
+      for (std::uint32_t x : ring_of(w)) mark(x);
+    }
   });
 }
 

@@ -38,6 +38,8 @@ class EditableMesh {
   std::vector<std::uint32_t> boundary_neighbours(std::uint32_t v) const;
   /// Every undirected edge between live vertices, once, as (smaller, larger).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> edges() const;
+  /// The neighbours b > a of a, ascending, each once, into `out` (cleared first): edges() in pieces.
+  void larger_neighbours(std::uint32_t a, std::vector<std::uint32_t>& out) const;
   /// Vertices adjacent to both a and b, sorted (the link condition of a collapse counts them).
   std::vector<std::uint32_t> common_neighbours(std::uint32_t a, std::uint32_t b) const;
   /// Distinct neighbours of v.

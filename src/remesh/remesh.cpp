@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -230,14 +231,10 @@ class Remesher {
   /// the order the blocks ran in.
   void split_long_edges() {
     check_cancel();
-    std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
-    double longest = 0.0;
-    for (const auto& [a, b] : mesh_.edges()) {
-      const double l = length(a, b);
-      longest = std::max(longest, l);
-      if (l > kSplitFactor * sizes_.edge(a, b)) work.push_back({-l, {a, b}});
-    }
-    split_listed(edges_by_key(std::move(work)), longest);
+    KeyedEdges listed = list_keyed_edges(mesh_, [this](std::uint32_t a, std::uint32_t b, double l) {
+      return l > kSplitFactor * sizes_.edge(a, b) ? std::optional<double>(-l) : std::nullopt;
+    });
+    split_listed(edges_by_key(std::move(listed.keyed)), listed.longest);
   }
 
   /// try_split on the listed edges by blocks (block_edits.hpp; `longest`: the longest edge); the count.
@@ -314,14 +311,11 @@ class Remesher {
 
   void collapse_short_edges() {
     check_cancel();
-    std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
-    double longest = 0.0;
-    for (const auto& [a, b] : mesh_.edges()) {
-      const double l = length(a, b);
-      longest = std::max(longest, l);
-      if (l < collapse_factor() * sizes_.edge(a, b)) work.push_back({l, {a, b}});
-    }
-    const EdgeList edges = edges_by_key(std::move(work));
+    KeyedEdges listed = list_keyed_edges(mesh_, [this](std::uint32_t a, std::uint32_t b, double l) {
+      return l < collapse_factor() * sizes_.edge(a, b) ? std::optional<double>(l) : std::nullopt;
+    });
+    const double longest = listed.longest;
+    const EdgeList edges = edges_by_key(std::move(listed.keyed));
     // Shortest first within each block; a collapse reads and writes only the rings of its edge's ends.
     stats_.collapses +=
         edit_edges_in_blocks(mesh_, edges, longest, [this](std::uint32_t a, std::uint32_t b, std::size_t) {

@@ -16,11 +16,11 @@ void throw_not_finite(const char* what, double value, const Vec3& p) {
   throw EvaluationError(buffer);
 }
 
-void SpreadCounter::add() const {
+void SpreadCounter::add(std::uint64_t count) const {
   // -1 outside every arena (tbb::task_arena::not_initialized): slot 0.
   const int worker = tbb::this_task_arena::current_thread_index();
   const std::size_t slot = worker > 0 ? static_cast<std::size_t>(worker) % kSlots : 0;
-  slots_[slot].count.fetch_add(1, std::memory_order_relaxed);
+  slots_[slot].count.fetch_add(count, std::memory_order_relaxed);
 }
 
 std::uint64_t SpreadCounter::total() const {
@@ -34,6 +34,13 @@ double Sampler::value(const Vec3& p) const {
   const double v = surface_.value(p);
   if (!std::isfinite(v)) throw_not_finite("f", v, p);
   return v;
+}
+
+void Sampler::values(std::span<const Vec3> points, std::span<double> out) const {
+  values_.add(points.size());
+  surface_.values(points, out);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!std::isfinite(out[i])) throw_not_finite("f", out[i], points[i]);
 }
 
 ValueGradient Sampler::value_gradient(const Vec3& p) const {

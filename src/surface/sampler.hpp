@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace isopatch {
 
@@ -17,8 +18,8 @@ namespace isopatch {
 /// One shared atomic instead cost the clean-up's relaxation all of its speed-up on two threads.
 class SpreadCounter {
  public:
-  /// Adds 1. Thread-safe.
-  void add() const;
+  /// Adds `count` (1 by default). Thread-safe.
+  void add(std::uint64_t count = 1) const;
   /// The sum of every add() that happened before (relaxed reads of each slot).
   std::uint64_t total() const;
 
@@ -36,6 +37,10 @@ class Sampler {
 
   /// f(p). \throw EvaluationError if f(p) is NaN or infinite.
   double value(const Vec3& p) const;
+  /// out[i] = f(points[i]) through Surface::values (one batch: the same values as value(), bit for
+  /// bit, for the built-in evaluator; far cheaper per point). \pre out.size() == points.size().
+  /// \throw EvaluationError naming the first point whose value is not finite.
+  void values(std::span<const Vec3> points, std::span<double> out) const;
   /// f(p) and grad f(p). \throw EvaluationError if either is not finite.
   ValueGradient value_gradient(const Vec3& p) const;
   /// f(p) and grad f(p), counted but not checked: either may be NaN or infinite.
