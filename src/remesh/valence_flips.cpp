@@ -12,10 +12,6 @@
 
 namespace isopatch {
 
-int target_valence(const EditableMesh& mesh, std::uint32_t v) {
-  return mesh.locked[v] ? 4 : 6;
-}
-
 int flip_energy_change(const EditableMesh& mesh, const EditableMesh::Edge& e) {
   const auto deviation = [&](std::uint32_t v, int change) {
     const int d = static_cast<int>(mesh.valence(v)) + change - target_valence(mesh, v);
@@ -137,14 +133,24 @@ std::vector<VertexPair> edges_near_irregular_vertices(const EditableMesh& mesh,
   std::vector<VertexPair> list;
   for (std::uint32_t v : vertices) {
     if (!mesh.alive(v) || static_cast<int>(mesh.valence(v)) == target_valence(mesh, v)) continue;
+    // Per triangle (v, x, y) in its winding: the spoke v-x and the link edge x-y. Each spoke is the
+    // first edge of exactly one of v's triangles (the other one holds it as y-v), so v adds no
+    // duplicates of its own; those shared with a nearby irregular vertex go in the sort below.
     for (std::uint32_t t : mesh.incident[v]) {
       const auto& tri = mesh.triangles[t];
-      for (int i = 0; i < 3; ++i) {
-        const std::uint32_t a = tri[static_cast<std::size_t>(i)],
-                            b = tri[static_cast<std::size_t>((i + 1) % 3)];
-        list.emplace_back(std::min(a, b), std::max(a, b));
-      }
+      const std::size_t i = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+      const std::uint32_t x = tri[(i + 1) % 3], y = tri[(i + 2) % 3];
+      list.emplace_back(std::min(v, x), std::max(v, x));
+      list.emplace_back(std::min(x, y), std::max(x, y));
     }
+    // On a boundary the last spoke is the second edge of the fan's end triangle only.
+    if (mesh.locked[v])
+      for (std::uint32_t t : mesh.incident[v]) {
+        const auto& tri = mesh.triangles[t];
+        const std::size_t i = tri[0] == v ? 0 : tri[1] == v ? 1 : 2;
+        const std::uint32_t y = tri[(i + 2) % 3];
+        list.emplace_back(std::min(v, y), std::max(v, y));
+      }
   }
   std::sort(list.begin(), list.end());
   list.erase(std::unique(list.begin(), list.end()), list.end());

@@ -16,7 +16,9 @@
 namespace isopatch {
 
 /// The valence a vertex should have: 4 on a locked (boundary) vertex, 6 inside.
-int target_valence(const EditableMesh& mesh, std::uint32_t v);
+inline int target_valence(const EditableMesh& mesh, std::uint32_t v) {
+  return mesh.locked[v] ? 4 : 6;
+}
 
 /// Change of the valence energy over the four vertices of e when e is flipped (negative: better).
 int flip_energy_change(const EditableMesh& mesh, const EditableMesh::Edge& e);
