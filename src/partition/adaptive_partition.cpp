@@ -39,6 +39,9 @@ namespace {
 /// Leaves per task of analyse_in_tasks: fixed, so that the tasks (and the evaluations they repeat) do
 /// not depend on the number of threads; large enough that few samples are shared between tasks.
 constexpr std::size_t kLeavesPerTask = 64;
+/// Tasks run at once before their results are merged (and the next ones read them): bounds the
+/// overlays' memory to that many tasks' samples.
+constexpr std::size_t kTasksPerWave = 16;
 
 /// The Z-order (Morton 1966) key of a cell's lower corner at the finest depth: tasks of consecutive
 /// leaves in this order are compact blocks of space, so they share few samples with other tasks.
@@ -174,53 +177,58 @@ bool AdaptiveBuilder::close(const LeafAnalysis& a) {
 }
 
 // The analyses of `keys` (in that order) by tasks of kLeavesPerTask leaves consecutive in Z-order (an
-// analysis does not depend on which leaves were analysed before it), in parallel; each task's
-// samples, crossings and counts are merged in task order, and its loops renumbered into crossings_. The
-// tasks are fixed by the list alone, so are the evaluations they make (a point two tasks need is
-// evaluated by both): the same partition and the same counts for any number of threads. The first
-// task's error (in task order) is the one raised, as when the leaves go one by one.
+// analysis does not depend on which leaves were analysed before it), kTasksPerWave tasks at once; after
+// each wave its tasks' samples, crossings and counts are merged in task order (the next wave reads them)
+// and their loops renumbered into crossings_. Tasks and waves are fixed by the list alone, so are the
+// evaluations they make (a point two tasks of one wave need is evaluated by both): the same partition
+// and the same counts for any number of threads. The first task's error is the one raised.
 std::vector<LeafAnalysis> AdaptiveBuilder::analyse_in_tasks(const std::vector<CellKey>& keys) {
   const std::size_t tasks = (keys.size() + kLeavesPerTask - 1) / kLeavesPerTask;
   const LeafAnalysisInputs inputs{surface_, settings_, lattice_, tree_,           sampler_,
                                   cos_cone_, cache_,  crossings_, crossing_index_};
-  std::vector<std::optional<LeafAnalyser>> analysers(tasks);
-  std::vector<std::exception_ptr> errors(tasks);
   std::vector<LeafAnalysis> out(keys.size());
   std::vector<std::pair<std::uint64_t, std::uint32_t>> order(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i)
     order[i] = {z_order(keys[i], settings_.max_depth), static_cast<std::uint32_t>(i)};
   std::sort(order.begin(), order.end());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tasks, 1), [&](const auto& range) {
-    for (std::size_t task = range.begin(); task != range.end(); ++task) {
-      try {
-        LeafAnalyser& analyser = analysers[task].emplace(inputs);
-        const std::size_t end = std::min(keys.size(), (task + 1) * kLeavesPerTask);
-        for (std::size_t i = task * kLeavesPerTask; i < end; ++i)
-          out[order[i].second] = analyser.analyse(keys[order[i].second]);
-      } catch (...) {
-        errors[task] = std::current_exception();
-      }
-    }
-  });
-  for (const std::exception_ptr& error : errors)
-    if (error) std::rethrow_exception(error);
+  const auto leaves_of = [&](std::size_t task) {
+    return std::pair{task * kLeavesPerTask, std::min(keys.size(), (task + 1) * kLeavesPerTask)};
+  };
   std::vector<std::uint32_t> shared;
-  for (std::size_t task = 0; task < tasks; ++task) {
-    const LeafAnalyser& analyser = *analysers[task];
-    shared.clear();
-    for (const Crossing& c : analyser.crossings()) {
-      const auto [index, inserted] = crossing_index_.insert(c.segment);
-      if (inserted) crossings_.push_back(c);
-      shared.push_back(index);
+  for (std::size_t wave = 0; wave < tasks; wave += kTasksPerWave) {
+    const std::size_t wave_end = std::min(tasks, wave + kTasksPerWave);
+    std::vector<std::optional<LeafAnalyser>> analysers(wave_end - wave);
+    std::vector<std::exception_ptr> errors(wave_end - wave);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(wave, wave_end, 1), [&](const auto& range) {
+      for (std::size_t task = range.begin(); task != range.end(); ++task) {
+        try {
+          LeafAnalyser& analyser = analysers[task - wave].emplace(inputs);
+          for (auto [i, end] = leaves_of(task); i < end; ++i)
+            out[order[i].second] = analyser.analyse(keys[order[i].second]);
+        } catch (...) {
+          errors[task - wave] = std::current_exception();
+        }
+      }
+    });
+    for (const std::exception_ptr& error : errors)
+      if (error) std::rethrow_exception(error);
+    for (std::size_t task = wave; task < wave_end; ++task) {
+      const LeafAnalyser& analyser = *analysers[task - wave];
+      shared.clear();
+      for (const Crossing& c : analyser.crossings()) {
+        const auto [index, inserted] = crossing_index_.insert(c.segment);
+        if (inserted) crossings_.push_back(c);
+        shared.push_back(index);
+      }
+      for (auto [i, end] = leaves_of(task); i < end; ++i)
+        for (Loop& loop : out[order[i].second].leaf.loops)
+          for (std::uint32_t& c : loop.corners) c = shared[c];
+      analyser.cache().merge_into(cache_);
+      stats_.interval_evaluations += analyser.stats().interval_evaluations;
+      stats_.edges_certified_by_interval += analyser.stats().edges_certified_by_interval;
+      stats_.root_evaluations += analyser.stats().root_evaluations;
+      analysers[task - wave].reset();  // merged: no second copy while the rest merge
     }
-    const std::size_t end = std::min(keys.size(), (task + 1) * kLeavesPerTask);
-    for (std::size_t i = task * kLeavesPerTask; i < end; ++i)
-      for (Loop& loop : out[order[i].second].leaf.loops)
-        for (std::uint32_t& c : loop.corners) c = shared[c];
-    analyser.cache().merge_into(cache_);
-    stats_.interval_evaluations += analyser.stats().interval_evaluations;
-    stats_.edges_certified_by_interval += analyser.stats().edges_certified_by_interval;
-    stats_.root_evaluations += analyser.stats().root_evaluations;
   }
   return out;
 }

@@ -25,7 +25,7 @@ SampleCache::Sample& SampleCache::own_sample(std::uint64_t key, const LatticePoi
     s.value = sampler_.value(lattice_.half_point(h));
   point_index_.insert(key);
   samples_.push_back(s);
-  sample_keys_.push_back(key);
+  if (base_) sample_keys_.push_back(key);  // only an overlay merges, so only it needs the keys
   return samples_.back();
 }
 
@@ -69,7 +69,7 @@ std::span<const double> SampleCache::segment_samples(const SegmentKey& key) {
   }
   segment_evaluations_ += n;
   segment_index_.insert(key);
-  segment_keys_.push_back(key);
+  if (base_) segment_keys_.push_back(key);
   return {segment_values_.data() + offset, n};
 }
 
@@ -84,7 +84,7 @@ void SampleCache::merge_into(SampleCache& base) const {
     const auto [index, inserted] = base.point_index_.insert(sample_keys_[i]);
     if (inserted) {
       base.samples_.push_back(samples_[i]);
-      base.sample_keys_.push_back(sample_keys_[i]);
+      if (base.base_) base.sample_keys_.push_back(sample_keys_[i]);
     } else if (samples_[i].has_gradient && !base.samples_[index].has_gradient) {
       base.samples_[index] = samples_[i];
     }
@@ -92,7 +92,7 @@ void SampleCache::merge_into(SampleCache& base) const {
   const auto n = static_cast<std::size_t>(segment_samples_);
   for (std::size_t i = 0; i < segment_keys_.size(); ++i)
     if (base.segment_index_.insert(segment_keys_[i]).second) {
-      base.segment_keys_.push_back(segment_keys_[i]);
+      if (base.base_) base.segment_keys_.push_back(segment_keys_[i]);
       const auto from = segment_values_.begin() + static_cast<std::ptrdiff_t>(i * n);
       base.segment_values_.insert(base.segment_values_.end(), from, from + static_cast<std::ptrdiff_t>(n));
     }
