@@ -4,6 +4,7 @@
 // copy of a large array is held (the clean-up's peak memory is reached while it compacts); any
 // injective renumbering onto 0..kept-1 works, the order-keeping one and a space-filling curve's alike.
 
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -21,8 +22,20 @@ template <class T>
 void renumber_slots(std::vector<T>& values, const std::vector<std::uint32_t>& new_id, const T& fill) {
   if (values.empty()) return;
   std::size_t kept = 0;
-  for (std::uint32_t id : new_id) kept += id != kDroppedSlot;
+  bool in_order = true;  // every kept slot's new id is the number of kept slots before it
+  for (std::uint32_t id : new_id)
+    if (id != kDroppedSlot) {
+      in_order = in_order && id == kept;
+      ++kept;
+    }
   values.resize(new_id.size(), fill);
+  if (in_order) {  // the order-keeping compaction: new_id[s] <= s, one forward pass
+    for (std::size_t s = 0; s < values.size(); ++s)
+      if (new_id[s] != kDroppedSlot && new_id[s] != s) values[new_id[s]] = std::move(values[s]);
+    values.resize(kept);
+    values.shrink_to_fit();
+    return;
+  }
   std::vector<bool> moved(values.size(), false);  // the slot's own value has been taken out
   for (std::uint32_t s = 0; s < values.size(); ++s) {
     if (moved[s] || new_id[s] == kDroppedSlot) continue;
