@@ -55,14 +55,19 @@ std::uint64_t z_order(const CellKey& key, int finest) {
 
 class AdaptiveBuilder {
  public:
-  AdaptiveBuilder(const Surface& surface, const PartitionSettings& settings, const Lattice& lattice)
+  AdaptiveBuilder(const Surface& surface, const PartitionSettings& settings, AdaptiveBuildMemo& memo)
       : surface_(surface),
         settings_(settings),
-        lattice_(lattice),
-        sampler_(surface),
-        cache_(sampler_, lattice, settings.edge_samples),
+        lattice_(memo.cache.lattice()),
+        sampler_(memo.sampler),
+        cache_(memo.cache),
         cos_cone_(std::cos(settings.cone_angle_deg * std::numbers::pi / 180.0)),
-        tree_(settings.surface_depth, settings.max_depth) {}
+        tree_(settings.surface_depth, settings.max_depth),
+        crossings_(memo.crossings),
+        crossing_index_(memo.crossing_index),
+        values_before_(memo.sampler.value_count()),
+        gradients_before_(memo.sampler.gradient_count()),
+        segment_samples_before_(memo.cache.segment_sample_evaluations()) {}
 
   Partition run();
 
@@ -74,14 +79,15 @@ class AdaptiveBuilder {
 
   const Surface& surface_;
   const PartitionSettings& settings_;
-  Lattice lattice_;
-  Sampler sampler_;
-  SampleCache cache_;
+  const Lattice& lattice_;
+  const Sampler& sampler_;
+  SampleCache& cache_;  // the memo's, shared with earlier and later builds
   double cos_cone_;
   LeafTree tree_;
   std::unordered_set<CellKey, CellKeyHash> forced_;  // force_split cells and their ancestors
-  std::vector<Crossing> crossings_;
-  IndexMap<SegmentKey, SegmentKeyHash> crossing_index_;  // same order as crossings_
+  std::vector<Crossing>& crossings_;
+  IndexMap<SegmentKey, SegmentKeyHash>& crossing_index_;  // same order as crossings_
+  std::uint64_t values_before_, gradients_before_, segment_samples_before_;  // the memo's counts at the start
   PartitionStats stats_;
 };
 
@@ -274,18 +280,35 @@ Partition AdaptiveBuilder::finish(std::vector<LeafAnalysis>& analyses) {
   p.surface_depth = settings_.surface_depth;
   p.cell_size = lattice_.unit() * lattice_.step(settings_.surface_depth);
   p.adaptive = true;
-  s.value_evaluations = sampler_.value_count();
-  s.gradient_evaluations = sampler_.gradient_count();
-  s.segment_sample_evaluations = cache_.segment_sample_evaluations();
+  s.value_evaluations = sampler_.value_count() - values_before_;
+  s.gradient_evaluations = sampler_.gradient_count() - gradients_before_;
+  s.segment_sample_evaluations = cache_.segment_sample_evaluations() - segment_samples_before_;
   p.stats = s;
   return p;
 }
 
 }  // namespace
 
-Partition build_adaptive_partition(const Surface& surface, const Box& box,
-                                   const PartitionSettings& settings) {
-  return AdaptiveBuilder(surface, settings, make_lattice(box, settings.max_depth)).run();
+AdaptiveBuildMemo::AdaptiveBuildMemo(const Surface& surface_, const Box& box_, const PartitionSettings& settings)
+    : surface(surface_),
+      box(box_),
+      max_depth(settings.max_depth),
+      edge_samples(settings.edge_samples),
+      sampler(surface_),
+      cache(sampler, make_lattice(box_, settings.max_depth), settings.edge_samples) {}
+
+bool AdaptiveBuildMemo::fits(const Surface& s, const Box& b, const PartitionSettings& settings) const {
+  return &s == &surface && b.lo == box.lo && b.hi == box.hi && settings.max_depth == max_depth &&
+         settings.edge_samples == edge_samples;
+}
+
+Partition build_adaptive_partition(const Surface& surface, const Box& box, const PartitionSettings& settings,
+                                   AdaptiveBuildMemo* memo) {
+  if (memo && !memo->fits(surface, box, settings))
+    throw Error(ErrorKind::Internal, "adaptive partition: a memo of another surface, box or lattice");
+  std::optional<AdaptiveBuildMemo> own;
+  AdaptiveBuildMemo& shared = memo ? *memo : own.emplace(surface, box, settings);
+  return AdaptiveBuilder(surface, settings, shared).run();
 }
 
 }  // namespace isopatch

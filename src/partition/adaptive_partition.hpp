@@ -21,11 +21,40 @@
 /// At max_depth leaves have no finer neighbours: their graph is the cube's and ambiguous faces are
 /// resolved by the face centre as in the uniform mode, identically on both sides.
 
+#include <cstdint>
+#include <vector>
+
+#include "partition/index_map.hpp"
 #include "partition/partition.hpp"
+#include "partition/sample_cache.hpp"
+#include "surface/sampler.hpp"
 
 namespace isopatch {
 
-/// \pre settings validated, settings.adaptive.
-Partition build_adaptive_partition(const Surface& surface, const Box& box, const PartitionSettings& settings);
+/// What the adaptive builds of one surface, box, max_depth and edge_samples share: the samples of f on
+/// the half lattice and the crossings of lattice segments, each a function of its point or segment
+/// alone. A rebuild (more force_split cells, a finer surface_depth) then evaluates only what is new.
+/// Not movable (the cache refers to the sampler); not thread-safe (one build at a time).
+struct AdaptiveBuildMemo {
+  AdaptiveBuildMemo(const Surface& surface, const Box& box, const PartitionSettings& settings);
+  AdaptiveBuildMemo(const AdaptiveBuildMemo&) = delete;
+  AdaptiveBuildMemo& operator=(const AdaptiveBuildMemo&) = delete;
+  /// Whether a build of (box, settings) on `surface` may use this memo.
+  bool fits(const Surface& surface, const Box& box, const PartitionSettings& settings) const;
+
+  const Surface& surface;
+  Box box;
+  int max_depth;
+  int edge_samples;
+  Sampler sampler;  ///< counts every evaluation of every build
+  SampleCache cache;
+  std::vector<Crossing> crossings;
+  IndexMap<SegmentKey, SegmentKeyHash> crossing_index;  ///< same order as crossings
+};
+
+/// \pre settings validated, settings.adaptive; memo (optional) fits the call. With a memo the
+/// partition is the same as without; its statistics count only this build's new evaluations.
+Partition build_adaptive_partition(const Surface& surface, const Box& box, const PartitionSettings& settings,
+                                   AdaptiveBuildMemo* memo = nullptr);
 
 }  // namespace isopatch

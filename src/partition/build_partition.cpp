@@ -243,6 +243,14 @@ Partition Builder::finish() {
 
 }  // namespace
 
+Partition build_partition(const Surface& surface, const Box& box, const PartitionSettings& settings,
+                          std::unique_ptr<AdaptiveBuildMemo>& memo) {
+  validate(box, settings);
+  if (!settings.adaptive) throw Error(ErrorKind::Internal, "partition: a memo is for adaptive builds");
+  if (!memo) memo = std::make_unique<AdaptiveBuildMemo>(surface, box, settings);
+  return build_adaptive_partition(surface, box, settings, memo.get());
+}
+
 Partition build_partition(const Surface& surface, const Box& box, const PartitionSettings& settings) {
   validate(box, settings);
   if (settings.adaptive) return build_adaptive_partition(surface, box, settings);

@@ -102,7 +102,7 @@ OctreePartitioner::OctreePartitioner(const Surface& surface, const Box& box, Par
 }
 
 CellPartition OctreePartitioner::build() {
-  last_ = build_partition(surface_, box_, settings_);
+  last_ = build_partition(surface_, box_, settings_, memo_);
   return cell_partition_of(last_);
 }
 

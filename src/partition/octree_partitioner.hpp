@@ -10,6 +10,7 @@
 #include <atomic>
 #include <memory>
 
+#include "partition/adaptive_partition.hpp"
 #include "partition/cell_partition.hpp"
 #include "partition/partition.hpp"
 
@@ -61,6 +62,9 @@ class OctreePartitioner final : public Partitioner {
   Box box_;
   PartitionSettings settings_;
   Partition last_;
+  /// The samples and crossings of the earlier builds (adaptive mode): a rebuild evaluates only what
+  /// its new cells need.
+  std::unique_ptr<AdaptiveBuildMemo> memo_;
 };
 
 /// The partition seen by the mesher: faces numbered by sorted face id, cells in leaf order, corners

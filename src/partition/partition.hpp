@@ -16,6 +16,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace isopatch {
@@ -135,5 +136,13 @@ struct Partition {
 /// \throw EvaluationError when f or its gradient is NaN or infinite at a point the partition needs.
 /// \throw LimitError when `settings.cancel` is raised.
 Partition build_partition(const Surface& surface, const Box& box, const PartitionSettings& settings);
+
+struct AdaptiveBuildMemo;  // adaptive_partition.hpp
+
+/// The same, for adaptive settings, keeping the samples and crossings in `*memo` for the next call
+/// (created on the first call; later calls must give the same surface, box, max_depth and edge_samples):
+/// the same partition, fewer evaluations. The statistics count this call's evaluations only.
+Partition build_partition(const Surface& surface, const Box& box, const PartitionSettings& settings,
+                          std::unique_ptr<AdaptiveBuildMemo>& memo);
 
 }  // namespace isopatch

@@ -36,6 +36,7 @@ class SampleCache {
   std::span<const double> segment_samples(const SegmentKey& key);
 
   std::uint64_t segment_sample_evaluations() const { return segment_evaluations_; }
+  const Lattice& lattice() const { return lattice_; }
 
   /// An empty cache on top of `base` for one task: it reads what base holds and evaluates and keeps the
   /// rest itself. \pre base does not change while the overlay lives (many overlays may read it at once).
