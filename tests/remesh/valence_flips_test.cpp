@@ -9,11 +9,13 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <random>
 #include <vector>
 
 #include <tbb/task_arena.h>
 
+#include "remesh/block_edits.hpp"
 #include "remesh/editable_mesh.hpp"
 #include "remesh/flip_blocks.hpp"
 #include "remesh/valence_flips.hpp"
@@ -223,6 +225,47 @@ TEST(ValenceFlips, EnergyChangeOfAFlipCountsTheFourVertices) {
   const auto back = m.interior_edge(e->c, e->d);
   ASSERT_TRUE(back);
   EXPECT_EQ(flip_energy_change(m, *back), -4);
+}
+
+}  // namespace
+}  // namespace isopatch
+
+namespace isopatch {
+namespace {
+
+TEST(EditLists, KeyedEdgesAreTheFilteredEdgeListInItsOrder) {
+  const EditableMesh m = scrambled_grid(64, 600, 5);  // more than one block of vertices
+  const KeyedEdges listed = list_keyed_edges(m, [&](std::uint32_t, std::uint32_t, double length) {
+    return length < 1.2 ? std::optional<double>(-length) : std::nullopt;
+  });
+  std::vector<KeyedEdge> expected;
+  for (const auto& [a, b] : m.edges()) {
+    const double length = (m.positions[a] - m.positions[b]).norm();
+    if (length < 1.2) expected.push_back({-length, {a, b}});
+  }
+  ASSERT_FALSE(expected.empty());
+  EXPECT_EQ(listed.keyed, expected);
+  EXPECT_EQ(listed.longest, m.longest_edge());
+}
+
+TEST(EditableMesh, RingDisjointClassesKeepTheirMembersMoreThanTwoEdgesApart) {
+  // Boundary vertices of the grid have open fans (the full walk), inner ones closed fans.
+  const EditableMesh m = scrambled_grid(24, 150, 9);
+  std::vector<std::uint32_t> vertices;
+  for (std::uint32_t v = 0; v < m.vertex_slots(); ++v) vertices.push_back(v);
+  const auto classes = m.ring_disjoint_classes(vertices);
+  std::vector<int> seen(m.vertex_slots(), 0);
+  for (const auto& members : classes) {
+    std::vector<char> member(m.vertex_slots(), 0);
+    for (std::uint32_t v : members) member[v] = 1, ++seen[v];
+    for (std::uint32_t v : members)
+      for (std::uint32_t w : m.neighbours(v)) {
+        EXPECT_FALSE(member[w]) << v << " and " << w << " are neighbours";
+        for (std::uint32_t x : m.neighbours(w))
+          EXPECT_TRUE(x == v || !member[x]) << v << " and " << x << " are two edges apart";
+      }
+  }
+  for (std::uint32_t v = 0; v < m.vertex_slots(); ++v) EXPECT_EQ(seen[v], 1);
 }
 
 }  // namespace
