@@ -19,8 +19,8 @@
 #include <isopatch/error.hpp>
 
 #include <algorithm>
-#include <exception>
 #include <cmath>
+#include <exception>
 #include <numbers>
 #include <numeric>
 #include <optional>
@@ -49,7 +49,8 @@ std::uint64_t z_order(const CellKey& key, int finest) {
   std::uint64_t z = 0;
   const int up = finest - key.depth;
   for (int bit = Lattice::kMaxDepth - 1; bit >= 0; --bit)
-    for (int a = 0; a < 3; ++a) z = (z << 1) | (((static_cast<std::uint64_t>(key.coords[a]) << up) >> bit) & 1u);
+    for (int a = 0; a < 3; ++a)
+      z = (z << 1) | (((static_cast<std::uint64_t>(key.coords[a]) << up) >> bit) & 1u);
   return z;
 }
 
@@ -86,7 +87,7 @@ class AdaptiveBuilder {
   LeafTree tree_;
   std::unordered_set<CellKey, CellKeyHash> forced_;  // force_split cells and their ancestors
   std::vector<Crossing>& crossings_;
-  IndexMap<SegmentKey, SegmentKeyHash>& crossing_index_;  // same order as crossings_
+  IndexMap<SegmentKey, SegmentKeyHash>& crossing_index_;                     // same order as crossings_
   std::uint64_t values_before_, gradients_before_, segment_samples_before_;  // the memo's counts at the start
   PartitionStats stats_;
 };
@@ -134,7 +135,8 @@ Partition AdaptiveBuilder::run() {
     const std::vector<CellKey> leaves = tree_.leaves();
     std::vector<CellKey> pending;
     for (const CellKey& key : leaves)
-      if (!(key.depth < settings_.max_depth && forced_.count(key)) && !known.count(key)) pending.push_back(key);
+      if (!(key.depth < settings_.max_depth && forced_.count(key)) && !known.count(key))
+        pending.push_back(key);
     std::vector<LeafAnalysis> fresh = analyse_in_tasks(pending);
     std::size_t next_fresh = 0;
     for (const CellKey& key : leaves) {
@@ -190,8 +192,8 @@ bool AdaptiveBuilder::close(const LeafAnalysis& a) {
 // and the same counts for any number of threads. The first task's error is the one raised.
 std::vector<LeafAnalysis> AdaptiveBuilder::analyse_in_tasks(const std::vector<CellKey>& keys) {
   const std::size_t tasks = (keys.size() + kLeavesPerTask - 1) / kLeavesPerTask;
-  const LeafAnalysisInputs inputs{surface_, settings_, lattice_, tree_,           sampler_,
-                                  cos_cone_, cache_,  crossings_, crossing_index_};
+  const LeafAnalysisInputs inputs{surface_,  settings_, lattice_,   tree_,          sampler_,
+                                  cos_cone_, cache_,    crossings_, crossing_index_};
   std::vector<LeafAnalysis> out(keys.size());
   std::vector<std::pair<std::uint64_t, std::uint32_t>> order(keys.size());
   for (std::size_t i = 0; i < keys.size(); ++i)
@@ -289,7 +291,8 @@ Partition AdaptiveBuilder::finish(std::vector<LeafAnalysis>& analyses) {
 
 }  // namespace
 
-AdaptiveBuildMemo::AdaptiveBuildMemo(const Surface& surface_, const Box& box_, const PartitionSettings& settings)
+AdaptiveBuildMemo::AdaptiveBuildMemo(const Surface& surface_, const Box& box_,
+                                     const PartitionSettings& settings)
     : surface(surface_),
       box(box_),
       max_depth(settings.max_depth),

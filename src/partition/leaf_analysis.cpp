@@ -38,10 +38,10 @@ SegmentKey segment_between(const LatticePoint& a, const LatticePoint& b) {
   return key;
 }
 
-
 }  // namespace
 
-std::vector<LeafAnalyser::Polygon> LeafAnalyser::boundary_polygons(const CellKey& key, const Cell& cell) const {
+std::vector<LeafAnalyser::Polygon> LeafAnalyser::boundary_polygons(const CellKey& key,
+                                                                   const Cell& cell) const {
   std::array<bool, 12> edge_split{};
   for (int e = 0; e < 12; ++e) {
     const int axis = cube::edge_axis(e);
@@ -51,8 +51,8 @@ std::vector<LeafAnalyser::Polygon> LeafAnalyser::boundary_polygons(const CellKey
     std::array<int, 3> ou{}, ov{}, ouv{};
     ou[u] = ouv[u] = corner[u] ? 1 : -1;
     ov[v] = ouv[v] = corner[v] ? 1 : -1;
-    edge_split[e] =
-        in_.tree.neighbour_split(key, ou) || in_.tree.neighbour_split(key, ov) || in_.tree.neighbour_split(key, ouv);
+    edge_split[e] = in_.tree.neighbour_split(key, ou) || in_.tree.neighbour_split(key, ov) ||
+                    in_.tree.neighbour_split(key, ouv);
   }
   std::vector<Polygon> polygons;
   for (int f = 0; f < 6; ++f) {
@@ -231,7 +231,7 @@ LeafAnalysis LeafAnalyser::analyse(const CellKey& key) {
 }
 
 ComplexReason LeafAnalyser::classify(const Cell& cell, const LeafAnalysis& a, bool ambiguous, bool edge_ok,
-                                        const std::array<bool, 6>& face_crossed) {
+                                     const std::array<bool, 6>& face_crossed) {
   if (ambiguous) return ComplexReason::AmbiguousFace;
   if (a.leaf.loops.size() > 1) return ComplexReason::SeveralLoops;
   if (!edge_ok) return ComplexReason::EdgeTest;

@@ -39,16 +39,15 @@ struct LeafAnalysisInputs {
   const Lattice& lattice;
   const LeafTree& tree;
   const Sampler& sampler;
-  double cos_cone = 1.0;                                 ///< cos of settings.cone_angle_deg
-  const SampleCache& cache;                              ///< samples evaluated so far
-  const std::vector<Crossing>& crossings;                ///< crossings found so far
+  double cos_cone = 1.0;                                       ///< cos of settings.cone_angle_deg
+  const SampleCache& cache;                                    ///< samples evaluated so far
+  const std::vector<Crossing>& crossings;                      ///< crossings found so far
   const IndexMap<SegmentKey, SegmentKeyHash>& crossing_index;  ///< their segments, same order
 };
 
 class LeafAnalyser {
  public:
-  explicit LeafAnalyser(const LeafAnalysisInputs& in)
-      : in_(in), cache_(SampleCache::overlay(in.cache)) {}
+  explicit LeafAnalyser(const LeafAnalysisInputs& in) : in_(in), cache_(SampleCache::overlay(in.cache)) {}
 
   /// Analyses the leaf `key` of in.tree (docs/algorithms.md 2.12.2): the same result whichever
   /// analyser runs it and whatever it analysed before. \throw EvaluationError when f is not finite at
@@ -64,7 +63,7 @@ class LeafAnalyser {
   const PartitionStats& stats() const { return stats_; }
 
  private:
-  struct Polygon {  // one (sub-)face polygon of a leaf's boundary graph
+  struct Polygon {                       // one (sub-)face polygon of a leaf's boundary graph
     std::vector<LatticePoint> vertices;  // finest coordinates, counter-clockwise from outside
     FaceId face;
   };

@@ -49,7 +49,8 @@ std::span<const double> SampleCache::segment_samples(const SegmentKey& key) {
   const auto n = static_cast<std::size_t>(segment_samples_);
   if (const auto index = segment_index_.find(key)) return {segment_values_.data() + *index * n, n};
   if (base_)
-    if (const auto shared = base_->segment_index_.find(key)) return {base_->segment_values_.data() + *shared * n, n};
+    if (const auto shared = base_->segment_index_.find(key))
+      return {base_->segment_values_.data() + *shared * n, n};
   const Vec3 a = lattice_.point(key.start);
   const Vec3 b = lattice_.point(key.end());
   // One batch per segment: the batch evaluator gives the single-point values bit for bit, at a

@@ -63,9 +63,9 @@ class SampleCache {
   std::vector<Sample> samples_;
   std::vector<std::uint64_t> sample_keys_;  // an overlay's: the key of each sample, same order
   IndexMap<SegmentKey, SegmentKeyHash> segment_index_;
-  std::vector<double> segment_values_;  // segment_samples_ consecutive values per segment
+  std::vector<double> segment_values_;    // segment_samples_ consecutive values per segment
   std::vector<SegmentKey> segment_keys_;  // an overlay's: the key of each segment, same order
-  std::vector<Vec3> points_;            // scratch: one segment's sample points
+  std::vector<Vec3> points_;              // scratch: one segment's sample points
   std::uint64_t segment_evaluations_ = 0;
 };
 

@@ -13,7 +13,6 @@
 #include "remesh/slot_renumbering.hpp"
 #include "remesh/spatial_order.hpp"
 
-
 namespace isopatch {
 
 EditableMesh::EditableMesh(const Mesh& mesh, std::vector<Vec3> vertex_normals)
@@ -206,7 +205,8 @@ std::vector<std::vector<std::uint32_t>> EditableMesh::ring_disjoint_classes(
     if (closed) {
       std::sort(after.begin(), after.begin() + static_cast<std::ptrdiff_t>(fan.size()));
       std::sort(before.begin(), before.begin() + static_cast<std::ptrdiff_t>(fan.size()));
-      closed = std::equal(after.begin(), after.begin() + static_cast<std::ptrdiff_t>(fan.size()), before.begin());
+      closed =
+          std::equal(after.begin(), after.begin() + static_cast<std::ptrdiff_t>(fan.size()), before.begin());
     }
     if (closed) {
       for (std::size_t k = 0; k < fan.size(); ++k)

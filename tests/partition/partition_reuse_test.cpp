@@ -60,7 +60,8 @@ TEST(SampleCacheOverlay, ReadsTheBaseEvaluatesTheRestAndMergesBack) {
   ASSERT_EQ(samples.size(), 4u);
   for (std::size_t k = 0; k < samples.size(); ++k) {  // the batch gives the single-point values
     const double t = static_cast<double>(k + 1) / 5.0;
-    EXPECT_EQ(samples[k], surface->value((1.0 - t) * lattice.point(segment.start) + t * lattice.point(segment.end())));
+    EXPECT_EQ(samples[k],
+              surface->value((1.0 - t) * lattice.point(segment.start) + t * lattice.point(segment.end())));
   }
   overlay.merge_into(base);
   const std::uint64_t merged = sampler.value_count();
