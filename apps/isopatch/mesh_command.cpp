@@ -25,6 +25,8 @@
 #include "stats_output.hpp"
 #include "volume_input.hpp"
 
+#include <tbb/task_arena.h>
+
 namespace isopatch::cli {
 namespace {
 
@@ -162,7 +164,9 @@ int run_mesh(const MeshOptions& o) {
   write_mesh(mesh, o.output, glb ? glb_colours(mesh, surface.get(), o.colour) : std::vector<Vec3>{});
   if (!o.stats_json.empty()) write_stats_json(o.stats_json, surface->name(), settings, stats, o.output);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
-  print_mesh_warnings(stats, mesh, stderr);
+  // The checks behind the warnings run in parallel too, on as many threads as the meshing.
+  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  arena.execute([&] { print_mesh_warnings(stats, mesh, stderr); });
   return 0;
 }
 

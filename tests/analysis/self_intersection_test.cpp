@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tbb/task_arena.h>
+
 #include <random>
 
 #include "analysis_meshes.hpp"
@@ -135,6 +137,31 @@ TEST(SelfIntersection, AgreesWithCgalOnFoldsAndInterpenetration) {
   const SelfIntersectionReport capped = find_self_intersections(two, 5);
   EXPECT_EQ(capped.pairs, 5u);
   EXPECT_TRUE(capped.capped);
+}
+
+TEST(SelfIntersection, TheReportIsTheSameForAnyNumberOfThreads) {
+  // Large enough for many pieces of the parallel scan: two interpenetrating spheres of 20480
+  // triangles each, the first pair and the count capped or not.
+  Mesh two = test::icosphere(5);
+  const Mesh second = test::icosphere(5, 0.8);
+  const auto offset = static_cast<std::uint32_t>(two.positions.size());
+  for (const Vec3& p : second.positions) two.positions.push_back(p + Vec3(0.9, 0.1, 0.05));
+  for (const Triangle& t : second.triangles)
+    two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  for (const std::size_t limit : {std::size_t{1}, std::size_t{7}, std::size_t{100000}}) {
+    SCOPED_TRACE(limit);
+    SelfIntersectionReport one, many;
+    tbb::task_arena(1).execute([&] { one = find_self_intersections(two, limit); });
+    tbb::task_arena(4).execute([&] { many = find_self_intersections(two, limit); });
+    EXPECT_EQ(one.pairs, many.pairs);
+    EXPECT_EQ(one.capped, many.capped);
+    EXPECT_EQ(one.example, many.example);
+    EXPECT_EQ(one.example_point, many.example_point);
+    EXPECT_EQ(one.capped, limit < 1000);
+    if (limit < 1000) {
+      EXPECT_EQ(one.pairs, limit);
+    }
+  }
 }
 
 TEST(SelfIntersection, RejectsBadIndicesAndPositions) {
