@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets of fuzz/ with clang++ (ASan + UBSan) and runs each for SECONDS (default
-# 60) on its committed seed corpus (fuzz/corpus/<target>/). Fails on any crash, leak, sanitizer report
-# or timeout; the failing input is kept in fuzz/crashes/<target>/.
+# 60) on its committed seed corpus (fuzz/corpus/<target>/), as many targets at a time as there are
+# cores. Fails on any crash, leak, sanitizer report or timeout; the failing input is kept in
+# fuzz/crashes/<target>/.
 # Usage: scripts/fuzz.sh [SECONDS] [RUNS]
 # With RUNS (CI passes one) the search is reproducible: a fixed seed and a fixed number of inputs, with
 # SECONDS only as a cap; without it, each target simply runs for SECONDS with a random seed.
@@ -32,19 +33,41 @@ build=build-fuzz
 CXX="$cxx" cmake -S fuzz -B "$build" -G Ninja -DCMAKE_CXX_COMPILER="$cxx" >/dev/null
 cmake --build "$build" -j"$(nproc)"
 
-status=0
-for t in "${targets[@]}"; do
-  work="$build/corpus/$t"   # grown corpus, outside the source tree
-  crashes="fuzz/crashes/$t"
+# One target per core at a time (each still searches for SECONDS on its own core), reported in order.
+fuzz_one() {
+  local t="$1" work="$build/corpus/$1" crashes="fuzz/crashes/$1"
   mkdir -p "$work" "$crashes"
-  echo "isopatch: fuzzing $t for ${seconds}s"
-  if ! ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  if ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
        "$build/$t" "$work" "fuzz/corpus/$t" "${limits[@]}" -timeout=10 -rss_limit_mb=2048 \
        -max_len=4096 -artifact_prefix="$crashes/" -print_final_stats=1 >"$build/$t.log" 2>&1; then
+    echo 0 >"$build/$t.status"
+  else
+    echo 1 >"$build/$t.status"
+  fi
+}
+parallel="$(nproc)"
+running=0
+for t in "${targets[@]}"; do
+  rm -f "$build/$t.status"
+  echo "isopatch: fuzzing $t for ${seconds}s"
+  fuzz_one "$t" &
+  running=$((running + 1))
+  if [ "$running" -ge "$parallel" ]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait || true
+
+status=0
+for t in "${targets[@]}"; do
+  crashes="fuzz/crashes/$t"
+  if [ "$(cat "$build/$t.status" 2>/dev/null || echo 1)" != 0 ]; then
     echo "isopatch: $t FAILED, input kept in $crashes/:"
     tail -n 40 "$build/$t.log"
     status=1
   else
+    echo "isopatch: $t:"
     grep -E "^(stat::number_of_executed_units|stat::peak_rss_mb|#[0-9]+ +DONE)" "$build/$t.log" || true
   fi
   rmdir "$crashes" 2>/dev/null || true   # keep the folder only when it holds a reproducer

@@ -43,7 +43,10 @@ py::array_t<double> checked_result(const py::object& result, std::size_t rows, i
                    : a.ndim() == 2 && static_cast<std::size_t>(a.shape(0)) == rows && a.shape(1) == columns;
   if (!ok) {
     std::string shape;
-    for (py::ssize_t d = 0; d < a.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(a.shape(d));
+    for (py::ssize_t d = 0; d < a.ndim(); ++d) {
+      if (d) shape.append(", ");
+      shape.append(std::to_string(a.shape(d)));
+    }
     throw InputError(std::string(what) + " returned an array of shape (" + shape + ") for " +
                      std::to_string(rows) + " points; want (" + std::to_string(rows) +
                      (columns == 1 ? ",)" : ", 3)"));

@@ -66,20 +66,6 @@ TEST_P(QualityPresets, PreviewMeetsItsFloor) {
   EXPECT_EQ(stats.cleanup->splits, 0u);
 }
 
-TEST_P(QualityPresets, FineHasALowerCurvatureErrorThanDefault) {
-  const PresetCase c = GetParam();
-  const SurfacePtr s = c.make();
-  MeshStats fine_stats, default_stats;
-  const Mesh fine = mesh_at_quality(*s, c.edge_length, Quality::Fine, &fine_stats);
-  const Mesh normal = mesh_at_quality(*s, c.edge_length, Quality::Default, &default_stats);
-  const QualityReport f = analyze_quality(fine, s.get());
-  const QualityReport d = analyze_quality(normal, s.get());
-  EXPECT_LT(f.accuracy->mean_curvature.nrms, 1.06 * d.accuracy->mean_curvature.nrms);
-  EXPECT_GE(f.valence.share_6, 0.90);
-  EXPECT_GE(f.shape.min_angle.min, 20.0);
-  EXPECT_GT(fine_stats.cleanup->exactness_moves, default_stats.cleanup->exactness_moves);
-}
-
 INSTANTIATE_TEST_SUITE_P(Surfaces, QualityPresets,
                          ::testing::Values(PresetCase{"torus", &test::default_torus, 0.05, 1},
                                            PresetCase{"tanglecube", &test::tanglecube, 0.12, 5},
@@ -88,17 +74,26 @@ INSTANTIATE_TEST_SUITE_P(Surfaces, QualityPresets,
                            return std::string(param.param.name);
                          });
 
+// Fine against default on each surface (at most 6% worse, valence 6 and the angle floor kept, more
+// curvature moves) and over the surfaces (geometric mean below 0.97): one test, so that each pair of
+// meshes is made once (this suite also runs under the sanitizers).
 TEST(QualityPresetsOverSurfaces, FineLowersTheCurvatureErrorOnTheGeometricMean) {
   double log_ratio = 0.0;
   const PresetCase cases[] = {{"torus", &test::default_torus, 0.05, 1},
                               {"tanglecube", &test::tanglecube, 0.08, 5},
                               {"genus2", &test::genus2, 0.03, 2}};
   for (const PresetCase& c : cases) {
+    SCOPED_TRACE(c.name);
     const SurfacePtr s = c.make();
-    const QualityReport f =
-        analyze_quality(mesh_at_quality(*s, c.edge_length, Quality::Fine, nullptr), s.get());
-    const QualityReport d =
-        analyze_quality(mesh_at_quality(*s, c.edge_length, Quality::Default, nullptr), s.get());
+    MeshStats fine_stats, default_stats;
+    const Mesh fine = mesh_at_quality(*s, c.edge_length, Quality::Fine, &fine_stats);
+    const Mesh normal = mesh_at_quality(*s, c.edge_length, Quality::Default, &default_stats);
+    const QualityReport f = analyze_quality(fine, s.get());
+    const QualityReport d = analyze_quality(normal, s.get());
+    EXPECT_LT(f.accuracy->mean_curvature.nrms, 1.06 * d.accuracy->mean_curvature.nrms);
+    EXPECT_GE(f.valence.share_6, 0.90);
+    EXPECT_GE(f.shape.min_angle.min, 20.0);
+    EXPECT_GT(fine_stats.cleanup->exactness_moves, default_stats.cleanup->exactness_moves);
     log_ratio += std::log(f.accuracy->mean_curvature.nrms / d.accuracy->mean_curvature.nrms);
   }
   EXPECT_LT(std::exp(log_ratio / 3.0), 0.97);
