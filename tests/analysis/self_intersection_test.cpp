@@ -110,6 +110,18 @@ Mesh jittered(Mesh m, int moved, double reach, unsigned seed) {
   return m;
 }
 
+/// Two icospheres of `subdivisions` (radii 1 and 0.8, the second moved by (0.9, 0.1, 0.05)) in one
+/// mesh: their triangles cross along a circle.
+Mesh spheres_through_each_other(int subdivisions) {
+  Mesh two = test::icosphere(subdivisions);
+  const Mesh second = test::icosphere(subdivisions, 0.8);
+  const auto offset = static_cast<std::uint32_t>(two.positions.size());
+  for (const Vec3& p : second.positions) two.positions.push_back(p + Vec3(0.9, 0.1, 0.05));
+  for (const Triangle& t : second.triangles)
+    two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  return two;
+}
+
 TEST(SelfIntersection, AgreesWithCgalOnFoldsAndInterpenetration) {
   std::size_t folds = 0;
   for (unsigned seed = 1; seed <= 6; ++seed) {
@@ -121,12 +133,7 @@ TEST(SelfIntersection, AgreesWithCgalOnFoldsAndInterpenetration) {
   }
   EXPECT_GT(folds, 10u);  // the jitter folds some of the spheres
   // Two spheres through each other: their triangles cross along a circle.
-  Mesh two = test::icosphere(3);
-  const Mesh second = test::icosphere(3, 0.8);
-  const auto offset = static_cast<std::uint32_t>(two.positions.size());
-  for (const Vec3& p : second.positions) two.positions.push_back(p + Vec3(0.9, 0.1, 0.05));
-  for (const Triangle& t : second.triangles)
-    two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const Mesh two = spheres_through_each_other(3);
   const SelfIntersectionReport r = find_self_intersections(two);
   EXPECT_GT(r.pairs, 20u);
   EXPECT_EQ(r.pairs, test::count_self_intersections(two, 100000));
@@ -142,12 +149,7 @@ TEST(SelfIntersection, AgreesWithCgalOnFoldsAndInterpenetration) {
 TEST(SelfIntersection, TheReportIsTheSameForAnyNumberOfThreads) {
   // Large enough for many pieces of the parallel scan: two interpenetrating spheres of 20480
   // triangles each, the first pair and the count capped or not.
-  Mesh two = test::icosphere(5);
-  const Mesh second = test::icosphere(5, 0.8);
-  const auto offset = static_cast<std::uint32_t>(two.positions.size());
-  for (const Vec3& p : second.positions) two.positions.push_back(p + Vec3(0.9, 0.1, 0.05));
-  for (const Triangle& t : second.triangles)
-    two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  const Mesh two = spheres_through_each_other(5);
   for (const std::size_t limit : {std::size_t{1}, std::size_t{7}, std::size_t{100000}}) {
     SCOPED_TRACE(limit);
     SelfIntersectionReport one, many;

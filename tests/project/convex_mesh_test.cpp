@@ -328,7 +328,9 @@ TEST(ConvexMesh, BadRegionsAndCellsNameTheirSetting) {
 /// An edge length of a fortieth of the box's longest side (the default is a 64th): the cuts' properties
 /// do not depend on the resolution, and the meshes are 2.5 times smaller (these tests also run under
 /// the sanitizers).
-double coarse_edge_length(const Box& box) { return box.size().maxCoeff() / 40.0; }
+double coarse_edge_length(const Box& box) {
+  return box.size().maxCoeff() / 40.0;
+}
 
 // An unbounded region without a box lies inside the surface's own box, as with that box given; in a
 // frame too (the region and the surface's box both cut the mesh, and it keeps inside both).
