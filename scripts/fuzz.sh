@@ -45,17 +45,11 @@ fuzz_one() {
     echo 1 >"$build/$t.status"
   fi
 }
-parallel="$(nproc)"
-running=0
 for t in "${targets[@]}"; do
   rm -f "$build/$t.status"
+  while [ "$(jobs -rp | wc -l)" -ge "$(nproc)" ]; do wait -n || true; done
   echo "isopatch: fuzzing $t for ${seconds}s"
   fuzz_one "$t" &
-  running=$((running + 1))
-  if [ "$running" -ge "$parallel" ]; then
-    wait -n || true
-    running=$((running - 1))
-  fi
 done
 wait || true
 
