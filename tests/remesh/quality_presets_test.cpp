@@ -2,7 +2,8 @@
 // the time and the defects are:
 // - preview meets its floor (closed, manifold, oriented, right genus, no self-intersections, vertices on
 //   f = 0, smallest angle >= 20 degrees, valence 6 >= 90%) with a mean-curvature error well below the
-//   raw projection mesh's, and keeps the raw mesh's vertices where nothing needed repair;
+//   raw projection mesh's, and keeps the raw mesh's vertices where nothing needed repair; its borrowing
+//   glide search runs only on a mesh that the cheaper passes left under 92% of valence 6;
 // - fine has a lower mean-curvature error than default over the surfaces (geometric mean of fine /
 //   default below 0.97 with tanglecube at edge length 0.08; measured 0.93: torus 0.85, tanglecube
 //   0.92, genus2 1.05), and is nowhere more than 6% worse: on genus2, and on small meshes of
@@ -64,6 +65,22 @@ TEST_P(QualityPresets, PreviewMeetsItsFloor) {
   EXPECT_LE(mesh.vertex_count(), raw.vertex_count());
   EXPECT_GE(mesh.vertex_count(), raw.vertex_count() * 8 / 10);
   EXPECT_EQ(stats.cleanup->splits, 0u);
+  // The borrowing glide search runs only when the cheaper passes left fewer than 92% of valence 6: else
+  // the mesh is the one made without it.
+  Settings no_search;
+  no_search.edge_length = c.edge_length;
+  no_search.quality = Quality::Preview;
+  no_search.valence_search = 0;
+  const Mesh cheap = mesh_surface(*s, no_search);
+  const double cheap_share = analyze_quality(cheap, s.get()).valence.share_6;
+  if (stats.times.of("cleanup_valence_search") > 0.0) {
+    EXPECT_LT(cheap_share, 0.92);
+    EXPECT_GT(q.valence.share_6, cheap_share);
+  } else {
+    EXPECT_GE(cheap_share, 0.92);
+    EXPECT_EQ(mesh.positions, cheap.positions);
+    EXPECT_EQ(mesh.triangles, cheap.triangles);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Surfaces, QualityPresets,
