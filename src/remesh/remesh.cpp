@@ -120,7 +120,7 @@ class Remesher {
     timed("cleanup_relax", [&] { relax(work, kLocalRelaxationRounds); });
     timed("cleanup_repair", [&] { repair_until_settled(); });
     // Only a mesh still short of the margin above the floor pays for chains that may borrow.
-    if (settings_.valence_search > 0 && valence_six_share() < kLocalValenceShare) {
+    if (settings_.valence_search > 0 && valence_six_share(mesh_) < kLocalValenceShare) {
       timed("cleanup_valence_search", [&] {
         flip_valences(GlideLimits{.budget = settings_.valence_search, .passes = 1, .max_debt = 2});
       });
@@ -152,17 +152,6 @@ class Remesher {
 
   void check_cancel() const {
     if (settings_.cancel && settings_.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled");
-  }
-
-  /// Share of the free (alive, unlocked) vertices whose valence is 6; 1 when there is none.
-  double valence_six_share() const {
-    std::size_t free = 0, six = 0;
-    for (std::uint32_t v = 0; v < mesh_.vertex_slots(); ++v)
-      if (mesh_.alive(v) && !mesh_.locked[v]) {
-        ++free;
-        if (mesh_.valence(v) == 6) ++six;
-      }
-    return free == 0 ? 1.0 : static_cast<double>(six) / static_cast<double>(free);
   }
 
   /// Whether p lies in the box and inside the region's planes (to within plane_margin()).

@@ -12,6 +12,16 @@
 
 namespace isopatch {
 
+double valence_six_share(const EditableMesh& mesh) {
+  std::size_t free = 0, six = 0;
+  for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v)
+    if (mesh.alive(v) && !mesh.locked[v]) {
+      ++free;
+      if (mesh.valence(v) == 6) ++six;
+    }
+  return free == 0 ? 1.0 : static_cast<double>(six) / static_cast<double>(free);
+}
+
 int flip_energy_change(const EditableMesh& mesh, const EditableMesh::Edge& e) {
   const auto deviation = [&](std::uint32_t v, int change) {
     const int d = static_cast<int>(mesh.valence(v)) + change - target_valence(mesh, v);

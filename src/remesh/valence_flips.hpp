@@ -20,6 +20,9 @@ inline int target_valence(const EditableMesh& mesh, std::uint32_t v) {
   return mesh.locked[v] ? 4 : 6;
 }
 
+/// Share of the free (alive, unlocked) vertices whose valence is 6; 1 when there is none.
+double valence_six_share(const EditableMesh& mesh);
+
 /// Change of the valence energy over the four vertices of e when e is flipped (negative: better).
 int flip_energy_change(const EditableMesh& mesh, const EditableMesh::Edge& e);
 
