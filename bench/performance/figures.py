@@ -57,7 +57,30 @@ RATIOS = [  # (name, numerator system, denominator system, target text)
     ("isopatch default ÷ VTK Flying Edges", "default 2t", "fe", "–"),
     ("isopatch fine ÷ CGAL Surface_mesher", "fine", "cgal", "–"),
     ("isopatch preview ÷ CGAL Surface_mesher", "preview", "cgal", "–"),
+    ("the paper's method alone (isopatch --remesh 0) ÷ CGAL Surface_mesher", "raw", "cgal", "–"),
+    ("the paper's method alone ÷ FE + isotropic remeshing", "raw", "fe + remesh", "–"),
+    ("the paper's method alone ÷ VTK Flying Edges", "raw", "fe", "–"),
 ]
+
+BUDGETS = [  # (the system a speed target is about, its denominator, the target ratio)
+    ("default 2t", "cgal", TARGET_CGAL),
+    ("default 2t", "fe + remesh", TARGET_REMESH),
+    ("preview", "fe", TARGET_PREVIEW_FE),
+]
+
+
+def allowed_ms(group, system, peer, target) -> float | None:
+    """The wall time (ms) a speed target allows `system` for its own vertex count: that count at
+    `target` times the peer's vertices per second."""
+    run, v = group.runs.get(system), speed(group.runs.get(peer))
+    return 1e3 * run.vertices / (target * v) if run is not None and run.ok and run.vertices and v else None
+
+
+def raw_ms_at(group, system) -> float | None:
+    """The time the paper's method alone (no clean-up) takes for as many vertices as `system` made, at
+    its own vertices per second: the part of the budget the clean-up cannot have."""
+    run, v = group.runs.get(system), speed(group.runs.get("raw"))
+    return 1e3 * run.vertices / v if run is not None and run.ok and run.vertices and v else None
 
 
 def group_ratio(group, a, b) -> float | None:

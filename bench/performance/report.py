@@ -8,9 +8,9 @@ from markdown import _table
 from figures import _fmt
 
 SPEED_SYSTEMS = [("default 2t", "default 2t"), ("default 1t", "default 1t"), ("preview", "preview 2t"),
-                 ("fine", "fine 2t"), ("cgal", "CGAL"), ("fe", "FE 2t"), ("fe + remesh", "FE + remesh")]
+                 ("fine", "fine 2t"), ("raw", "paper's method alone 2t"), ("cgal", "CGAL"), ("fe", "FE 2t"), ("fe + remesh", "FE + remesh")]
 QUALITY_SYSTEMS = [("default 2t", "isopatch default"), ("preview", "isopatch preview"), ("fine", "isopatch fine"),
-                   ("cgal", "CGAL Surface_mesher"), ("fe", "VTK Flying Edges"), ("fe + remesh", "FE + isotropic remeshing")]
+                   ("raw", "isopatch, the paper's method alone (--remesh 0)"), ("cgal", "CGAL Surface_mesher"), ("fe", "VTK Flying Edges"), ("fe + remesh", "FE + isotropic remeshing")]
 
 
 def _version(tool: str) -> str:
@@ -124,6 +124,47 @@ def _stage_section(results, labels) -> list[str]:
     return out
 
 
+def _budget_section(results, labels) -> list[str]:
+    """What each speed target allows in wall time, next to the time of the paper's method alone for the
+    same vertex count: the clean-up can only have the difference."""
+    out = ["## What the speed targets leave for the clean-up", "",
+           "Each speed target, turned into the wall time it allows for the mesh's own vertex count (ms, 2 threads), "
+           "next to the time the paper's method alone (partition, crossings, patches, projection; `--remesh 0`, no "
+           "clean-up) takes for as many vertices at its own vertices per second. Where the paper's method alone "
+           "needs more than a target allows, no clean-up after it can meet that target, however cheap.", ""]
+    systems = list(dict.fromkeys(system for system, _, _ in fig.BUDGETS))  # default 2t, preview
+    shown = {"default 2t": "default", "preview": "preview"}
+    peers = {"cgal": "CGAL", "fe + remesh": "FE+remesh", "fe": "FE"}
+    header, rows = ["surface", "size"], []
+    for system in systems:
+        header.append(f"{shown.get(system, system)} ms")
+        header += [f"allowed by ÷ {peers.get(peer, peer)} >= {target:g}" for s_, peer, target in fig.BUDGETS
+                   if s_ == system]
+        header.append(f"paper's method alone, {shown.get(system, system)}'s count")
+    for spec, _, groups in results:
+        for g in groups:
+            if g.label not in labels:
+                continue
+            cells = [spec.name, g.label]
+            for system in systems:
+                cells.append(_fmt(getattr(g.runs.get(system), "ms", None), ".1f"))
+                cells += [_fmt(fig.allowed_ms(g, system, peer, target), ".1f") for s_, peer, target in fig.BUDGETS
+                          if s_ == system]
+                cells.append(_fmt(fig.raw_ms_at(g, system), ".1f"))
+            rows.append(cells)
+    out += [_table(header, ["l", "l"] + ["r"] * (len(header) - 2), rows), ""]
+    for label in labels:
+        shares = []
+        for system, peer, target in fig.BUDGETS:
+            share = fig.gmean(fig.ratio(fig.raw_ms_at(g, system), fig.allowed_ms(g, system, peer, target))
+                              for _, _, gs in results for g in gs if g.label == label)
+            shares.append(f"{_fmt(share, '.2f', '×')} of what {shown.get(system, system)} ÷ "
+                          f"{peers.get(peer, peer)} >= {target:g} allows")
+        out.append(f"- {label}: the paper's method alone takes (geometric mean over the surfaces) " +
+                   "; ".join(shares) + ".")
+    return out + [""]
+
+
 def _large_section(large) -> list[str]:
     out = ["## The large mesh", ""]
     if large is None:
@@ -169,6 +210,10 @@ METHOD = """## How it is measured
   triangle's smallest angle, H nRMS the normalized RMS error of the cotangent mean curvature, vertex
   distance the largest |f|/|grad f| at a vertex over the box diagonal); the quality targets of
   docs/quality.md are checked with the quality report's own code (bench/quality_report/targets.py).
+- The paper's method alone: isopatch `--quality default --remesh 0 --threads 2` at the default's edge
+  length: the partition, crossings, patches and projection of the default, without any clean-up. Its
+  vertex count is lower than the default's (the clean-up splits and collapses); its vertices per second
+  say what the method costs before any clean-up, and bound what a clean-up after it can have.
 - Same bytes: SHA-256 of the mesh files written with 1, 2 and 4 threads.
 - Large mesh: isopatch default on the sphere on 2 threads, its edge length from the sphere's fits,
   run once under `/usr/bin/time -v` for the peak resident memory; its time per vertex is compared with
@@ -199,6 +244,7 @@ def document(header_lines, results, large, sizes) -> str:
                   "(files and start-up included; for FE + remesh the remeshing process alone), minimum over the runs; `H ÷ CGAL` H nRMS over CGAL's at the same size; "
                   "`max vert dist` the largest |f|/|grad f| at a vertex over the box diagonal.", "",
                   _quality_table(results, label), ""]
+    parts += _budget_section(results, labels)
     parts += _large_section(large)
     parts += _stage_section(results, labels)
     parts += [METHOD, ""]

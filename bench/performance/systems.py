@@ -97,12 +97,21 @@ def read_stats(run: Timed, path: str) -> None:
     run.stage_ms = _stage_times(run.stats)
 
 
+RAW = "raw"  # not a preset: the paper's method alone, `--remesh 0` (no clean-up at all)
+
+
+def quality_arguments(quality: str) -> list[str]:
+    """The command-line arguments of a preset name, or of RAW (the default's partition and patches with
+    the clean-up switched off)."""
+    return ["--quality", "default", "--remesh", "0"] if quality == RAW else ["--quality", quality]
+
+
 @_with_cpu
 def isopatch(tool: str, surface: list[str], h: float, quality: str, threads: int, out: str) -> Timed:
-    """`isopatch mesh SURFACE --edge-length h --quality Q --threads T --stats-json ...`."""
+    """`isopatch mesh SURFACE --edge-length h --quality Q --threads T --stats-json ...` (Q may be RAW)."""
     run = Timed(f"isopatch {quality}", f"h {h:.4g}", h, quality=quality, threads=threads)
     stats = out + ".stats.json"
-    extra = ["--edge-length", repr(h), "--quality", quality, "--threads", str(threads), "--stats-json", stats]
+    extra = ["--edge-length", repr(h), *quality_arguments(quality), "--threads", str(threads), "--stats-json", stats]
     runs.isopatch_mesh(tool, surface, extra, out, run)
     if run.ok:
         read_stats(run, stats)
