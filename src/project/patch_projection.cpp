@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "project/ray_march.hpp"
 
@@ -36,39 +37,55 @@ PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const B
   };
   RayMarchSettings march;
   march.steps = params.march_steps;
+  // Every interior vertex's base point and ray first, f at the base points and the marches in batches
+  // (march_rays: the same hits as one march at a time, far cheaper per evaluation); then the tests in
+  // vertex order, so the verdict is the one the first failing vertex gives.
+  std::vector<std::size_t> interior;
+  std::vector<RayStart> rays;
+  std::vector<Vec3> bases;
+  std::vector<char> clamped;
   for (std::size_t v = 0; v < patch.vertex_count(); ++v) {
     if (patch.tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;
     const auto lambda = patch.lambda(static_cast<int>(v));
     Vec3 base = base_surface.evaluate(lambda);
     // The march needs a start inside the cell. A barycentric base is inside by convexity (up to
     // rounding, which the margin absorbs); a Coons base may bulge out where a face curve bends away.
-    if (!cell.contains(base, 1e-9 * cell.diagonal())) {
-      ++stats.clamped_base_points;
-      base = base.cwiseMax(cell.lo).cwiseMin(cell.hi);
-    }
+    const bool outside = !cell.contains(base, 1e-9 * cell.diagonal());
+    if (outside) base = base.cwiseMax(cell.lo).cwiseMin(cell.hi);
     Vec3 direction = Vec3::Zero();
     for (int k = 0; k < n; ++k)
       direction += lambda[static_cast<std::size_t>(k)] * corner_directions[static_cast<std::size_t>(k)];
-    const double f_base = f.value(base);
-    auto hit = march_to_surface(f, base, f_base, direction, cell, march);
+    interior.push_back(v);
+    bases.push_back(base);
+    clamped.push_back(outside ? 1 : 0);
+    rays.push_back({base, 0.0, direction});
+  }
+  std::vector<double> f_base(rays.size());
+  f.values(bases, f_base);
+  for (std::size_t k = 0; k < rays.size(); ++k) rays[k].f_start = f_base[k];
+  std::vector<std::optional<RayHit>> hits;
+  march_rays(f, rays, cell, march, hits);
+  auto acceptable = [&](const RayHit& h, ValueGradient& vg) {
+    vg = f.value_gradient(h.point);
+    const double norm = vg.gradient.norm();
+    return norm > 0.0 && std::abs(h.ray_direction.dot(vg.gradient)) >= params.cos_max_ray_angle * norm;
+  };
+  for (std::size_t k = 0; k < interior.size(); ++k) {
+    if (clamped[k]) ++stats.clamped_base_points;
+    std::optional<RayHit>& hit = hits[k];
     if (!inside(hit)) hit.reset();
-    auto acceptable = [&](const RayHit& h, ValueGradient& vg) {
-      vg = f.value_gradient(h.point);
-      const double norm = vg.gradient.norm();
-      return norm > 0.0 && std::abs(h.ray_direction.dot(vg.gradient)) >= params.cos_max_ray_angle * norm;
-    };
     ValueGradient vg;
     if (!hit || !acceptable(*hit, vg)) {
       // Where the interpolated direction grazes the surface (typically a cell that the surface nearly
       // touches along a face), an interior vertex may instead move along grad f at its base point:
       // only boundary vertices must keep to their face planes.
       ++stats.gradient_rays;
-      const Vec3 g = f.value_gradient(base).gradient;
-      hit = march_to_surface(f, base, f_base, g, cell, march);
+      const Vec3 g = f.value_gradient(bases[k]).gradient;
+      hit = march_to_surface(f, bases[k], f_base[k], g, cell, march);
       if (!inside(hit)) return PatchVerdict::RayMissed;
       if (!acceptable(*hit, vg)) return PatchVerdict::RayAngle;
     }
-    points[v] = {hit->point, vg.gradient};
+    points[interior[k]] = {hit->point, vg.gradient};
   }
   return triangles_agree_with_gradient(patch, points) ? PatchVerdict::Accepted : PatchVerdict::Flipped;
 }

@@ -49,4 +49,80 @@ std::optional<RayHit> march_to_surface(const Sampler& f, const Vec3& start, doub
   return std::nullopt;
 }
 
+namespace {
+
+/// One ray of march_rays on its way: marching in fixed steps, then refining the bracket.
+struct MarchingRay {
+  Vec3 start, d;
+  double t_max = 0.0, step = 0.0, t_a = 0.0, f_a = 0.0, t_query = 0.0;
+  int i = 1;
+  bool start_positive = false;
+  std::optional<BracketedRoot> root;
+};
+
+}  // namespace
+
+void march_rays(const Sampler& f, std::span<const RayStart> rays, const Box& region,
+                const RayMarchSettings& settings, std::vector<std::optional<RayHit>>& out) {
+  out.assign(rays.size(), std::nullopt);
+  const double diagonal = region.diagonal();
+  const Box grown{region.lo - Vec3::Constant(settings.exit_margin * diagonal),
+                  region.hi + Vec3::Constant(settings.exit_margin * diagonal)};
+  std::vector<MarchingRay> state(rays.size());
+  std::vector<std::size_t> going;  // indices of the rays still marching or refining
+  // The same set-up as march_to_surface, ray by ray.
+  for (std::size_t r = 0; r < rays.size(); ++r) {
+    const RayStart& ray = rays[r];
+    const double norm = ray.direction.norm();
+    if (!(norm > 0.0)) continue;
+    MarchingRay& m = state[r];
+    m.start = ray.start;
+    m.d = (ray.f_start < 0.0 ? 1.0 : -1.0) * ray.direction / norm;
+    if (ray.f_start == 0.0) {
+      out[r] = RayHit{ray.start, m.d, 0.0};
+      continue;
+    }
+    m.t_max = exit_distance(ray.start, m.d, grown);
+    if (!(m.t_max > 0.0)) continue;
+    m.step = m.t_max / settings.steps;
+    m.start_positive = ray.f_start >= 0.0;
+    m.f_a = ray.f_start;
+    going.push_back(r);
+  }
+  std::vector<Vec3> points;
+  std::vector<double> values;
+  while (!going.empty()) {
+    points.clear();
+    for (const std::size_t r : going) {
+      MarchingRay& m = state[r];
+      m.t_query = m.root ? m.root->next() : (m.i == settings.steps ? m.t_max : m.i * m.step);
+      points.push_back(m.start + m.t_query * m.d);
+    }
+    values.resize(points.size());
+    f.values(points, values);
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < going.size(); ++k) {
+      const std::size_t r = going[k];
+      MarchingRay& m = state[r];
+      const double g = values[k];
+      if (m.root) {
+        m.root->feed(g);
+      } else if ((g >= 0.0) != m.start_positive) {
+        m.root.emplace(m.t_a, m.f_a, m.t_query, g, settings.tolerance * diagonal);
+      } else {
+        m.t_a = m.t_query;
+        m.f_a = g;
+        if (++m.i > settings.steps) continue;  // left the region without a crossing
+      }
+      if (m.root && m.root->done()) {
+        const double t = m.root->result();
+        out[r] = RayHit{m.start + t * m.d, m.d, t};
+        continue;
+      }
+      going[kept++] = r;
+    }
+    going.resize(kept);
+  }
+}
+
 }  // namespace isopatch

@@ -6,6 +6,8 @@
 #include <isopatch/geometry.hpp>
 
 #include <optional>
+#include <span>
+#include <vector>
 
 #include "surface/sampler.hpp"
 
@@ -32,6 +34,22 @@ struct RayHit {
 std::optional<RayHit> march_to_surface(const Sampler& f, const Vec3& start, double f_start,
                                        const Vec3& direction, const Box& region,
                                        const RayMarchSettings& settings = {});
+
+/// One ray of march_rays: the arguments of one march_to_surface call.
+struct RayStart {
+  Vec3 start;
+  double f_start = 0.0;  ///< f(start)
+  Vec3 direction;        ///< towards the positive side of f; a zero direction gives no hit
+};
+
+/// march_to_surface for many rays in one region: out[i] is exactly what march_to_surface(f,
+/// rays[i].start, rays[i].f_start, rays[i].direction, region, settings) returns (the same evaluations,
+/// bit for bit), but f is evaluated in batches (Sampler::values), one point of every ray still going
+/// per round: far cheaper per point than one value at a time (docs/algorithms.md 4.6).
+/// \pre every start lies in the grown region. \post out.size() == rays.size().
+/// 	hrow EvaluationError if f is not finite at a point some ray evaluates (the first of its batch).
+void march_rays(const Sampler& f, std::span<const RayStart> rays, const Box& region,
+                const RayMarchSettings& settings, std::vector<std::optional<RayHit>>& out);
 
 /// Distance along the unit direction `d` from `p` (inside `box`) to the box boundary (slab test).
 double exit_distance(const Vec3& p, const Vec3& d, const Box& box);

@@ -1,6 +1,8 @@
 #include "project/side_points.hpp"
 
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include "project/ray_march.hpp"
 
@@ -12,19 +14,30 @@ SidePoints sample_side(const Sampler& f, const CellCorner& from, const CellCorne
   const Box& region = face.region;
   RayMarchSettings march;
   march.steps = params.march_steps;
-  SidePoints side;
-  side.points.reserve(static_cast<std::size_t>(r > 1 ? r - 1 : 0));
+  // Every sample's start and ray first, then f at the starts and the marches in batches (march_rays:
+  // the same hits as one march at a time).
+  std::vector<RayStart> rays;
+  std::vector<Vec3> starts;
   for (int j = 1; j < r; ++j) {
     const double t = static_cast<double>(j) / r;
     const Vec3 start = (1.0 - t) * from.position + t * to.position;
     // Both corner directions are cell-edge directions of this face: the sum lies in its plane and is
     // never zero (adjacent edges are perpendicular, opposite ones point the same way).
-    const Vec3 direction = (1.0 - t) * from.direction + t * to.direction;
-    const double f_start = f.value(start);
-    const auto hit = march_to_surface(f, start, f_start, direction, region, march);
+    starts.push_back(start);
+    rays.push_back({start, 0.0, (1.0 - t) * from.direction + t * to.direction});
+  }
+  std::vector<double> f_start(rays.size());
+  f.values(starts, f_start);
+  for (std::size_t k = 0; k < rays.size(); ++k) rays[k].f_start = f_start[k];
+  std::vector<std::optional<RayHit>> hits;
+  march_rays(f, rays, region, march, hits);
+  SidePoints side;
+  side.points.reserve(rays.size());
+  for (std::size_t k = 0; k < rays.size(); ++k) {
+    const std::optional<RayHit>& hit = hits[k];
     if (!hit) {
       side.accepted = false;
-      side.points.push_back({start, f.value_gradient(start).gradient});
+      side.points.push_back({starts[k], f.value_gradient(starts[k]).gradient});
       continue;
     }
     const ValueGradient vg = f.value_gradient(hit->point);

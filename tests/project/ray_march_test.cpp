@@ -1,6 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <optional>
+#include <vector>
+
 #include "project/ray_march.hpp"
+#include "surface/bracketed_root.hpp"
 #include "test_surfaces.hpp"
 
 namespace isopatch {
@@ -33,6 +38,66 @@ TEST(RayMarch, ExitDistanceOfSlabs) {
   const Box box{Vec3::Zero(), Vec3::Ones()};
   EXPECT_DOUBLE_EQ(exit_distance(Vec3(0.25, 0.5, 0.5), Vec3(1, 0, 0), box), 0.75);
   EXPECT_DOUBLE_EQ(exit_distance(Vec3(0.25, 0.5, 0.5), Vec3(-1, 0, 0), box), 0.25);
+}
+
+// The batched march gives exactly what one march at a time gives, with the same evaluations: rays that
+// cross once or several times (the tanglecube), that miss, that start on f = 0, a zero direction.
+TEST(RayMarch, BatchedRaysMatchOneMarchAtATime) {
+  const auto s = test::tanglecube();
+  const Box region{Vec3::Constant(-2.5), Vec3::Constant(2.5)};
+  std::vector<RayStart> rays;
+  for (int i = 0; i < 200; ++i) {
+    // A fixed scatter of starts and directions (no random source: the same rays on every run).
+    const double a = 0.37 * i, b = 0.11 * i * i;
+    const Vec3 start(2.4 * std::sin(a), 2.4 * std::cos(1.3 * a), 2.4 * std::sin(0.7 * b));
+    const Vec3 direction(std::cos(b), std::sin(2.0 * a), std::cos(a + b));
+    rays.push_back({start, 0.0, direction});
+  }
+  rays.push_back({Vec3(0.1, 0.2, 0.3), 0.0, Vec3::Zero()});
+  const Sampler f(*s);
+  for (RayStart& r : rays) r.f_start = f.value(r.start);
+  rays.push_back({Vec3(1, 2, 2), 0.0, Vec3(1, 0, 0)});  // f_start 0 as given: a hit where it starts
+  const Sampler one(*s), batched(*s);
+  std::vector<std::optional<RayHit>> hits;
+  march_rays(batched, rays, region, RayMarchSettings{}, hits);
+  ASSERT_EQ(hits.size(), rays.size());
+  int found = 0, missed = 0;
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    const auto expected = march_to_surface(one, rays[i].start, rays[i].f_start, rays[i].direction, region);
+    ASSERT_EQ(expected.has_value(), hits[i].has_value()) << "ray " << i;
+    if (!expected) {
+      ++missed;
+      continue;
+    }
+    ++found;
+    EXPECT_EQ(expected->point, hits[i]->point) << "ray " << i;
+    EXPECT_EQ(expected->ray_direction, hits[i]->ray_direction);
+    EXPECT_EQ(expected->distance, hits[i]->distance);
+  }
+  EXPECT_GT(found, 50);
+  EXPECT_GT(missed, 1);
+  EXPECT_EQ(one.value_count(), batched.value_count());
+}
+
+// The root finder's state machine: the root of cos t - 0.3 on [0, 2] to the tolerance, and no more
+// evaluations than allowed.
+TEST(BracketedRoot, FindsTheRootWithinItsBudget) {
+  BracketedRoot root(0.0, 0.7, 2.0, std::cos(2.0) - 0.3, 1e-14);
+  int evaluations = 0;
+  while (!root.done()) {
+    root.feed(std::cos(root.next()) - 0.3);
+    ++evaluations;
+  }
+  EXPECT_NEAR(root.result(), std::acos(0.3), 1e-13);
+  EXPECT_LT(evaluations, 20);
+  BracketedRoot capped(0.0, 0.7, 2.0, std::cos(2.0) - 0.3, 0.0, 3);
+  evaluations = 0;
+  while (!capped.done()) {
+    capped.feed(std::cos(capped.next()) - 0.3);
+    ++evaluations;
+  }
+  EXPECT_EQ(evaluations, 3);
+  EXPECT_EQ(BracketedRoot(0.5, 0.0, 1.0, 1.0, 1e-9).result(), 0.5);
 }
 
 }  // namespace
