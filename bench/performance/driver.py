@@ -30,17 +30,41 @@ LARGE_SURFACE, LARGE_VERTICES = "sphere", 1_000_000
 REPEATS = 3
 
 
-def large_run(tools: measure.Tools, surface: list[str], known: dict, vertices: int) -> systems.Timed:
+REFERENCE_RUNS = 3  # small runs timed before and again after the large one
+
+
+def large_run(tools: measure.Tools, surface: list[str], known: dict, vertices: int,
+              small: systems.Timed | None) -> systems.Timed:
     """isopatch default on 2 threads at about `vertices` vertices (edge length from the surface's
-    earlier fits, no fitting of its own) under /usr/bin/time -v."""
+    earlier fits, no fitting of its own) under /usr/bin/time -v. With `small` (the surface's default run
+    at the first size), that run's configuration is timed again REFERENCE_RUNS times just before and just
+    after the large run (minimum kept, in run.reference): the time per vertex is compared side by side,
+    not with a run made long before under another load."""
     pool = [r for r in known.get("default", []) if r.ok]
     if not pool:
         return measure._missing("isopatch default", "no earlier default run of the surface to size it from")
     h = matching._next_size(pool, vertices)
     out = os.path.join(tools.work, f"{LARGE_SURFACE}-large.ply")
+    small_out = os.path.join(tools.work, f"{LARGE_SURFACE}-large-reference.ply")
+    reference = None
+
+    def time_reference():
+        nonlocal reference
+        if small is None or not small.ok:
+            return
+        for _ in range(REFERENCE_RUNS):
+            again = systems.isopatch(tools.isopatch, surface, small.value, "default", 2, small_out)
+            if reference is None:
+                reference = again
+            else:
+                systems.add_timing(reference, again)
+
+    time_reference()
     measure.log(f"{LARGE_SURFACE}: about {vertices} vertices with h {h:.4g} (peak memory measured)")
     run = systems.isopatch_peak_memory(tools.isopatch, surface, h, 2, out)
-    for path in (out, out + ".stats.json"):
+    time_reference()
+    run.reference = reference
+    for path in (out, out + ".stats.json", small_out, small_out + ".stats.json"):
         if os.path.exists(path) and not tools.keep_meshes:
             os.remove(path)
     return run
@@ -119,7 +143,9 @@ def main() -> int:
         if not known.get("default"):
             side = quality_main.longest_side(names.get(spec.name, spec.box))
             measure._fit(tools, surface, sizes[0][1], side, f"{spec.name}-sizing", known, "default")
-        large = large_run(tools, surface, known, args.large)
+        small = next((g.runs.get("default 2t") for sp, _, gs in results if sp.name == LARGE_SURFACE
+                      for g in gs if g.label == sizes[0][0]), None)
+        large = large_run(tools, surface, known, args.large, small)
         for path in glob.glob(os.path.join(tools.work, f"{spec.name}-sizing-*")):
             os.remove(path)
         loads.append(os.getloadavg()[0])

@@ -96,13 +96,16 @@ def ratio_means(results, label) -> dict:
 
 
 def large_figures(results, large, first_label):
-    """(time per vertex of the large run ÷ that of the same surface's first size, bytes per vertex)."""
+    """(time per vertex of the large run ÷ that of the same surface's first size, bytes per vertex). The
+    small run is the one timed around the large run when there is one (the same load), else the
+    surface's run at the first size."""
     if large is None or not large.ok:
         return None, None
-    small = None
-    for spec, _, groups in results:
-        if spec.name == "sphere":
-            small = next((g.runs.get("default 2t") for g in groups if g.label == first_label), None)
+    small = getattr(large, "reference", None)
+    if small is None or not small.ok:
+        for spec, _, groups in results:
+            if spec.name == "sphere":
+                small = next((g.runs.get("default 2t") for g in groups if g.label == first_label), None)
     per_v = lambda r: r.ms / r.vertices if r is not None and r.ok and r.ms else None  # noqa: E731
     bytes_per_v = 1024.0 * large.max_rss_kb / large.vertices if large.max_rss_kb else None
     return ratio(per_v(large), per_v(small)), bytes_per_v

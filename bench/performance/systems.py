@@ -31,6 +31,7 @@ class Timed(runs.Run):
     input_ms: list[float] = field(default_factory=list)  # FE + remesh: the Flying Edges times
     input_vertices: int | None = None
     notes: list[str] = field(default_factory=list)  # oddities seen while measuring
+    reference: "Timed | None" = None  # the large run: the small run of the same surface timed around it
     cpu_ms: list[float] = field(default_factory=list)  # user + system time of each timed process, whole run
 
 
