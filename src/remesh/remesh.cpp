@@ -50,7 +50,9 @@ class Remesher {
       timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
       timed("cleanup_collapse", [&] {
         collapse_short_edges();
-        compact();  // the collapses' dead slots go before the flips and sweeps walk the slots
+        // The collapses' dead slots go before the flips and sweeps walk the slots; a large mesh is
+        // also renumbered in space order, as the splits appended their vertices far from their rings.
+        compact(mesh_.vertex_slots() >= kSpaceOrderSlots);
       });
       timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
       timed("cleanup_flip", [&] { flip_valences(); });

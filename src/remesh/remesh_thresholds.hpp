@@ -4,6 +4,8 @@
 // of splits and collapses, the preview's local repair and the chordal error bound's enforcement. One
 // place, so that the passes and their documentation name the same numbers.
 
+#include <cstdint>
+
 namespace isopatch::remesh_thresholds {
 
 /// A triangle is valid when its normal lies within about 72 degrees of the surface normal at each of
@@ -34,6 +36,14 @@ constexpr double kGlideAngle = 15.0;
 /// this) (degrees). 25 rather than the repair's 20: the same or lower curvature error on every surface
 /// but the torus at 2k vertices (docs/whole-surface-quality.md), and a better smallest angle.
 constexpr double kExactnessAngleFloor = 25.0;
+/// From this many vertex slots on, every round's compaction also renumbers the vertices along the
+/// space-filling curve (EditableMesh::compact_in_space_order), not only the last one: the first round's
+/// splits append about as many vertices as the raw mesh has, far in memory from their neighbours, and
+/// once the mesh outgrows the caches every pass then waits on memory. Side by side on the sphere, 2
+/// threads: at about 1M vertices 59 s -> 36.5 s (relaxation 15.1 -> 4.3 s), at 200k (genus2) 8.1-9.3 s
+/// -> 7.5-7.7 s, at 20k no change beyond the noise; below the threshold the order, and so the mesh, is
+/// the one of the rounds without it (the numbering changes which of two equally good edits comes first).
+constexpr std::uint32_t kSpaceOrderSlots = 50000;
 /// Edge length thresholds relative to the target size. The n-gon templates stretch the patch lattice
 /// (a quad patch fills 90 degrees with each 60-degree lattice wedge: 1.5 times across), so rings are
 /// anisotropic (median 1.24-1.41 on the report's surfaces) until edges beyond 4/3 h are split and edges
