@@ -42,7 +42,6 @@ PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const B
   // vertex order, so the verdict is the one the first failing vertex gives.
   std::vector<std::size_t> interior;
   std::vector<RayStart> rays;
-  std::vector<Vec3> bases;
   std::vector<char> clamped;
   for (std::size_t v = 0; v < patch.vertex_count(); ++v) {
     if (patch.tag(static_cast<int>(v)).kind != VertexTag::Kind::Interior) continue;
@@ -56,13 +55,10 @@ PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const B
     for (int k = 0; k < n; ++k)
       direction += lambda[static_cast<std::size_t>(k)] * corner_directions[static_cast<std::size_t>(k)];
     interior.push_back(v);
-    bases.push_back(base);
     clamped.push_back(outside ? 1 : 0);
     rays.push_back({base, 0.0, direction});
   }
-  std::vector<double> f_base(rays.size());
-  f.values(bases, f_base);
-  for (std::size_t k = 0; k < rays.size(); ++k) rays[k].f_start = f_base[k];
+  evaluate_starts(f, rays);
   std::vector<std::optional<RayHit>> hits;
   march_rays(f, rays, cell, march, hits);
   auto acceptable = [&](const RayHit& h, ValueGradient& vg) {
@@ -80,8 +76,8 @@ PatchVerdict project_patch(const Sampler& f, const PatchTemplate& patch, const B
       // touches along a face), an interior vertex may instead move along grad f at its base point:
       // only boundary vertices must keep to their face planes.
       ++stats.gradient_rays;
-      const Vec3 g = f.value_gradient(bases[k]).gradient;
-      hit = march_to_surface(f, bases[k], f_base[k], g, cell, march);
+      const RayStart& ray = rays[k];
+      hit = march_to_surface(f, ray.start, ray.f_start, f.value_gradient(ray.start).gradient, cell, march);
       if (!inside(hit)) return PatchVerdict::RayMissed;
       if (!acceptable(*hit, vg)) return PatchVerdict::RayAngle;
     }

@@ -19,36 +19,6 @@ double exit_distance(const Vec3& p, const Vec3& d, const Box& box) {
   return std::max(t, 0.0);
 }
 
-std::optional<RayHit> march_to_surface(const Sampler& f, const Vec3& start, double f_start,
-                                       const Vec3& direction, const Box& region,
-                                       const RayMarchSettings& settings) {
-  const double norm = direction.norm();
-  if (!(norm > 0.0)) return std::nullopt;
-  // The direction points to the positive side: from a negative start go along it, else against it.
-  const Vec3 d = (f_start < 0.0 ? 1.0 : -1.0) * direction / norm;
-  if (f_start == 0.0) return RayHit{start, d, 0.0};
-  const double diagonal = region.diagonal();
-  const Box grown{region.lo - Vec3::Constant(settings.exit_margin * diagonal),
-                  region.hi + Vec3::Constant(settings.exit_margin * diagonal)};
-  const double t_max = exit_distance(start, d, grown);
-  if (!(t_max > 0.0)) return std::nullopt;
-  const double step = t_max / settings.steps;
-  const bool start_positive = f_start >= 0.0;
-  double t_a = 0.0, f_a = f_start;
-  for (int i = 1; i <= settings.steps; ++i) {
-    const double t_b = i == settings.steps ? t_max : i * step;
-    const double f_b = f.value(start + t_b * d);
-    if ((f_b >= 0.0) != start_positive) {
-      const auto phi = [&](double t) { return f.value(start + t * d); };
-      const double t = bracketed_root(phi, t_a, f_a, t_b, f_b, settings.tolerance * diagonal);
-      return RayHit{start + t * d, d, t};
-    }
-    t_a = t_b;
-    f_a = f_b;
-  }
-  return std::nullopt;
-}
-
 namespace {
 
 /// One ray of march_rays on its way: marching in fixed steps, then refining the bracket.
@@ -123,6 +93,23 @@ void march_rays(const Sampler& f, std::span<const RayStart> rays, const Box& reg
     }
     going.resize(kept);
   }
+}
+
+void evaluate_starts(const Sampler& f, std::span<RayStart> rays) {
+  std::vector<Vec3> starts(rays.size());
+  for (std::size_t k = 0; k < rays.size(); ++k) starts[k] = rays[k].start;
+  std::vector<double> values(rays.size());
+  f.values(starts, values);
+  for (std::size_t k = 0; k < rays.size(); ++k) rays[k].f_start = values[k];
+}
+
+std::optional<RayHit> march_to_surface(const Sampler& f, const Vec3& start, double f_start,
+                                       const Vec3& direction, const Box& region,
+                                       const RayMarchSettings& settings) {
+  const RayStart ray{start, f_start, direction};
+  std::vector<std::optional<RayHit>> hit;
+  march_rays(f, std::span<const RayStart>(&ray, 1), region, settings, hit);
+  return hit[0];
 }
 
 }  // namespace isopatch

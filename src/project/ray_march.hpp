@@ -31,6 +31,7 @@ struct RayHit {
 /// \pre direction is non-zero; start lies in the grown region.
 /// \return the crossing, or nullopt when the ray leaves the region without crossing.
 /// \throw EvaluationError if f is not finite along the way.
+/// (march_rays with this one ray: one implementation of the march.)
 std::optional<RayHit> march_to_surface(const Sampler& f, const Vec3& start, double f_start,
                                        const Vec3& direction, const Box& region,
                                        const RayMarchSettings& settings = {});
@@ -42,14 +43,18 @@ struct RayStart {
   Vec3 direction;        ///< towards the positive side of f; a zero direction gives no hit
 };
 
-/// march_to_surface for many rays in one region: out[i] is exactly what march_to_surface(f,
-/// rays[i].start, rays[i].f_start, rays[i].direction, region, settings) returns (the same evaluations,
-/// bit for bit), but f is evaluated in batches (Sampler::values), one point of every ray still going
-/// per round: far cheaper per point than one value at a time (docs/algorithms.md 4.6).
+/// march_to_surface for many rays in one region: out[i] is the march of rays[i] (its first crossing
+/// of f = 0 within the grown region, or nullopt), with f evaluated in batches (Sampler::values), one
+/// point of every ray still going per round: far cheaper per point than one value at a time, and the
+/// same points, hence the same values and the same hit, as a ray marched alone (docs/algorithms.md 4.6).
 /// \pre every start lies in the grown region. \post out.size() == rays.size().
-/// 	hrow EvaluationError if f is not finite at a point some ray evaluates (the first of its batch).
+/// \throw EvaluationError if f is not finite at a point some ray evaluates (the first of its batch).
 void march_rays(const Sampler& f, std::span<const RayStart> rays, const Box& region,
                 const RayMarchSettings& settings, std::vector<std::optional<RayHit>>& out);
+
+/// Fills rays[k].f_start with f(rays[k].start), all in one batch (Sampler::values).
+/// \throw EvaluationError if f is not finite at a start.
+void evaluate_starts(const Sampler& f, std::span<RayStart> rays);
 
 /// Distance along the unit direction `d` from `p` (inside `box`) to the box boundary (slab test).
 double exit_distance(const Vec3& p, const Vec3& d, const Box& box);

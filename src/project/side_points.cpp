@@ -14,21 +14,16 @@ SidePoints sample_side(const Sampler& f, const CellCorner& from, const CellCorne
   const Box& region = face.region;
   RayMarchSettings march;
   march.steps = params.march_steps;
-  // Every sample's start and ray first, then f at the starts and the marches in batches (march_rays:
-  // the same hits as one march at a time).
+  // Every sample's start and ray first, then f at the starts and the marches in batches.
   std::vector<RayStart> rays;
-  std::vector<Vec3> starts;
   for (int j = 1; j < r; ++j) {
     const double t = static_cast<double>(j) / r;
-    const Vec3 start = (1.0 - t) * from.position + t * to.position;
     // Both corner directions are cell-edge directions of this face: the sum lies in its plane and is
     // never zero (adjacent edges are perpendicular, opposite ones point the same way).
-    starts.push_back(start);
-    rays.push_back({start, 0.0, (1.0 - t) * from.direction + t * to.direction});
+    rays.push_back(
+        {(1.0 - t) * from.position + t * to.position, 0.0, (1.0 - t) * from.direction + t * to.direction});
   }
-  std::vector<double> f_start(rays.size());
-  f.values(starts, f_start);
-  for (std::size_t k = 0; k < rays.size(); ++k) rays[k].f_start = f_start[k];
+  evaluate_starts(f, rays);
   std::vector<std::optional<RayHit>> hits;
   march_rays(f, rays, region, march, hits);
   SidePoints side;
@@ -37,7 +32,7 @@ SidePoints sample_side(const Sampler& f, const CellCorner& from, const CellCorne
     const std::optional<RayHit>& hit = hits[k];
     if (!hit) {
       side.accepted = false;
-      side.points.push_back({starts[k], f.value_gradient(starts[k]).gradient});
+      side.points.push_back({rays[k].start, f.value_gradient(rays[k].start).gradient});
       continue;
     }
     const ValueGradient vg = f.value_gradient(hit->point);

@@ -22,9 +22,10 @@ constexpr int kLocalRelaxationRounds = 3;
 /// Flips tried per neutral glide chain in the local repair's flip passes (200 in the whole-mesh rounds).
 constexpr int kLocalGlideBudget = 30;
 /// The local repair's one glide search (chains that may borrow) runs only when fewer than this share of
-/// the free vertices have valence 6 after the greedy flips: above it, the search (about 40% of the
-/// preview's time) adds a point or so of valence 6 to a mesh already clear of the floor of 90%
-/// (docs/performance.md). With the search, every public surface ends at 93% or more.
+/// the free vertices have valence 6 once the cheaper passes are done (the last flips, relaxation and
+/// repair): the search was about 40% of the preview's time. Without it the public surfaces at about 20k
+/// vertices end at 91.3-96.2%; only tanglecube (91.3%) then runs it, to 93.9% (docs/algorithms.md 5.x,
+/// the presets).
 constexpr double kLocalValenceShare = 0.92;
 /// The local repair collapses only the short edges that cells clipped near a corner leave: the patch
 /// lattices' own short edges (down to about half the size across a stretched template) are kept, or
