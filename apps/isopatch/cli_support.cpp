@@ -101,3 +101,15 @@ ConvexRegion region_argument(const std::string& text) {
 }
 
 }  // namespace isopatch::cli
+
+namespace isopatch::cli {
+
+std::size_t default_vertex_budget() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return 50'000'000;
+  const double bytes = static_cast<double>(pages) * static_cast<double>(page_size);
+  return std::max<std::size_t>(1'000'000, static_cast<std::size_t>(bytes / kBytesPerVertexBudget));
+}
+
+}  // namespace isopatch::cli

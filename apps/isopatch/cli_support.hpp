@@ -5,6 +5,7 @@
 #include <isopatch/mesh.hpp>
 #include <isopatch/surface.hpp>
 
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
@@ -35,5 +36,13 @@ ConvexRegion region_argument(const std::string& text);
 
 /// "12345" -> "12,345" style grouping for counts in summaries.
 std::string group_digits(unsigned long long n);
+
+/// Bytes of memory a mesh vertex may take at the peak of a run, with room to spare (the clean-up of a
+/// 1M-vertex mesh peaks at about 300 B per vertex; docs/performance.md).
+inline constexpr std::size_t kBytesPerVertexBudget = 1000;
+
+/// The default of --max-vertices: the machine's physical memory / kBytesPerVertexBudget (at least one
+/// million; 50 million when the memory cannot be read).
+std::size_t default_vertex_budget();
 
 }  // namespace isopatch::cli

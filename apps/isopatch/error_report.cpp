@@ -39,7 +39,7 @@ std::string flag_for_setting(const std::string& setting) {
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
   }};
-  static constexpr std::array<std::string_view, 29> kSameName{"box",
+  static constexpr std::array<std::string_view, 30> kSameName{"box",
                                                               "region",
                                                               "frame",
                                                               "colour",
@@ -57,6 +57,7 @@ std::string flag_for_setting(const std::string& setting) {
                                                               "grid",
                                                               "edge_root",
                                                               "grid_offset",
+                                                              "refine",
                                                               "valence_search",
                                                               "curvature_sweeps",
                                                               "max_evaluations",

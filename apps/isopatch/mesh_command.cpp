@@ -42,7 +42,7 @@ struct MeshOptions {
   int grid = 64;
   double grid_offset = 1e-3;
   int fair = 0;
-  std::size_t max_vertices = 0;
+  std::size_t max_vertices = default_vertex_budget();
   bool quiet = false;
   bool progress = false;
   bool fields = false;
@@ -60,6 +60,7 @@ struct MeshOptions {
   std::string base = "barycentric";
   double max_ray_angle = defaults.max_ray_angle;
   std::optional<int> remesh;
+  int refine = defaults.refine;
   int valence_search = Settings{}.valence_search;
   int curvature_sweeps = Settings{}.curvature_sweeps;
   std::uint64_t max_evaluations = 0;
@@ -109,6 +110,7 @@ int run_mesh(const MeshOptions& o) {
   settings.max_cell_curvature = o.max_cell_curvature;
   settings.max_ray_angle = o.max_ray_angle;
   settings.remesh_iterations = o.remesh;
+  settings.refine = o.refine;
   settings.valence_search = o.valence_search;
   settings.curvature_sweeps = o.curvature_sweeps;
   settings.max_evaluations = o.max_evaluations;
@@ -231,6 +233,12 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--remesh", o->remesh,
                   "Rounds of surface-bound clean-up: split, collapse, flip, relax, re-project "
                   "(default: 6 for projection, 0 for mc; 0: the paper's method alone)");
+  cmd->add_option("--refine", o->refine,
+                  "Projection: multiresolution level K, a base at K edge lengths cut into K^2 triangles per "
+                  "base triangle and put on f = 0 (0: automatic from the curvature; 1: off, the clean-up of "
+                  "the whole mesh; 2.." +
+                      std::to_string(kMaxRefineLevel) + ")")
+      ->capture_default_str();
   cmd->add_option(
          "--valence-search", o->valence_search,
          "Clean-up: flips tried per chain when pulling apart stuck 5-7 vertex pairs at the end (0.." +
@@ -255,7 +263,9 @@ Runner add_mesh_command(CLI::App& app) {
                   "Stop with an error after this many evaluations of f (0: none)");
   cmd->add_option("--time-limit", o->time_limit, "Stop with an error after this many seconds (0: none)");
   cmd->add_option("--max-vertices", o->max_vertices,
-                  "Stop with an error beyond this many vertices (0: none)");
+                  "Refuse a mesh estimated beyond this many vertices before any work, and stop beyond it "
+                  "(0: none; default: what this machine's memory holds)")
+      ->capture_default_str();
   cmd->add_flag("--vertex-roles", o->vertex_roles,
                 "Projection: store what made each vertex as the attribute 'role' (0 patch corner, 1 seam, 2 "
                 "patch interior, 3 patch centre, 4 fan centre, 5 made by the clean-up; PLY, GLB)");

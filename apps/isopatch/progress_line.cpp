@@ -39,8 +39,11 @@ void ProgressLine::draw() {
   const auto now = std::chrono::steady_clock::now();
   const double seconds = std::chrono::duration<double>(now - start_).count();
   char text[160];
-  const int n = std::snprintf(text, sizeof text, "isopatch: %s %zu/%zu %s, %.1f s", label_.c_str(),
-                              latest_.done, latest_.total, unit_.c_str(), seconds);
+  const int n = latest_.stage
+                    ? std::snprintf(text, sizeof text, "isopatch: %s %s %zu/%zu, %.1f s", label_.c_str(),
+                                    latest_.stage, latest_.done, latest_.total, seconds)
+                    : std::snprintf(text, sizeof text, "isopatch: %s %zu/%zu %s, %.1f s", label_.c_str(),
+                                    latest_.done, latest_.total, unit_.c_str(), seconds);
   const std::size_t length = n < 0 ? 0 : std::min(static_cast<std::size_t>(n), sizeof text - 1);
   // Blank what a longer previous text left behind.
   const int pad = width_ > length ? static_cast<int>(width_ - length) : 0;

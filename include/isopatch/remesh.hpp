@@ -76,6 +76,8 @@ struct RemeshSettings {
   ConvexRegion cut_planes;
   /// When set and true, stops with LimitError("cancelled") at the next check.
   const std::atomic<bool>* cancel = nullptr;
+  /// Called at the start of each round and pass with Progress::stage "cleanup"; may be empty.
+  std::function<void(const Progress&)> progress;
 };
 
 // RemeshStats, what remesh_on_surface() did, is in mesh_stats.hpp (it is also MeshStats::cleanup).

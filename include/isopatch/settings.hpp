@@ -25,6 +25,7 @@ struct Settings : SizeSettings,
                   ProjectionSettings,
                   MarchingCubesSettings,
                   CleanupSettings,
+                  RefineSettings,
                   BudgetSettings {
   Method method = Method::Projection;
   /// The region to mesh; the surface's default box when empty. Must be valid().

@@ -187,6 +187,24 @@ struct CleanupSettings {
   void validate() const;
 };
 
+/// The largest refinement level a run may ask for (RefineSettings::refine).
+inline constexpr int kMaxRefineLevel = 16;
+
+/// Multiresolution meshing (docs/algorithms.md 6): a coarse base meshed by the projection mesher and the
+/// clean-up at k times the target edge length, every base triangle then cut into k^2 triangles whose
+/// new vertices are put on f = 0 and relaxed. Projection only.
+struct RefineSettings {
+  /// The level k. 0 (default): chosen from the surface's curvature (k = 1 where a coarser base would not
+  /// resolve it, up to 8 on gently curved surfaces; 4 with max_error or a size_field, whose base is then
+  /// graded; 1 when remesh_iterations is 0, the paper's method alone). 1: no refinement (the projection
+  /// mesher and the clean-up at the target size). 2..16: that
+  /// k, halved where a refined point cannot be put safely on f = 0. 0..kMaxRefineLevel.
+  int refine = 0;
+
+  /// \throw SettingError for a level out of range.
+  void validate() const;
+};
+
 /// The most worker threads a run may ask for (BudgetSettings::threads).
 inline constexpr int kMaxThreads = 1024;
 
@@ -199,6 +217,9 @@ const char* quality_name(Quality quality);
 struct Progress {
   std::size_t done = 0;   ///< work units done (e.g. grid slabs, cells)
   std::size_t total = 0;  ///< work units in all
+  /// The stage the units belong to ("partition", "base", "cleanup", "refine", ...); null: the method's
+  /// own (grid slabs of marching cubes, partition rounds of the projection mesher).
+  const char* stage = nullptr;
 };
 
 /// What a run may spend, and how the caller follows and stops it.

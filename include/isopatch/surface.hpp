@@ -34,6 +34,10 @@ class Surface {
   virtual void values(std::span<const Vec3> points, std::span<double> out) const;
   /// f(p) and its exact gradient.
   virtual ValueGradient value_gradient(const Vec3& p) const = 0;
+  /// Batch evaluation of value and gradient together: out[i] = value_gradient(points[i]), the same
+  /// numbers bit for bit (the default loops; a surface may evaluate the batch at once).
+  /// \pre out.size() == points.size().
+  virtual void value_gradients(std::span<const Vec3> points, std::span<ValueGradient> out) const;
   /// f(p), gradient and Hessian (exact, forward-mode differentiation).
   virtual SecondOrder second_order(const Vec3& p) const = 0;
   /// A sound enclosure of f over `box` (every f(p), p in box, lies in it), or nullopt when this

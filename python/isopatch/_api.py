@@ -41,7 +41,8 @@ def _triple(value: Sequence[float], name: str) -> Point:
 
 
 # The library settings both entry points take (the command line's flags of the same names).
-_SETTINGS = ("method", "edge_length", "max_error", "quality", "threads", "remesh", "max_vertices", "time_limit")
+_SETTINGS = (
+    "method", "edge_length", "max_error", "quality", "threads", "remesh", "refine", "max_vertices", "time_limit")
 
 
 def _options(arguments: Dict[str, object], names: Sequence[str]) -> Dict[str, object]:
@@ -61,6 +62,7 @@ def mesh(
     threads: int = 0,
     method: str = "projection",
     remesh: Optional[int] = None,
+    refine: int = 0,
     resolution: Optional[int] = None,
     grid: Optional[int] = None,
     max_vertices: int = 0,
@@ -80,8 +82,9 @@ def mesh(
         without it, gradients come from central differences (step 6e-6 of the box diagonal).
     params: values overriding a formula's definitions (``{'r': 0.3}``).
     edge_length, max_error, quality ('preview' | 'default' | 'fine'), threads (0: every core), method
-        ('projection' | 'mc'), remesh, resolution, grid, max_vertices, max_evaluations, time_limit: the
-        library's settings, as the command line's flags of the same names.
+        ('projection' | 'mc'), remesh, refine (0: automatic multiresolution level, 1: off, 2..16: that
+        level), resolution, grid, max_vertices, max_evaluations, time_limit: the library's settings, as
+        the command line's flags of the same names.
     samples, batch: Python functions only. The function is called in batches of at most ``batch``
         points: first on a grid of ``samples`` cells along the box's longest side (default: two per
         target edge, 64..256), whose tricubic B-spline interpolant is meshed, then for a few batched
@@ -121,6 +124,7 @@ def mesh_volume(
     threads: int = 0,
     method: str = "projection",
     remesh: Optional[int] = None,
+    refine: int = 0,
     max_vertices: int = 0,
     time_limit: float = 0.0,
 ) -> Mesh:

@@ -50,6 +50,8 @@ void set_option(Settings& s, const std::string& key, const py::handle& value) {
     s.threads = value.cast<int>();
   else if (key == "remesh")
     s.remesh_iterations = value.cast<int>();
+  else if (key == "refine")
+    s.refine = value.cast<int>();
   else if (key == "resolution")
     s.resolution = value.cast<int>();
   else if (key == "grid")

@@ -21,6 +21,11 @@ ValueGradient BudgetedSurface::value_gradient(const Vec3& p) const {
   return inner_.value_gradient(p);
 }
 
+void BudgetedSurface::value_gradients(std::span<const Vec3> points, std::span<ValueGradient> out) const {
+  charge(points.size());
+  inner_.value_gradients(points, out);
+}
+
 SecondOrder BudgetedSurface::second_order(const Vec3& p) const {
   charge(1);
   return inner_.second_order(p);

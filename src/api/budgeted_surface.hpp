@@ -21,6 +21,7 @@ class BudgetedSurface final : public Surface {
   double value(const Vec3& p) const override;
   void values(std::span<const Vec3> points, std::span<double> out) const override;
   ValueGradient value_gradient(const Vec3& p) const override;
+  void value_gradients(std::span<const Vec3> points, std::span<ValueGradient> out) const override;
   SecondOrder second_order(const Vec3& p) const override;
   std::optional<Interval> bound(const Box& box) const override;
   std::optional<IntervalGradient> gradient_bound(const Box& box) const override;

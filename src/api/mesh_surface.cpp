@@ -14,6 +14,8 @@
 
 #include "api/budgeted_surface.hpp"
 #include "api/frame_meshing.hpp"
+#include "api/multiresolution.hpp"
+#include "api/size_estimate.hpp"
 #include "project/convex_meshing.hpp"
 #include "remesh/remesh_presets.hpp"
 #include "surface/singular_level_set.hpp"
@@ -110,6 +112,14 @@ Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats
       return mesh;
     }
     case Method::Projection: {
+      check_estimated_size(surface, settings, box);
+      // The automatic level leaves the paper's method alone (remesh_iterations = 0) unrefined.
+      if (settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0))
+        return mesh_multiresolution(surface, settings, stats, [&surface](const Settings& s, MeshStats* st) {
+          Mesh level = mesh_projection(surface, s, st);
+          clean_up(level, surface, s, st);
+          return level;
+        });
       Mesh mesh = mesh_projection(surface, settings, stats);
       clean_up(mesh, surface, settings, stats);
       return mesh;

@@ -90,6 +90,20 @@ void visit_stats(
     v("remesh_exactness_moves", count(c->exactness_moves));
     v("hessian_evaluations", count(c->hessian_evaluations));
   }
+  if (const auto& r = stats.refine) {
+    const auto v = [&](std::string_view name, double value) { visit("refine", name, value); };
+    v("level", r->level);
+    v("attempts", r->attempts);
+    v("target_edge", r->target_edge);
+    v("largest_curvature", r->largest_curvature);
+    v("base_vertices", count(r->base_vertices));
+    v("base_triangles", count(r->base_triangles));
+    v("failed_points", count(r->failed_points));
+    v("rejected_moves", count(r->rejected_moves));
+    v("angle_vertices", count(r->angle_vertices));
+    v("smallest_angle", r->smallest_angle);
+    v("gradient_evaluations", count(r->gradient_evaluations));
+  }
   const MeshWarnings& w = stats.warnings;
   const auto v = [&](std::string_view name, double value) { visit("warnings", name, value); };
   if (stats.projection) {

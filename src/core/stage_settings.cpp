@@ -103,9 +103,15 @@ void BudgetSettings::check_vertices(std::size_t vertices) const {
                      "max_vertices");
 }
 
+void RefineSettings::validate() const {
+  if (refine < 0 || refine > kMaxRefineLevel)
+    throw SettingError("refine", "must be 0.." + std::to_string(kMaxRefineLevel) + " (0: automatic, 1: off)");
+}
+
 void Settings::validate() const {
   SizeSettings::validate();
   OctreeSettings::validate();
+  RefineSettings::validate();
   PatchSettings::validate();
   ProjectionSettings::validate();
   MarchingCubesSettings::validate();

@@ -45,7 +45,9 @@ class Remesher {
     if (settings_.local_only) return run_local();
     find_sliding_vertices();
     timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
+    const std::size_t steps = static_cast<std::size_t>(settings_.iterations) + 2;
     for (int it = 0; it < settings_.iterations; ++it) {
+      report(static_cast<std::size_t>(it), steps);
       timed("cleanup_split", [&] { split_long_edges(); });
       timed("cleanup_sizes", [&] { sizes_.update(mesh_); });
       timed("cleanup_collapse", [&] {
@@ -77,6 +79,7 @@ class Remesher {
     // connectivity is final, so the vertices are renumbered along a space-filling curve: each sweep
     // then reads the mesh mostly in memory order (on a 1M-vertex sphere the sweeps took half the time).
     compact(true);
+    report(steps - 2, steps);
     if (settings_.curvature_sweeps > 0) {
       const ExactnessMoveRules rules{
           .project = [this](Vec3& p, Vec3& n, double max_step) { return project(p, n, max_step); },
@@ -89,6 +92,7 @@ class Remesher {
         stats_.exactness_moves = improve_laplacian_exactness(mesh_, rules, settings_.curvature_sweeps);
       });
     }
+    report(steps - 1, steps);
     timed("cleanup_repair", [&] { repair_until_settled(); });
     if (settings_.sizes.max_error)
       timed("cleanup_error_bound", [&] { stats_.error_bound_violations = enforce_error_bound(); });
@@ -150,6 +154,11 @@ class Remesher {
   std::invoke_result_t<Pass> timed(const char* name, Pass pass) {
     const StageTimer timer(&stats_.times, name);
     return pass();
+  }
+
+  /// Reports `done` of `total` clean-up steps through settings.progress (stage "cleanup").
+  void report(std::size_t done, std::size_t total) const {
+    if (settings_.progress) settings_.progress(Progress{done, total, "cleanup"});
   }
 
   void check_cancel() const {

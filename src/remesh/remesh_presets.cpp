@@ -24,6 +24,7 @@ RemeshSettings preset_remesh_settings(const Settings& s, int iterations) {
       break;
   }
   r.cancel = s.cancel;
+  r.progress = s.progress;
   return r;
 }
 

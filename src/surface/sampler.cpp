@@ -52,6 +52,16 @@ ValueGradient Sampler::value_gradient(const Vec3& p) const {
   return vg;
 }
 
+void Sampler::value_gradients(std::span<const Vec3> points, std::span<ValueGradient> out) const {
+  gradients_.add(points.size());
+  surface_.value_gradients(points, out);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!std::isfinite(out[i].value)) throw_not_finite("f", out[i].value, points[i]);
+    for (int a = 0; a < 3; ++a)
+      if (!std::isfinite(out[i].gradient[a])) throw_not_finite("grad f", out[i].gradient[a], points[i]);
+  }
+}
+
 ValueGradient Sampler::value_gradient_unchecked(const Vec3& p) const {
   gradients_.add();
   return surface_.value_gradient(p);

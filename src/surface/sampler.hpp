@@ -43,6 +43,10 @@ class Sampler {
   void values(std::span<const Vec3> points, std::span<double> out) const;
   /// f(p) and grad f(p). \throw EvaluationError if either is not finite.
   ValueGradient value_gradient(const Vec3& p) const;
+  /// out[i] = value_gradient(points[i]) through Surface::value_gradients (one batch, the same numbers).
+  /// \pre out.size() == points.size().
+  /// \throw EvaluationError naming the first point whose value or gradient is not finite.
+  void value_gradients(std::span<const Vec3> points, std::span<ValueGradient> out) const;
   /// f(p) and grad f(p), counted but not checked: either may be NaN or infinite.
   ValueGradient value_gradient_unchecked(const Vec3& p) const;
 

@@ -12,12 +12,11 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <map>
 #include <set>
 #include <string>
-#include <utility>
 #include <vector>
 
+#include "mesh_checks.hpp"
 #include "self_intersection.hpp"
 
 namespace isopatch {
@@ -122,16 +121,7 @@ TEST(Frame, SurfacesCutByTheirBoxInRotatedFramesAreAsGoodAsUnrotated) {
       EXPECT_GE(q.shape.min_angle.min, 10.0);
       EXPECT_LE(q.accuracy->vertex_distance.max, 1e-10 * c.box.diagonal());
       // Boundary vertices on a face of the box; triangles away from them keep the unclipped quality.
-      std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-      for (const Triangle& tri : mesh.triangles)
-        for (int i = 0; i < 3; ++i) {
-          const std::uint32_t a = tri[static_cast<std::size_t>(i)],
-                              b = tri[static_cast<std::size_t>((i + 1) % 3)];
-          ++uses[{std::min(a, b), std::max(a, b)}];
-        }
-      std::set<std::uint32_t> boundary;
-      for (const auto& [edge, n] : uses)
-        if (n == 1) boundary.insert({edge.first, edge.second});
+      const std::set<std::uint32_t> boundary = test::boundary_vertices(mesh);
       const double tol = 1e-12 * c.box.diagonal();
       for (std::uint32_t v : boundary) {
         const Vec3& p = mesh.positions[v];

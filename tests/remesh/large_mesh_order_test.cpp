@@ -14,8 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <utility>
+#include <set>
 
 #include "surface_mesh_expectations.hpp"
 #include "test_surfaces.hpp"
@@ -56,30 +55,20 @@ TEST(LargeMeshOrder, VerticesOnTheBoxFacesStayOnThem) {
   EXPECT_TRUE(t.manifold() && t.consistently_oriented());
   EXPECT_FALSE(t.watertight());
   // Every vertex of a boundary edge (an edge of one triangle) lies on a face of the box, most on the cut.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-  for (const Triangle& tri : one.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t a = tri[static_cast<std::size_t>(k)],
-                          b = tri[static_cast<std::size_t>((k + 1) % 3)];
-      ++uses[{std::min(a, b), std::max(a, b)}];
-    }
   const Box& box = *settings.box;
   const auto on_a_face = [&](const Vec3& p) {
     for (int a = 0; a < 3; ++a)
       if (std::abs(p[a] - box.lo[a]) < 1e-9 || std::abs(p[a] - box.hi[a]) < 1e-9) return true;
     return false;
   };
-  std::size_t boundary = 0, on_cut = 0;
-  for (const auto& [edge, count] : uses) {
-    if (count != 1) continue;
-    for (const std::uint32_t v : {edge.first, edge.second}) {
-      ++boundary;
-      EXPECT_TRUE(on_a_face(one.positions[v])) << "vertex " << v;
-      if (std::abs(one.positions[v].z() - 0.5) < 1e-12) ++on_cut;
-    }
+  const std::set<std::uint32_t> boundary = test::boundary_vertices(one);
+  std::size_t on_cut = 0;
+  for (const std::uint32_t v : boundary) {
+    EXPECT_TRUE(on_a_face(one.positions[v])) << "vertex " << v;
+    if (std::abs(one.positions[v].z() - 0.5) < 1e-12) ++on_cut;
   }
-  EXPECT_GT(boundary, 200u);
-  EXPECT_GT(on_cut, boundary / 2);
+  EXPECT_GT(boundary.size(), 200u);
+  EXPECT_GT(on_cut, boundary.size() / 2);
   const Mesh two = mesh_with_threads(*s, settings, 2);
   EXPECT_EQ(one.positions, two.positions);
   EXPECT_EQ(one.triangles, two.triangles);

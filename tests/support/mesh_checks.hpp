@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <numbers>
 #include <set>
 #include <utility>
@@ -21,6 +23,21 @@ inline double max_vertex_distance(const Surface& s, const Mesh& mesh) {
     worst = std::max(worst, std::abs(vg.value) / vg.gradient.norm());
   }
   return worst;
+}
+
+/// The vertices of the boundary edges (edges of exactly one triangle), ascending.
+inline std::set<std::uint32_t> boundary_vertices(const Mesh& mesh) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const Triangle& tri : mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t a = tri[static_cast<std::size_t>(i)],
+                          b = tri[static_cast<std::size_t>((i + 1) % 3)];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  std::set<std::uint32_t> boundary;
+  for (const auto& [edge, n] : uses)
+    if (n == 1) boundary.insert({edge.first, edge.second});
+  return boundary;
 }
 
 /// Number of distinct neighbours of every vertex.

@@ -1,0 +1,166 @@
+// Multiresolution meshing: a base at k times the target size, refined k times (multiresolution.hpp).
+#include "api/multiresolution.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "refine/refine_mesh.hpp"
+#include "refine/refinement_level.hpp"
+
+namespace isopatch {
+namespace {
+
+/// What each quality preset asks of the refinement (docs/algorithms.md 6.4):
+///   max_level     the automatic level's ceiling;
+///   max_turn      the normal turn across a base edge the automatic level allows (radians, H kappa);
+///   min_base      the fewest base vertices the automatic level keeps (a base of a few hundred vertices
+///                 resolves too little: on the torus at 8k output vertices a 130-vertex base left twice
+///                 today's curvature error, a 1000-vertex one 0.6 times it);
+///   sweeps        relaxation sweeps over the whole refined mesh;
+///   angle_sweeps  sweeps over the vertices near triangles under angle_target degrees.
+struct RefinePreset {
+  int max_level;
+  double max_turn;
+  double min_base;
+  int sweeps;
+  int angle_sweeps;
+  double angle_target;
+};
+
+RefinePreset refine_preset(Quality quality) {
+  switch (quality) {
+    case Quality::Preview:
+      return {8, 1.2, 300.0, 1, 2, 25.0};
+    case Quality::Default:
+      return {8, 0.8, 1000.0, 2, 4, 30.0};
+    case Quality::Fine:
+      // A finer base (its clean-up's curvature sweeps cover more of the output) and more relaxation.
+      return {8, 0.5, 2000.0, 4, 8, 30.0};
+  }
+  return {1, 0.0, 0.0, 0, 0, 0.0};
+}
+
+/// The automatic level with max_error or a size_field: the base is graded (sizes k times the output's)
+/// and the level fixed.
+constexpr int kGradedLevel = 4;
+/// An automatic level whose refined mesh keeps a triangle under this smallest angle (degrees) is halved:
+/// the base was too coarse somewhere for its curvature.
+constexpr double kAngleFloor = 20.0;
+
+/// The settings of a base at `level` times the target sizes.
+Settings base_settings(const Settings& settings, double edge, int level) {
+  Settings s = settings;
+  s.refine = 1;
+  s.edge_length = edge * level;
+  if (settings.max_error) s.max_error = *settings.max_error * level * level;  // chordal error ~ h^2
+  if (settings.size_field)
+    s.size_field = [field = settings.size_field, level](const Vec3& p) { return level * field(p); };
+  return s;
+}
+
+/// Adds the evaluations and stage times of `from` to `into`.
+void add_costs(MeshStats& into, const MeshStats& from) {
+  into.value_evaluations += from.value_evaluations;
+  into.gradient_evaluations += from.gradient_evaluations;
+  into.times.merge(from.times);
+}
+
+}  // namespace
+
+Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
+                          const LevelMesher& mesh_level) {
+  const auto start = std::chrono::steady_clock::now();
+  const Box box = settings.box.value_or(surface.box());
+  const double edge = default_edge_length(settings, box);
+  const bool graded = settings.max_error.has_value() || static_cast<bool>(settings.size_field);
+  const RefinePreset preset = refine_preset(settings.quality);
+  const bool automatic = settings.refine == 0;
+  int level = !automatic ? settings.refine : graded ? kGradedLevel : preset.max_level;
+
+  RefineStats info;
+  info.target_edge = edge;
+  MeshStats spent;       // every attempt's evaluations and times
+  MeshStats base_stats;  // the last base's
+  Mesh base;
+  const auto mesh_base = [&](int k) {
+    base_stats = MeshStats{};
+    base = mesh_level(base_settings(settings, edge, k), &base_stats);
+    add_costs(spent, base_stats);
+    ++info.attempts;
+  };
+  const auto finish = [&](Mesh mesh, const MeshStats& last) {
+    if (stats) {
+      *stats = last;
+      stats->value_evaluations = spent.value_evaluations;
+      stats->gradient_evaluations = spent.gradient_evaluations;
+      stats->times = spent.times;
+      stats->vertices = mesh.vertex_count();
+      stats->triangles = mesh.triangle_count();
+      stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      stats->refine = info;
+    }
+    return mesh;
+  };
+
+  if (level > 1) {
+    mesh_base(level);
+    if (automatic && !graded) {
+      info.largest_curvature = refine::largest_curvature(base, surface);
+      int resolved = refine::level_for_curvature(info.largest_curvature, edge, preset.max_turn, level);
+      // About base_vertices * level^2 output vertices: the level that leaves min_base in the base.
+      const double base_vertices = static_cast<double>(base.vertex_count());
+      if (base_vertices < preset.min_base)
+        resolved = std::min(resolved, std::max(1, static_cast<int>(level * std::sqrt(base_vertices / preset.min_base))));
+      if (resolved < level) {
+        level = resolved;
+        if (level > 1) mesh_base(level);
+      }
+    }
+  }
+  while (level > 1) {
+    refine::RefineParams params;
+    params.level = level;
+    params.sweeps = preset.sweeps;
+    params.angle_sweeps = preset.angle_sweeps;
+    params.angle_target = preset.angle_target;
+    params.box = box;
+    params.region = settings.region;
+    params.max_vertices = settings.max_vertices;
+    params.cancel = settings.cancel;
+    params.progress = settings.progress;
+    const auto refine_start = std::chrono::steady_clock::now();
+    refine::RefineResult refined = refine::refine_mesh(base, surface, params);
+    spent.gradient_evaluations += refined.gradient_evaluations;
+    spent.times.add("refine",
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - refine_start).count());
+    const bool kept = refined.failed_points == 0 && (!automatic || refined.smallest_angle >= kAngleFloor);
+    if (kept) {
+      info.level = level;
+      info.base_vertices = base.vertex_count();
+      info.base_triangles = base.triangle_count();
+      info.rejected_moves = refined.rejected_moves;
+      info.angle_vertices = refined.angle_vertices;
+      info.smallest_angle = refined.smallest_angle;
+      info.gradient_evaluations = refined.gradient_evaluations;
+      return finish(std::move(refined.mesh), base_stats);
+    }
+    info.failed_points += refined.failed_points;
+    level /= 2;
+    if (level > 1) mesh_base(level);
+  }
+  // Level 1: the projection mesher and the clean-up at the target sizes themselves.
+  Settings single = settings;
+  single.refine = 1;
+  MeshStats last;
+  Mesh mesh = mesh_level(single, &last);
+  add_costs(spent, last);
+  ++info.attempts;
+  info.level = 1;
+  info.base_vertices = mesh.vertex_count();
+  info.base_triangles = mesh.triangle_count();
+  return finish(std::move(mesh), last);
+}
+
+}  // namespace isopatch

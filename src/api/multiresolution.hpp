@@ -1,0 +1,25 @@
+#pragma once
+// Multiresolution meshing (RefineSettings, docs/algorithms.md 6): the projection mesher and the
+// clean-up make a coarse base at k times the target edge length; src/refine cuts every base triangle
+// into k^2 triangles on f = 0. The level follows the surface's curvature, and drops (down to 1, the
+// projection mesher and the clean-up at the target size) where a refinement fails its guard.
+
+#include <isopatch/mesh.hpp>
+#include <isopatch/settings.hpp>
+#include <isopatch/surface.hpp>
+
+#include <functional>
+
+namespace isopatch {
+
+/// Meshes `surface` with `settings` at one level: the projection mesher and the clean-up.
+using LevelMesher = std::function<Mesh(const Settings&, MeshStats*)>;
+
+/// The multiresolution mesh of `surface` (settings.refine != 1, projection). `mesh_level` meshes the
+/// bases (and the output itself when the level ends at 1); stats, when given, are those of the final
+/// base with the evaluations and times of every attempt added and MeshStats::refine filled.
+/// \throw as mesh_surface(): SettingError, LimitError (budgets, cancel, max_vertices), EvaluationError.
+Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
+                          const LevelMesher& mesh_level);
+
+}  // namespace isopatch

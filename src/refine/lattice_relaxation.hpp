@@ -1,0 +1,65 @@
+#pragma once
+// Relaxation of a refined mesh on f = 0: Jacobi sweeps of tangential uniform-Laplacian moves (each
+// free vertex moved part of the way to the centroid of its ring, within its tangent plane), every moved
+// vertex put back on f = 0 by Newton steps; a vertex on a cut boundary slides along the curve where its
+// plane meets f = 0 towards the midpoint of its two neighbours on that curve. A sweep reads only the
+// positions before it, so the result does not depend on the order or the threads (Jacobi rather than
+// Gauss-Seidel). A move is undone when its projection fails or when it leaves a triangle turned away
+// from the surface (the same validity test as the clean-up: the triangle's normal within about 72
+// degrees of the surface normal at each corner).
+
+#include <isopatch/mesh.hpp>
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "refine/base_edges.hpp"
+#include "refine/batched_newton.hpp"
+#include "refine/lattice_layout.hpp"
+#include "refine/vertex_rings.hpp"
+
+namespace isopatch::refine {
+
+/// How a vertex may move.
+enum class Motion : std::uint8_t { Free, Slides, Locked };
+
+/// Share of the way to the ring centroid that one sweep moves a free vertex (a full step oscillates on
+/// a regular lattice; half of it smooths the lattice's longest wavelengths fastest without).
+inline constexpr double kRelaxationStep = 0.5;
+
+class LatticeRelaxation {
+ public:
+  /// \param mesh        the refined mesh, every vertex on f = 0; positions are moved in place
+  /// \param normals     unit grad f at every vertex (kept up to date)
+  /// \param motion      per vertex
+  /// \param edge_plane  per base edge: the cut plane its points slide on (boundary edges), or -1
+  /// \param limits      the Newton limits of every re-projection
+  LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& normals, const std::vector<Motion>& motion,
+                    const LatticeLayout& layout, const BaseEdges& edges, const std::vector<int>& edge_plane,
+                    const Sampler& f, const BoundaryPlanes& planes, const NewtonLimits& limits);
+
+  /// One sweep over every vertex that may move, or only over those with (*subset)[v] set.
+  /// Returns the moves undone.
+  std::size_t sweep(const std::vector<std::uint8_t>* subset = nullptr);
+
+ private:
+  /// The target of vertex v before projection, or false when v does not move.
+  bool target(std::uint32_t v, Vec3& to, int& plane) const;
+
+  Mesh& mesh_;
+  std::vector<Eigen::Vector3f>& normals_;
+  const std::vector<Motion>& motion_;
+  const LatticeLayout& layout_;
+  const BaseEdges& edges_;
+  const std::vector<int>& edge_plane_;
+  const Sampler& f_;
+  const BoundaryPlanes& planes_;
+  NewtonLimits limits_;
+  VertexRings rings_;
+};
+
+/// Smallest angle of triangle t of `mesh`, in degrees (0 for a degenerate triangle).
+double smallest_angle_degrees(const Mesh& mesh, const Triangle& t);
+
+}  // namespace isopatch::refine

@@ -1,0 +1,246 @@
+// The refinement stage (refine_mesh.hpp).
+#include "refine/refine_mesh.hpp"
+
+#include <isopatch/error.hpp>
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "refine/base_edges.hpp"
+#include "refine/batched_newton.hpp"
+#include "refine/boundary_planes.hpp"
+#include "refine/lattice_layout.hpp"
+#include "refine/lattice_relaxation.hpp"
+#include "refine/start_points.hpp"
+#include "surface/sampler.hpp"
+
+namespace isopatch::refine {
+namespace {
+
+/// Base edges, or base triangles, per task.
+constexpr std::size_t kEdgesPerTask = 512;
+constexpr std::size_t kTrianglesPerTask = 128;
+/// A new point may land at most this share of its base edge (or its base triangle's longest edge) from
+/// its start: further, it went to another part of the surface.
+constexpr double kMaxMoveShare = 0.5;
+/// The role value of a vertex made by the refinement (0-5 are the projection mesher's and the clean-up's).
+constexpr float kRefinementRole = 6.0f;
+/// Landing tolerance relative to the base's bounding-box diagonal (the clean-up's own).
+constexpr double kRelativeTolerance = 1e-13;
+/// The validity of a refined triangle: its normal within about 72 degrees of the surface normal at each
+/// corner (the clean-up's test).
+constexpr double kMinNormalDot = 0.3;
+
+void check_cancel(const RefineParams& p) {
+  if (p.cancel && p.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled", "cancel");
+}
+
+void report(const RefineParams& p, std::size_t done, std::size_t total) {
+  if (p.progress) p.progress(Progress{done, total, "refine"});
+}
+
+Vec3 unit_or_zero(const Vec3& v) {
+  const double n = v.norm();
+  return n > 0.0 ? Vec3(v / n) : Vec3(Vec3::Zero());
+}
+
+/// The number of triangles of `mesh` that turn away from the surface normals at their corners.
+std::size_t turned_triangles(const Mesh& mesh, const std::vector<Eigen::Vector3f>& normals) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), 4096), std::size_t{0},
+      [&](const tbb::blocked_range<std::size_t>& r, std::size_t count) {
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          const Triangle& tri = mesh.triangles[t];
+          const Vec3 n = (mesh.positions[tri[1]] - mesh.positions[tri[0]])
+                             .cross(mesh.positions[tri[2]] - mesh.positions[tri[0]]);
+          const double length = n.norm();
+          bool valid = length > 0.0;
+          for (int c = 0; c < 3 && valid; ++c)
+            valid = n.dot(normals[tri[static_cast<std::size_t>(c)]].cast<double>()) > kMinNormalDot * length;
+          if (!valid) ++count;
+        }
+        return count;
+      },
+      std::plus<>());
+}
+
+double smallest_angle(const Mesh& mesh) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), 4096), 180.0,
+      [&](const tbb::blocked_range<std::size_t>& r, double least) {
+        for (std::size_t t = r.begin(); t != r.end(); ++t)
+          least = std::min(least, smallest_angle_degrees(mesh, mesh.triangles[t]));
+        return least;
+      },
+      [](double a, double b) { return std::min(a, b); });
+}
+
+/// The vertices of the triangles under `angle` degrees and of every triangle touching one of them.
+std::vector<std::uint8_t> near_small_angles(const Mesh& mesh, double angle) {
+  std::vector<std::uint8_t> seed(mesh.vertex_count(), 0), marked(mesh.vertex_count(), 0);
+  for (const Triangle& t : mesh.triangles)
+    if (smallest_angle_degrees(mesh, t) < angle)
+      for (std::uint32_t v : t) seed[v] = 1;
+  for (const Triangle& t : mesh.triangles)
+    if (seed[t[0]] || seed[t[1]] || seed[t[2]])
+      for (std::uint32_t v : t) marked[v] = 1;
+  return marked;
+}
+
+}  // namespace
+
+RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineParams& params) {
+  if (params.level < 1 || params.level > kMaxLevel)
+    throw SettingError("refine", "the refinement level must be 1.." + std::to_string(kMaxLevel));
+  const BaseEdges edges = base_edges(base);
+  const LatticeLayout layout(base, edges, params.level);
+  if (params.max_vertices > 0 && layout.vertex_count() > params.max_vertices)
+    throw LimitError("the refined mesh would have " + std::to_string(layout.vertex_count()) +
+                         " vertices, more than the vertex budget of " + std::to_string(params.max_vertices),
+                     "max_vertices");
+  const int k = params.level;
+  const Sampler f(surface);
+  const double tolerance = kRelativeTolerance * std::max(bounding_box(base).diagonal(), 1e-300);
+  const NewtonLimits limits{tolerance, 12, 0.5};
+  const BoundaryPlanes planes(params.box, params.region, 1e-9 * std::max(bounding_box(base).diagonal(), 1e-300));
+  const std::size_t total_work = layout.vertex_count() * static_cast<std::size_t>(1 + params.sweeps);
+  report(params, 0, total_work);
+
+  RefineResult result;
+  Mesh& mesh = result.mesh;
+  mesh.positions.resize(layout.vertex_count());
+  std::vector<Eigen::Vector3f> normals(layout.vertex_count());
+  std::vector<Motion> motion(layout.vertex_count(), Motion::Free);
+
+  // Base vertices: their unit normals (one batch) and whether the cut holds them.
+  std::vector<Vec3> base_normal(base.vertex_count());
+  {
+    std::vector<ValueGradient> vg(base.vertex_count());
+    f.value_gradients(base.positions, vg);
+    for (std::size_t v = 0; v < base.vertex_count(); ++v) {
+      base_normal[v] = unit_or_zero(vg[v].gradient);
+      mesh.positions[v] = base.positions[v];
+      normals[v] = base_normal[v].cast<float>();
+    }
+  }
+  std::vector<int> edge_plane(edges.size(), -1);
+  for (std::uint32_t e = 0; e < edges.size(); ++e) {
+    if (!edges.boundary(e)) continue;
+    const auto [a, b] = edges.ends[e];
+    motion[a] = motion[b] = Motion::Locked;
+    edge_plane[e] = planes.common(base.positions[a], base.positions[b]);
+    const Motion points = edge_plane[e] >= 0 ? Motion::Slides : Motion::Locked;
+    for (int j = 1; j < k; ++j) motion[layout.edge_point(e, j)] = points;
+  }
+
+  // Points on base edges, then inside base triangles; each lands on its own (batched_newton.hpp).
+  tbb::combinable<std::size_t> failures([] { return std::size_t{0}; });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, k > 1 ? edges.size() : 0, kEdgesPerTask),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      check_cancel(params);
+                      std::vector<NewtonPoint> points;
+                      points.reserve(r.size() * static_cast<std::size_t>(k - 1));
+                      for (std::size_t e = r.begin(); e != r.end(); ++e) {
+                        const auto [a, b] = edges.ends[e];
+                        const Vec3 &pa = base.positions[a], &pb = base.positions[b];
+                        const double length = (pb - pa).norm();
+                        for (int j = 1; j < k; ++j) {
+                          const double s = static_cast<double>(j) / k;
+                          NewtonPoint p;
+                          p.position = phong_edge_point(pa, base_normal[a], pb, base_normal[b], s);
+                          p.expected_normal = unit_or_zero((1.0 - s) * base_normal[a] + s * base_normal[b]);
+                          p.max_move = kMaxMoveShare * length;
+                          p.plane = edge_plane[e];
+                          points.push_back(p);
+                        }
+                      }
+                      land_on_surface(f, planes, points, limits);
+                      std::size_t i = 0;
+                      for (std::size_t e = r.begin(); e != r.end(); ++e)
+                        for (int j = 1; j < k; ++j, ++i) {
+                          const std::uint32_t v = layout.edge_point(static_cast<std::uint32_t>(e), j);
+                          mesh.positions[v] = points[i].position;
+                          normals[v] = points[i].normal.cast<float>();
+                          if (points[i].landing != Landing::Ok) ++failures.local();
+                        }
+                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, layout.inner_per_triangle() > 0 ? base.triangle_count() : 0,
+                                      kTrianglesPerTask),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        check_cancel(params);
+        std::vector<NewtonPoint> points;
+        points.reserve(r.size() * layout.inner_per_triangle());
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          const Triangle& tri = base.triangles[t];
+          const Vec3 corner[3] = {base.positions[tri[0]], base.positions[tri[1]], base.positions[tri[2]]};
+          const Vec3 normal[3] = {base_normal[tri[0]], base_normal[tri[1]], base_normal[tri[2]]};
+          const double longest = std::max({(corner[1] - corner[0]).norm(), (corner[2] - corner[1]).norm(),
+                                           (corner[0] - corner[2]).norm()});
+          for (int j = 1; j + 1 < k; ++j)
+            for (int i = 1; i + j < k; ++i) {
+              const double w[3] = {static_cast<double>(k - i - j) / k, static_cast<double>(i) / k,
+                                   static_cast<double>(j) / k};
+              NewtonPoint p;
+              p.position = phong_point(corner, normal, w);
+              p.expected_normal = unit_or_zero(w[0] * normal[0] + w[1] * normal[1] + w[2] * normal[2]);
+              p.max_move = kMaxMoveShare * longest;
+              points.push_back(p);
+            }
+        }
+        land_on_surface(f, planes, points, limits);
+        std::size_t i = 0;
+        for (std::size_t t = r.begin(); t != r.end(); ++t)
+          for (std::size_t m = 0; m < layout.inner_per_triangle(); ++m, ++i) {
+            const std::size_t v = layout.inner_start(t) + m;
+            mesh.positions[v] = points[i].position;
+            normals[v] = points[i].normal.cast<float>();
+            if (points[i].landing != Landing::Ok) ++failures.local();
+          }
+      });
+  result.failed_points = failures.combine(std::plus<>());
+  mesh.triangles.resize(layout.triangle_count());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, base.triangle_count(), kTrianglesPerTask),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t t = r.begin(); t != r.end(); ++t)
+                        layout.emit_triangles(t, mesh.triangles.data() + t * static_cast<std::size_t>(k * k));
+                    });
+  if (result.failed_points == 0) result.failed_points = turned_triangles(mesh, normals);
+  if (result.failed_points > 0) {
+    result.gradient_evaluations = f.gradient_count();
+    result.mesh = Mesh{};
+    return result;
+  }
+  report(params, layout.vertex_count(), total_work);
+
+  LatticeRelaxation relaxation(mesh, normals, motion, layout, edges, edge_plane, f, planes, limits);
+  for (int s = 0; s < params.sweeps; ++s) {
+    check_cancel(params);
+    result.rejected_moves += relaxation.sweep();
+    report(params, layout.vertex_count() * static_cast<std::size_t>(2 + s), total_work);
+  }
+  if (params.angle_sweeps > 0) {
+    const std::vector<std::uint8_t> near = near_small_angles(mesh, params.angle_target);
+    result.angle_vertices = static_cast<std::size_t>(std::count(near.begin(), near.end(), std::uint8_t{1}));
+    for (int s = 0; s < params.angle_sweeps && result.angle_vertices > 0; ++s) {
+      check_cancel(params);
+      result.rejected_moves += relaxation.sweep(&near);
+    }
+  }
+  result.smallest_angle = smallest_angle(mesh);
+  if (const std::vector<float>* role = base.find_attribute("role")) {
+    std::vector<float> roles(mesh.vertex_count(), kRefinementRole);
+    std::copy(role->begin(), role->end(), roles.begin());
+    mesh.set_attribute("role", std::move(roles));
+  }
+  result.gradient_evaluations = f.gradient_count();
+  return result;
+}
+
+}  // namespace isopatch::refine

@@ -1,0 +1,62 @@
+#pragma once
+// The refinement stage of multiresolution meshing: a base mesh of f = 0 (a coarse mesh of good
+// quality) cut regularly, every base triangle into k^2 triangles, the new vertices put on f = 0 and
+// the lattice relaxed a little. Every vertex the refinement adds has valence 6, so the output is as
+// regular as the base is, k^2 times over (the idea of semi-regular meshes, Lee et al. 2000 "Displaced
+// subdivision surfaces", Guskov et al. 2000 "Normal meshes", and of Velho's 1996 "Simple and efficient
+// polygonization of implicit surfaces", which subdivides a coarse polygonization and projects it).
+//
+// The steps, each parallel over blocks and each giving the same bytes for any thread count:
+//  1. the base's edges numbered (base_edges.hpp) and the output laid out (lattice_layout.hpp): a point
+//     on a base edge is made from that edge alone, so the mesh is watertight without welding;
+//  2. every new point started on the Phong tessellation of the base (start_points.hpp) and put on f = 0
+//     by batched Newton steps (batched_newton.hpp); a point on a boundary edge that lies on a box face or
+//     region plane is put on the curve where that plane meets f = 0;
+//  3. the guard: a point that lands further than half its base triangle from its start, whose normal
+//     turns more than 60 degrees from the interpolated one, that does not converge, or a refined
+//     triangle that turns away from the surface, fails the refinement (the caller then uses a smaller k);
+//  4. Jacobi sweeps of tangential relaxation with re-projection, then sweeps aimed at the triangles
+//     under an angle target and their neighbours (lattice_relaxation.hpp).
+
+#include <isopatch/convex_region.hpp>
+#include <isopatch/geometry.hpp>
+#include <isopatch/mesh.hpp>
+#include <isopatch/stage_settings.hpp>
+#include <isopatch/surface.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+
+namespace isopatch::refine {
+
+struct RefineParams {
+  int level = 2;                    ///< k: every base edge cut into k segments, 1..kMaxLevel
+  int sweeps = 2;                   ///< relaxation sweeps over the whole mesh
+  int angle_sweeps = 4;             ///< sweeps over the vertices near triangles under angle_target
+  double angle_target = 30.0;       ///< degrees
+  std::optional<Box> box;           ///< the box the mesh is cut by (its faces hold the cut)
+  ConvexRegion region;              ///< region planes the mesh is cut by
+  std::size_t max_vertices = 0;     ///< refuse a larger output before any work (0: no limit)
+  const std::atomic<bool>* cancel = nullptr;
+  std::function<void(const Progress&)> progress;  ///< may be empty
+};
+
+struct RefineResult {
+  Mesh mesh;                        ///< empty when the guard failed (failed_points > 0)
+  std::size_t failed_points = 0;    ///< points or triangles that failed the guard (step 3)
+  std::size_t rejected_moves = 0;   ///< relaxation moves undone
+  std::size_t angle_vertices = 0;   ///< vertices in the aimed sweeps
+  double smallest_angle = 0.0;      ///< over the output, degrees
+  std::uint64_t gradient_evaluations = 0;
+};
+
+/// Refines `base`, a mesh of `surface` (vertices on f = 0, triangles oriented along grad f, manifold),
+/// by params.level. Base vertices keep their numbers; new vertices follow (lattice_layout.hpp). The
+/// attribute "role" is carried over, new vertices getting 6; other attributes are dropped.
+/// \throw LimitError when the output would exceed params.max_vertices or 32-bit vertex numbers, or
+///        ("cancelled") when params.cancel is set; EvaluationError when f or grad f is not finite.
+RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineParams& params);
+
+}  // namespace isopatch::refine

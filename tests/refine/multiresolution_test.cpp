@@ -1,0 +1,199 @@
+// Multiresolution meshing through mesh_surface(): the automatic level, its floor, budgets, cancel,
+// progress, regions, frames and the sizes for an error bound.
+#include <isopatch/error.hpp>
+#include <isopatch/isopatch.hpp>
+#include <isopatch/metrics.hpp>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "mesh_checks.hpp"
+#include "self_intersection.hpp"
+#include "test_surfaces.hpp"
+
+namespace isopatch {
+namespace {
+
+void expect_closed_floor(const Mesh& mesh, const Surface& s, int genus, double valence, double angle) {
+  const QualityReport q = analyze_quality(mesh, &s);
+  EXPECT_TRUE(q.topology.watertight()) << s.name();
+  EXPECT_TRUE(q.topology.manifold()) << s.name();
+  EXPECT_TRUE(q.topology.outward_oriented()) << s.name();
+  EXPECT_EQ(q.topology.components.size(), 1u) << s.name();
+  EXPECT_EQ(q.topology.genus, genus) << s.name();
+  EXPECT_EQ(count_self_intersections(mesh), 0u) << s.name();
+  EXPECT_LT(test::max_vertex_distance(s, mesh), 1e-10 * s.box().diagonal()) << s.name();
+  EXPECT_GE(q.valence.share_6, valence) << s.name();
+  EXPECT_GE(q.shape.min_angle.min, angle) << s.name();
+}
+
+TEST(Multiresolution, DefaultRefinesGentleSurfacesAndHoldsTheFloor) {
+  for (const auto& [s, genus] : {std::pair{test::sphere(), 0}, std::pair{test::torus(), 1}}) {
+    Settings settings;
+    settings.edge_length = 0.03;
+    MeshStats stats;
+    const Mesh mesh = mesh_surface(*s, settings, &stats);
+    ASSERT_TRUE(stats.refine) << s->name();
+    EXPECT_GE(stats.refine->level, 4) << s->name();
+    EXPECT_EQ(stats.vertices, mesh.vertex_count());
+    EXPECT_LT(stats.refine->base_vertices * 10, mesh.vertex_count());
+    expect_closed_floor(mesh, *s, genus, 0.97, 25.0);
+  }
+}
+
+TEST(Multiresolution, TightlyBentSurfacesGetASmallerLevelAndKeepTheFloor) {
+  const SurfacePtr s = test::genus2();
+  Settings settings;
+  settings.edge_length = 0.02;
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*s, settings, &stats);
+  ASSERT_TRUE(stats.refine);
+  // The tube's radius (about 0.1) over the edge allows a few segments at most per base edge.
+  EXPECT_LE(stats.refine->level, 3);
+  EXPECT_GT(stats.refine->largest_curvature, 5.0);
+  expect_closed_floor(mesh, *s, 2, 0.90, 20.0);
+}
+
+TEST(Multiresolution, SameBytesForOneTwoAndFourThreads) {
+  const SurfacePtr s = test::tanglecube();
+  std::vector<Mesh> meshes;
+  for (int threads : {1, 2, 4}) {
+    Settings settings;
+    settings.threads = threads;
+    settings.edge_length = 0.12;
+    meshes.push_back(mesh_surface(*s, settings));
+  }
+  for (std::size_t i = 1; i < meshes.size(); ++i) {
+    EXPECT_EQ(meshes[i].triangles, meshes[0].triangles);
+    EXPECT_EQ(meshes[i].positions, meshes[0].positions);
+  }
+}
+
+TEST(Multiresolution, LevelOneAndThePapersMethodAloneAreNotRefined) {
+  const SurfacePtr s = test::sphere();
+  Settings off;
+  off.refine = 1;
+  MeshStats stats;
+  mesh_surface(*s, off, &stats);
+  EXPECT_FALSE(stats.refine);
+  Settings paper;
+  paper.remesh_iterations = 0;
+  mesh_surface(*s, paper, &stats);
+  EXPECT_FALSE(stats.refine);
+  Settings fixed;
+  fixed.refine = 3;
+  fixed.remesh_iterations = 0;  // an explicit level refines the raw patches too
+  mesh_surface(*s, fixed, &stats);
+  ASSERT_TRUE(stats.refine);
+  EXPECT_EQ(stats.refine->level, 3);
+}
+
+TEST(Multiresolution, ALevelOutOfRangeIsRefusedByName) {
+  Settings s;
+  s.refine = kMaxRefineLevel + 1;
+  try {
+    s.validate();
+    FAIL() << "no SettingError";
+  } catch (const SettingError& e) {
+    EXPECT_EQ(e.setting(), "refine");
+  }
+  s.refine = -1;
+  EXPECT_THROW(s.validate(), SettingError);
+}
+
+TEST(Multiresolution, AnAbsurdSizeIsRefusedAtOnceWithItsEstimate) {
+  Settings settings;
+  settings.edge_length = 1e-5;
+  settings.max_vertices = 50'000'000;
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    mesh_surface(*test::sphere(), settings);
+    FAIL() << "no LimitError";
+  } catch (const LimitError& e) {
+    EXPECT_EQ(e.setting(), "max_vertices");
+    // 2 A / (sqrt(3) h^2) for the unit sphere: 1.45e11.
+    EXPECT_NE(std::string(e.what()).find("about 1.4"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 30.0);
+  // The estimate is not a refusal of what fits: 20k vertices in a budget of 40k.
+  settings.edge_length = 0.025;
+  settings.max_vertices = 40'000;
+  EXPECT_NO_THROW(mesh_surface(*test::sphere(), settings));
+}
+
+TEST(Multiresolution, ProgressNamesTheStagesAndCancelStopsTheRefinement) {
+  std::set<std::string> stages;
+  std::atomic<bool> cancel{false};
+  Settings settings;
+  settings.edge_length = 0.03;
+  settings.cancel = &cancel;
+  settings.progress = [&](const Progress& p) {
+    if (p.stage) stages.insert(p.stage);
+    if (p.stage && std::string(p.stage) == "refine" && p.done > 0) cancel = true;
+  };
+  try {
+    mesh_surface(*test::torus(), settings);
+    FAIL() << "not cancelled";
+  } catch (const LimitError& e) {
+    EXPECT_EQ(std::string(e.what()), "cancelled");
+  }
+  EXPECT_TRUE(stages.count("cleanup"));
+  EXPECT_TRUE(stages.count("refine"));
+}
+
+TEST(Multiresolution, AnEvaluationBudgetStopsIt) {
+  Settings settings;
+  settings.edge_length = 0.03;
+  settings.max_evaluations = 20'000;
+  EXPECT_THROW(mesh_surface(*test::torus(), settings), LimitError);
+}
+
+TEST(Multiresolution, ARegionPlaneAndAFrameKeepTheCutAndTheFloor) {
+  const SurfacePtr s = test::sphere();
+  Settings settings;
+  settings.edge_length = 0.04;
+  settings.region = {HalfSpace{1.0, 1.0, 1.0, -0.5}};  // x + y + z <= 0.5
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*s, settings, &stats);
+  ASSERT_TRUE(stats.refine);
+  EXPECT_GE(stats.refine->level, 2);
+  const std::set<std::uint32_t> boundary = test::boundary_vertices(mesh);
+  ASSERT_GT(boundary.size(), 50u);
+  for (const std::uint32_t v : boundary) {
+    const Vec3& p = mesh.positions[v];
+    EXPECT_LT(std::abs(p.sum() - 0.5), 1e-8) << "vertex " << v;
+    EXPECT_LT(std::abs(p.squaredNorm() - 1.0), 1e-9) << "vertex " << v;
+  }
+  EXPECT_GE(test::min_angle_degrees(mesh), 20.0);
+
+  Settings rotated;
+  rotated.edge_length = 0.04;
+  rotated.frame = Frame{30.0, 20.0, 10.0};
+  MeshStats rotated_stats;
+  const Mesh turned = mesh_surface(*test::torus(), rotated, &rotated_stats);
+  ASSERT_TRUE(rotated_stats.refine);
+  expect_closed_floor(turned, *test::torus(), 1, 0.97, 25.0);
+}
+
+TEST(Multiresolution, AnErrorBoundGradesTheBaseAndKeepsTheBound) {
+  const SurfacePtr s = test::torus();
+  Settings settings;
+  settings.max_error = 2e-4;
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*s, settings, &stats);
+  ASSERT_TRUE(stats.refine);
+  EXPECT_GE(stats.refine->level, 2);
+  const QualityReport q = analyze_quality(mesh, s.get());
+  // Centroids within the bound (the clean-up's own margin: 4/3 longer edges than the size allows).
+  EXPECT_LE(q.accuracy->centroid_distance.max, 2.0 * 2e-4);
+  EXPECT_TRUE(q.topology.watertight());
+  EXPECT_GE(q.shape.min_angle.min, 20.0);
+}
+
+}  // namespace
+}  // namespace isopatch
