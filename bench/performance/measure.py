@@ -13,8 +13,8 @@ import runs
 import systems
 
 REMESH_TOLERANCE = 0.05
-SYSTEMS = ["default 2t", "default 1t", "default 4t", "preview", "fine", "raw", "cgal", "fe", "fe + remesh"]
-ANALYSED = ["default 2t", "preview", "fine", "raw", "cgal", "fe", "fe + remesh"]
+SYSTEMS = ["default 2t", "default 1t", "default 4t", "preview", "fine", "pipeline", "raw", "cgal", "fe", "fe + remesh"]
+ANALYSED = ["default 2t", "preview", "fine", "pipeline", "raw", "cgal", "fe", "fe + remesh"]
 
 
 @dataclass
@@ -90,7 +90,7 @@ def _fit_all(tools, name, surface, side, label, target, known) -> dict:
         # count is lower, the collapses and splits change it; vertices per second compare all the same).
         r["raw"] = systems.isopatch(tools.isopatch, surface, d2.value, systems.RAW, 2, out("raw"))
         runs.analyze(tools.isopatch, d2, surface)
-    for quality in ("preview", "fine"):
+    for quality in ("preview", "fine", systems.PIPELINE):
         r[quality] = _fit(tools, surface, count, side, tag(quality), known, quality)
     if tools.vtk:
         fe_make = lambda g, out: systems.flying_edges(tools.vtk, surface, g, 2, out)  # noqa: E731
@@ -122,7 +122,7 @@ def _again(tools, surface, name, run, chosen):
     """A function that repeats `run` (same knob, same output file), or None when it is not repeated."""
     if not run.ok or name == "default 4t":
         return None
-    if name.startswith("default") or name in ("preview", "fine", "raw"):
+    if name.startswith("default") or name in ("preview", "fine", "pipeline", "raw"):
         return lambda: systems.isopatch(tools.isopatch, surface, run.value, run.quality, run.threads, run.mesh)
     if name == "fe":
         return lambda: systems.flying_edges(tools.vtk, surface, int(run.value), run.threads, run.mesh)

@@ -8,9 +8,10 @@ from markdown import _table
 from figures import _fmt
 
 SPEED_SYSTEMS = [("default 2t", "default 2t"), ("default 1t", "default 1t"), ("preview", "preview 2t"),
-                 ("fine", "fine 2t"), ("raw", "paper's method alone 2t"), ("cgal", "CGAL"), ("fe", "FE 2t"), ("fe + remesh", "FE + remesh")]
+                 ("fine", "fine 2t"), ("pipeline", "one level (--refine 1) 2t"), ("raw", "paper's method alone 2t"), ("cgal", "CGAL"), ("fe", "FE 2t"), ("fe + remesh", "FE + remesh")]
 QUALITY_SYSTEMS = [("default 2t", "isopatch default"), ("preview", "isopatch preview"), ("fine", "isopatch fine"),
-                   ("raw", "isopatch, the paper's method alone (--remesh 0)"), ("cgal", "CGAL Surface_mesher"), ("fe", "VTK Flying Edges"), ("fe + remesh", "FE + isotropic remeshing")]
+                   ("pipeline", "isopatch at one level (--refine 1: patches and the whole-mesh clean-up)"),
+                   ("raw", "isopatch, the paper's method alone (--refine 1 --remesh 0)"), ("cgal", "CGAL Surface_mesher"), ("fe", "VTK Flying Edges"), ("fe + remesh", "FE + isotropic remeshing")]
 
 
 def _version(tool: str) -> str:

@@ -98,13 +98,18 @@ def read_stats(run: Timed, path: str) -> None:
     run.stage_ms = _stage_times(run.stats)
 
 
-RAW = "raw"  # not a preset: the paper's method alone, `--remesh 0` (no clean-up at all)
+RAW = "raw"  # not a preset: the paper's method alone, `--refine 1 --remesh 0` (no clean-up at all)
+PIPELINE = "pipeline"  # not a preset: the default without multiresolution, `--refine 1` (the whole-mesh clean-up)
 
 
 def quality_arguments(quality: str) -> list[str]:
-    """The command-line arguments of a preset name, or of RAW (the default's partition and patches with
-    the clean-up switched off)."""
-    return ["--quality", "default", "--remesh", "0"] if quality == RAW else ["--quality", quality]
+    """The command-line arguments of a preset name, of RAW (the default's partition and patches with
+    the clean-up switched off) or of PIPELINE (the default at one level: patches and clean-up)."""
+    if quality == RAW:
+        return ["--quality", "default", "--refine", "1", "--remesh", "0"]
+    if quality == PIPELINE:
+        return ["--quality", "default", "--refine", "1"]
+    return ["--quality", quality]
 
 
 @_with_cpu

@@ -190,7 +190,7 @@ struct CleanupSettings {
 /// The largest refinement level a run may ask for (RefineSettings::refine).
 inline constexpr int kMaxRefineLevel = 16;
 
-/// Multiresolution meshing (docs/algorithms.md 6): a coarse base meshed by the projection mesher and the
+/// Multiresolution meshing (docs/algorithms.md 8): a coarse base meshed by the projection mesher and the
 /// clean-up at k times the target edge length, every base triangle then cut into k^2 triangles whose
 /// new vertices are put on f = 0 and relaxed. Projection only.
 struct RefineSettings {

@@ -55,3 +55,33 @@ def test_same_input_same_arrays(unit_box):
     a = isopatch.mesh("x^4+y^4+z^4-1", box=unit_box, edge_length=0.1, threads=1)
     b = isopatch.mesh("x^4+y^4+z^4-1", box=unit_box, edge_length=0.1, threads=2)
     assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces)
+
+
+def test_refine_levels_and_their_statistics():
+    # The automatic level refines a gently curved surface; refine=1 is the single-level pipeline; an
+    # explicit level is used as given; out of range is a SettingError naming "refine".
+    auto = isopatch.mesh("torus", edge_length=0.03)
+    assert auto.stats["refine"]["level"] >= 2
+    assert auto.stats["refine"]["base_vertices"] * 4 < len(auto.vertices)
+    report = auto.analyze()
+    assert report["topology"]["watertight"] and report["topology"]["genus"] == 1
+    assert report["valence"]["share_6"] >= 0.97
+    single = isopatch.mesh("torus", edge_length=0.03, refine=1)
+    assert "refine" not in single.stats
+    fixed = isopatch.mesh("torus", edge_length=0.03, refine=3)
+    assert fixed.stats["refine"]["level"] == 3
+    try:
+        isopatch.mesh("torus", refine=17)
+    except isopatch.SettingError as e:
+        assert e.setting == "refine"
+    else:
+        raise AssertionError("refine=17 was accepted")
+
+
+def test_an_absurd_size_is_refused_before_any_work():
+    try:
+        isopatch.mesh("sphere", edge_length=1e-5, max_vertices=10_000_000)
+    except isopatch.LimitError as e:
+        assert e.setting == "max_vertices" and "about" in str(e)
+    else:
+        raise AssertionError("no LimitError")

@@ -12,7 +12,7 @@
 namespace isopatch {
 namespace {
 
-/// What each quality preset asks of the refinement (docs/algorithms.md 6.4):
+/// What each quality preset asks of the refinement (docs/algorithms.md 8.4):
 ///   max_level     the automatic level's ceiling;
 ///   max_turn      the normal turn across a base edge the automatic level allows (radians, H kappa);
 ///   min_base      the fewest base vertices the automatic level keeps (a base of a few hundred vertices

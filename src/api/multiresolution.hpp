@@ -1,5 +1,5 @@
 #pragma once
-// Multiresolution meshing (RefineSettings, docs/algorithms.md 6): the projection mesher and the
+// Multiresolution meshing (RefineSettings, docs/algorithms.md 8): the projection mesher and the
 // clean-up make a coarse base at k times the target edge length; src/refine cuts every base triangle
 // into k^2 triangles on f = 0. The level follows the surface's curvature, and drops (down to 1, the
 // projection mesher and the clean-up at the target size) where a refinement fails its guard.

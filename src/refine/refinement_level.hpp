@@ -2,7 +2,7 @@
 // Choosing the refinement level k from the surface's curvature: a base of edge length H = k h resolves
 // the surface where the normal turns little across a base edge, H kappa <= max_turn (radians), kappa
 // the largest principal curvature. Beyond that the projection distorts the base triangles (small angles
-// on genus2 and chmutov6 at k = 8 in the prototype of docs/algorithms.md 6) or lands on another part of
+// on genus2 and chmutov6 at k = 8 in the prototype of docs/algorithms.md 8) or lands on another part of
 // the surface.
 
 #include <isopatch/mesh.hpp>

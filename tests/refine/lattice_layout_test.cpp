@@ -33,7 +33,9 @@ TEST(BaseEdges, NumbersEachEdgeOnceInSortedOrder) {
   for (std::size_t i = 0; i < e.size(); ++i) {
     EXPECT_LT(e.ends[i][0], e.ends[i][1]);
     EXPECT_EQ(e.uses[i], 2);
-    if (i > 0) EXPECT_LT(e.ends[i - 1], e.ends[i]);
+    if (i > 0) {
+      EXPECT_LT(e.ends[i - 1], e.ends[i]);
+    }
   }
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (std::size_t s = 0; s < 3; ++s) {

@@ -26,7 +26,7 @@ void expect_closed_floor(const Mesh& mesh, const Surface& s, int genus, double v
   EXPECT_TRUE(q.topology.outward_oriented()) << s.name();
   EXPECT_EQ(q.topology.components.size(), 1u) << s.name();
   EXPECT_EQ(q.topology.genus, genus) << s.name();
-  EXPECT_EQ(count_self_intersections(mesh), 0u) << s.name();
+  EXPECT_EQ(test::count_self_intersections(mesh), 0u) << s.name();
   EXPECT_LT(test::max_vertex_distance(s, mesh), 1e-10 * s.box().diagonal()) << s.name();
   EXPECT_GE(q.valence.share_6, valence) << s.name();
   EXPECT_GE(q.shape.min_angle.min, angle) << s.name();
