@@ -6,6 +6,8 @@
 #include <cmath>
 #include <optional>
 
+#include <isopatch/error.hpp>
+
 #include "refine/refine_mesh.hpp"
 #include "refine/refinement_level.hpp"
 
@@ -84,15 +86,31 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
   MeshStats spent;       // every attempt's evaluations and times
   MeshStats base_stats;  // the last base's
   Mesh base;
+  // A base the partition cannot build at its size (an internal error of the convex overlay, seen with a
+  // region plane on a plane of the coarse lattice) is given up like a failed refinement: false.
   const auto mesh_base = [&](int k) {
     base_stats = MeshStats{};
-    base = mesh_level(base_settings(settings, edge, k), &base_stats);
-    add_costs(spent, base_stats);
     ++info.attempts;
+    try {
+      base = mesh_level(base_settings(settings, edge, k), &base_stats);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::Internal) throw;
+      base = Mesh{};
+      return false;
+    }
+    add_costs(spent, base_stats);
+    return true;
+  };
+  // The largest level from `k` down whose base can be built (1 when none).
+  const auto usable_level = [&](int k) {
+    while (k > 1 && !mesh_base(k)) k /= 2;
+    return k;
   };
   const auto finish = [&](Mesh mesh, const MeshStats& last) {
     if (stats) {
+      const int threads = stats->threads;  // set by mesh_surface for the whole run
       *stats = last;
+      stats->threads = threads;
       stats->value_evaluations = spent.value_evaluations;
       stats->gradient_evaluations = spent.gradient_evaluations;
       stats->times = spent.times;
@@ -104,8 +122,8 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
     return mesh;
   };
 
+  level = usable_level(level);
   if (level > 1) {
-    mesh_base(level);
     if (automatic && !graded) {
       info.largest_curvature = refine::largest_curvature(base, surface);
       int resolved = refine::level_for_curvature(info.largest_curvature, edge, preset.max_turn, level);
@@ -113,10 +131,7 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
       const double base_vertices = static_cast<double>(base.vertex_count());
       if (base_vertices < preset.min_base)
         resolved = std::min(resolved, std::max(1, static_cast<int>(level * std::sqrt(base_vertices / preset.min_base))));
-      if (resolved < level) {
-        level = resolved;
-        if (level > 1) mesh_base(level);
-      }
+      if (resolved < level) level = usable_level(resolved);
     }
   }
   while (level > 1) {
@@ -147,8 +162,7 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
       return finish(std::move(refined.mesh), base_stats);
     }
     info.failed_points += refined.failed_points;
-    level /= 2;
-    if (level > 1) mesh_base(level);
+    level = usable_level(level / 2);
   }
   // Level 1: the projection mesher and the clean-up at the target sizes themselves.
   Settings single = settings;

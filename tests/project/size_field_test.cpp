@@ -38,6 +38,7 @@ TEST_P(SizeFieldAcrossTheBox, GivesLeavesOfThreeDepthsWithoutCracks) {
   const double side = e.box.size().maxCoeff();
   const double lo = e.box.lo.x(), width = e.box.size().x();
   Settings settings;
+  settings.refine = 1;  // the partition at the output's own sizes
   // Fine near the low x face (side / 160), coarse soon after (side / 37 half-way, capped at side / 16).
   settings.size_field = [=](const Vec3& p) {
     const double t = (p.x() - lo) / width;

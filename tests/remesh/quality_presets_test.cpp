@@ -40,6 +40,7 @@ void PrintTo(const PresetCase& c, std::ostream* out) {
 Mesh mesh_at_quality(const Surface& s, double edge_length, Quality quality, MeshStats* stats,
                      std::optional<int> remesh = std::nullopt) {
   Settings settings;
+  settings.refine = 1;  // the clean-up's presets at one level (multiresolution: tests/refine)
   settings.edge_length = edge_length;
   settings.quality = quality;
   settings.remesh_iterations = remesh;
@@ -70,6 +71,7 @@ TEST_P(QualityPresets, PreviewMeetsItsFloor) {
   Settings no_search;
   no_search.edge_length = c.edge_length;
   no_search.quality = Quality::Preview;
+  no_search.refine = 1;
   no_search.valence_search = 0;
   const Mesh cheap = mesh_surface(*s, no_search);
   const double cheap_share = analyze_quality(cheap, s.get()).valence.share_6;
