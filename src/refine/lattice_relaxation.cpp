@@ -13,9 +13,6 @@ namespace {
 
 /// Vertices per task and per batch of evaluations.
 constexpr std::size_t kChunk = 2048;
-/// A triangle stays valid while its normal is within about 72 degrees of the surface normal at each
-/// corner (cos 72.5 = 0.3: the clean-up's own test, remesh_thresholds.hpp kMinNormalDot).
-constexpr double kMinNormalDot = 0.3;
 
 Vec3 as_vec3(const Eigen::Vector3f& v) { return v.cast<double>(); }
 

@@ -24,6 +24,10 @@ namespace isopatch::refine {
 /// How a vertex may move.
 enum class Motion : std::uint8_t { Free, Slides, Locked };
 
+/// A triangle stays valid while its normal is within about 72 degrees of the surface normal at each
+/// corner (cos 72.5 = 0.3: the clean-up's own test, remesh_thresholds.hpp kMinNormalDot).
+inline constexpr double kMinNormalDot = 0.3;
+
 /// Share of the way to the ring centroid that one sweep moves a free vertex (a full step oscillates on
 /// a regular lattice; half of it smooths the lattice's longest wavelengths fastest without).
 inline constexpr double kRelaxationStep = 0.5;

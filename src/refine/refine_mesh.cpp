@@ -33,9 +33,6 @@ constexpr double kMaxMoveShare = 0.5;
 constexpr float kRefinementRole = 6.0f;
 /// Landing tolerance relative to the base's bounding-box diagonal (the clean-up's own).
 constexpr double kRelativeTolerance = 1e-13;
-/// The validity of a refined triangle: its normal within about 72 degrees of the surface normal at each
-/// corner (the clean-up's test).
-constexpr double kMinNormalDot = 0.3;
 
 void check_cancel(const RefineParams& p) {
   if (p.cancel && p.cancel->load(std::memory_order_relaxed)) throw LimitError("cancelled", "cancel");
