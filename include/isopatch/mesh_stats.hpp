@@ -138,16 +138,16 @@ struct MeshWarnings {
 
 /// What multiresolution meshing did (RefineSettings): the level used and what its base was.
 struct RefineStats {
-  int level = 1;                         ///< k of the output (1: the base is the output)
-  int attempts = 0;                      ///< bases meshed (a failed guard or a curvature step adds one)
-  double target_edge = 0.0;              ///< h, the target (largest) edge length
-  double largest_curvature = 0.0;        ///< over the first base's vertices (automatic level)
+  int level = 1;                   ///< k of the output (1: the base is the output)
+  int attempts = 0;                ///< bases meshed (a failed guard or a curvature step adds one)
+  double target_edge = 0.0;        ///< h, the target (largest) edge length
+  double largest_curvature = 0.0;  ///< over the first base's vertices (automatic level)
   std::size_t base_vertices = 0;
   std::size_t base_triangles = 0;
-  std::size_t failed_points = 0;         ///< of the refinements given up (their level halved)
-  std::size_t rejected_moves = 0;        ///< relaxation moves undone
-  std::size_t angle_vertices = 0;        ///< vertices of the sweeps aimed at small angles
-  double smallest_angle = 0.0;           ///< after the refinement, degrees
+  std::size_t failed_points = 0;           ///< of the refinements given up (their level halved)
+  std::size_t rejected_moves = 0;          ///< relaxation moves undone
+  std::size_t angle_vertices = 0;          ///< vertices of the sweeps aimed at small angles
+  double smallest_angle = 0.0;             ///< after the refinement, degrees
   std::uint64_t gradient_evaluations = 0;  ///< of the refinement alone
 };
 
@@ -170,8 +170,8 @@ struct MeshStats {
 /// Calls `visit(stage, name, value)` for every number of `stats` whose stage ran, in a fixed order:
 /// stage "mesh" (seconds, threads, evaluations, evaluations per output vertex, vertices, triangles),
 /// then "seconds" (StageTimes), "projection" (with "defect_<kind>_<what>" from RawDefects),
-/// "marching_cubes", "fairing", "cleanup", "refine", "warnings". Names are stable (scripts read them): per-count
-/// families are spelled "patches_N", "leaves_depth_N", "doubtful_REASON".
+/// "marching_cubes", "fairing", "cleanup", "refine", "warnings". Names are stable (scripts read them):
+/// per-count families are spelled "patches_N", "leaves_depth_N", "doubtful_REASON".
 void visit_stats(
     const MeshStats& stats,
     const std::function<void(std::string_view stage, std::string_view name, double value)>& visit);

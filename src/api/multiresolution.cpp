@@ -130,7 +130,8 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
       // About base_vertices * level^2 output vertices: the level that leaves min_base in the base.
       const double base_vertices = static_cast<double>(base.vertex_count());
       if (base_vertices < preset.min_base)
-        resolved = std::min(resolved, std::max(1, static_cast<int>(level * std::sqrt(base_vertices / preset.min_base))));
+        resolved = std::min(
+            resolved, std::max(1, static_cast<int>(level * std::sqrt(base_vertices / preset.min_base))));
       if (resolved < level) level = usable_level(resolved);
     }
   }

@@ -20,7 +20,9 @@ double estimated_vertices(const Surface& surface, const Settings& settings, cons
   const Mesh mesh = marching_cubes(surface, grid, nullptr);
   double area = 0.0;
   for (const Triangle& t : mesh.triangles)
-    area += 0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+    area += 0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]])
+                      .cross(mesh.positions[t[2]] - mesh.positions[t[0]])
+                      .norm();
   const double h = default_edge_length(settings, box);
   return 2.0 * area / (std::sqrt(3.0) * h * h);
 }

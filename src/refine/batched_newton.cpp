@@ -42,7 +42,8 @@ void land_on_surface(const Sampler& f, const BoundaryPlanes& planes, std::span<N
         p.normal = vg[a].gradient / gradient_length;
         if ((p.position - start[active[a]]).norm() > p.max_move)
           p.landing = Landing::TooFar;
-        else if (p.expected_normal.squaredNorm() > 0.0 && p.normal.dot(p.expected_normal) <= limits.min_normal_dot)
+        else if (p.expected_normal.squaredNorm() > 0.0 &&
+                 p.normal.dot(p.expected_normal) <= limits.min_normal_dot)
           p.landing = Landing::TurnedAway;
         else
           p.landing = Landing::Ok;

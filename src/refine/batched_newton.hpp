@@ -29,15 +29,15 @@ struct NewtonPoint {
   Vec3 expected_normal = Vec3::Zero();  ///< unit normal the landing must agree with (dot > min_normal_dot);
                                         ///< zero: no check
   Vec3 normal = Vec3::Zero();           ///< out: unit grad f where it landed
-  double max_move = 0;   ///< largest allowed distance from the start (> 0)
-  int plane = -1;        ///< a cut plane of `planes` to stay on, or -1
+  double max_move = 0;                  ///< largest allowed distance from the start (> 0)
+  int plane = -1;                       ///< a cut plane of `planes` to stay on, or -1
   Landing landing = Landing::Ok;
 };
 
 struct NewtonLimits {
-  double tolerance = 0.0;        ///< |f| / |grad f (in plane)| at which a point has landed
-  int max_steps = 12;            ///< Newton steps at most
-  double min_normal_dot = 0.5;   ///< landing normal against the expected one (cos 60 degrees)
+  double tolerance = 0.0;       ///< |f| / |grad f (in plane)| at which a point has landed
+  int max_steps = 12;           ///< Newton steps at most
+  double min_normal_dot = 0.5;  ///< landing normal against the expected one (cos 60 degrees)
 };
 
 /// Lands every point of `points` (each independently; see the file comment).

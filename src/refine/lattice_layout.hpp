@@ -42,8 +42,8 @@ class LatticeLayout {
   /// Index of the inner point (i, j) (i, j >= 1, i + j <= k - 1) among triangle t's inner points.
   std::size_t inner_index(int i, int j) const {
     // Rows j = 1..k-2 hold k - 1 - j points each, i = 1..k-1-j.
-    const std::size_t before = static_cast<std::size_t>(j - 1) * (k_ - 1) -
-                               static_cast<std::size_t>((j - 1) * j) / 2;
+    const std::size_t before =
+        static_cast<std::size_t>(j - 1) * (k_ - 1) - static_cast<std::size_t>((j - 1) * j) / 2;
     return before + static_cast<std::size_t>(i - 1);
   }
   /// Appends the k^2 triangles of base triangle t to `out`, oriented as the base triangle, in a fixed

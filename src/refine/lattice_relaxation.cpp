@@ -14,7 +14,9 @@ namespace {
 /// Vertices per task and per batch of evaluations.
 constexpr std::size_t kChunk = 2048;
 
-Vec3 as_vec3(const Eigen::Vector3f& v) { return v.cast<double>(); }
+Vec3 as_vec3(const Eigen::Vector3f& v) {
+  return v.cast<double>();
+}
 
 }  // namespace
 
@@ -41,7 +43,8 @@ double smallest_angle_degrees(const Mesh& mesh, const Triangle& t) {
 LatticeRelaxation::LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& normals,
                                      const std::vector<Motion>& motion, const LatticeLayout& layout,
                                      const BaseEdges& edges, const std::vector<int>& edge_plane,
-                                     const Sampler& f, const BoundaryPlanes& planes, const NewtonLimits& limits)
+                                     const Sampler& f, const BoundaryPlanes& planes,
+                                     const NewtonLimits& limits)
     : mesh_(mesh),
       normals_(normals),
       motion_(motion),
@@ -91,28 +94,29 @@ std::size_t LatticeRelaxation::sweep(const std::vector<std::uint8_t>* subset) {
   std::vector<Vec3> next(mesh_.positions);
   std::vector<Eigen::Vector3f> next_normals(normals_);
   std::vector<std::uint8_t> moved(n, 0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kChunk), [&](const tbb::blocked_range<std::size_t>& r) {
-    std::vector<NewtonPoint> points;
-    std::vector<std::uint32_t> ids;
-    for (std::size_t v = r.begin(); v != r.end(); ++v) {
-      if (subset && !(*subset)[v]) continue;
-      NewtonPoint p;
-      if (!target(static_cast<std::uint32_t>(v), p.position, p.plane)) continue;
-      p.expected_normal = as_vec3(normals_[v]);
-      // A relaxation move is a fraction of an edge: a landing further away than the move itself went
-      // somewhere else.
-      p.max_move = 2.0 * (p.position - mesh_.positions[v]).norm() + limits_.tolerance;
-      points.push_back(p);
-      ids.push_back(static_cast<std::uint32_t>(v));
-    }
-    land_on_surface(f_, planes_, points, limits_);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (points[i].landing != Landing::Ok) continue;
-      next[ids[i]] = points[i].position;
-      next_normals[ids[i]] = points[i].normal.cast<float>();
-      moved[ids[i]] = 1;
-    }
-  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kChunk),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      std::vector<NewtonPoint> points;
+                      std::vector<std::uint32_t> ids;
+                      for (std::size_t v = r.begin(); v != r.end(); ++v) {
+                        if (subset && !(*subset)[v]) continue;
+                        NewtonPoint p;
+                        if (!target(static_cast<std::uint32_t>(v), p.position, p.plane)) continue;
+                        p.expected_normal = as_vec3(normals_[v]);
+                        // A relaxation move is a fraction of an edge: a landing further away than the move
+                        // itself went somewhere else.
+                        p.max_move = 2.0 * (p.position - mesh_.positions[v]).norm() + limits_.tolerance;
+                        points.push_back(p);
+                        ids.push_back(static_cast<std::uint32_t>(v));
+                      }
+                      land_on_surface(f_, planes_, points, limits_);
+                      for (std::size_t i = 0; i < points.size(); ++i) {
+                        if (points[i].landing != Landing::Ok) continue;
+                        next[ids[i]] = points[i].position;
+                        next_normals[ids[i]] = points[i].normal.cast<float>();
+                        moved[ids[i]] = 1;
+                      }
+                    });
   // Undo the moves that leave a triangle turned away from the surface, until none does (the positions
   // before the sweep are valid, so this ends).
   std::size_t undone = 0;
@@ -124,7 +128,8 @@ std::size_t LatticeRelaxation::sweep(const std::vector<std::uint8_t>* subset) {
                         for (std::size_t t = r.begin(); t != r.end(); ++t) {
                           const Triangle& tri = mesh_.triangles[t];
                           if (!moved[tri[0]] && !moved[tri[1]] && !moved[tri[2]]) continue;
-                          const Vec3 normal = (next[tri[1]] - next[tri[0]]).cross(next[tri[2]] - next[tri[0]]);
+                          const Vec3 normal =
+                              (next[tri[1]] - next[tri[0]]).cross(next[tri[2]] - next[tri[0]]);
                           const double length = normal.norm();
                           bool valid = length > 0.0;
                           for (int c = 0; c < 3 && valid; ++c)

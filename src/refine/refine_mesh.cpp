@@ -105,7 +105,8 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
   const Sampler f(surface);
   const double tolerance = kRelativeTolerance * std::max(bounding_box(base).diagonal(), 1e-300);
   const NewtonLimits limits{tolerance, 12, 0.5};
-  const BoundaryPlanes planes(params.box, params.region, 1e-9 * std::max(bounding_box(base).diagonal(), 1e-300));
+  const BoundaryPlanes planes(params.box, params.region,
+                              1e-9 * std::max(bounding_box(base).diagonal(), 1e-300));
   const std::size_t total_work = layout.vertex_count() * static_cast<std::size_t>(1 + params.sweeps);
   report(params, 0, total_work);
 

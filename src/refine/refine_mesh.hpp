@@ -32,23 +32,23 @@
 namespace isopatch::refine {
 
 struct RefineParams {
-  int level = 2;                    ///< k: every base edge cut into k segments, 1..kMaxLevel
-  int sweeps = 2;                   ///< relaxation sweeps over the whole mesh
-  int angle_sweeps = 4;             ///< sweeps over the vertices near triangles under angle_target
-  double angle_target = 30.0;       ///< degrees
-  std::optional<Box> box;           ///< the box the mesh is cut by (its faces hold the cut)
-  ConvexRegion region;              ///< region planes the mesh is cut by
-  std::size_t max_vertices = 0;     ///< refuse a larger output before any work (0: no limit)
+  int level = 2;                 ///< k: every base edge cut into k segments, 1..kMaxLevel
+  int sweeps = 2;                ///< relaxation sweeps over the whole mesh
+  int angle_sweeps = 4;          ///< sweeps over the vertices near triangles under angle_target
+  double angle_target = 30.0;    ///< degrees
+  std::optional<Box> box;        ///< the box the mesh is cut by (its faces hold the cut)
+  ConvexRegion region;           ///< region planes the mesh is cut by
+  std::size_t max_vertices = 0;  ///< refuse a larger output before any work (0: no limit)
   const std::atomic<bool>* cancel = nullptr;
   std::function<void(const Progress&)> progress;  ///< may be empty
 };
 
 struct RefineResult {
-  Mesh mesh;                        ///< empty when the guard failed (failed_points > 0)
-  std::size_t failed_points = 0;    ///< points or triangles that failed the guard (step 3)
-  std::size_t rejected_moves = 0;   ///< relaxation moves undone
-  std::size_t angle_vertices = 0;   ///< vertices in the aimed sweeps
-  double smallest_angle = 0.0;      ///< over the output, degrees
+  Mesh mesh;                       ///< empty when the guard failed (failed_points > 0)
+  std::size_t failed_points = 0;   ///< points or triangles that failed the guard (step 3)
+  std::size_t rejected_moves = 0;  ///< relaxation moves undone
+  std::size_t angle_vertices = 0;  ///< vertices in the aimed sweeps
+  double smallest_angle = 0.0;     ///< over the output, degrees
   std::uint64_t gradient_evaluations = 0;
 };
 

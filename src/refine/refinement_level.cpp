@@ -18,7 +18,8 @@ double largest_curvature(const Mesh& mesh, const Surface& surface) {
       [&](const tbb::blocked_range<std::size_t>& r, double largest) {
         for (std::size_t v = r.begin(); v != r.end(); ++v) {
           const double kappa = max_abs_principal_curvature(surface, mesh.positions[v]);
-          if (std::isnan(kappa)) throw EvaluationError("the curvature of f = 0 is not finite at a base vertex");
+          if (std::isnan(kappa))
+            throw EvaluationError("the curvature of f = 0 is not finite at a base vertex");
           largest = std::max(largest, kappa);
         }
         return largest;

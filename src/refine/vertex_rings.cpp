@@ -11,7 +11,8 @@ VertexRings::VertexRings(std::size_t vertex_count, std::span<const Triangle> tri
   neighbours_.resize(offsets_[vertex_count]);
   std::vector<std::uint32_t> fill(offsets_.begin(), offsets_.end() - 1);
   for (const Triangle& t : triangles)
-    for (int c = 0; c < 3; ++c) neighbours_[fill[t[static_cast<std::size_t>(c)]]++] = t[static_cast<std::size_t>((c + 1) % 3)];
+    for (int c = 0; c < 3; ++c)
+      neighbours_[fill[t[static_cast<std::size_t>(c)]]++] = t[static_cast<std::size_t>((c + 1) % 3)];
 }
 
 }  // namespace isopatch::refine

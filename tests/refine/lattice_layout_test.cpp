@@ -19,10 +19,12 @@ Mesh tetrahedron() {
   return m;
 }
 
-std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed_edges(const std::vector<Triangle>& triangles) {
+std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed_edges(
+    const std::vector<Triangle>& triangles) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
   for (const Triangle& t : triangles)
-    for (int i = 0; i < 3; ++i) ++uses[{t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]}];
+    for (int i = 0; i < 3; ++i)
+      ++uses[{t[static_cast<std::size_t>(i)], t[static_cast<std::size_t>((i + 1) % 3)]}];
   return uses;
 }
 
@@ -50,8 +52,8 @@ TEST(LatticeLayout, RefinedClosedMeshIsClosedOrientedAndRegular) {
   const BaseEdges e = base_edges(m);
   for (int k : {1, 2, 3, 5, 8}) {
     const LatticeLayout layout(m, e, k);
-    EXPECT_EQ(layout.vertex_count(),
-              4u + 6u * static_cast<std::size_t>(k - 1) + 4u * static_cast<std::size_t>((k - 1) * (k - 2) / 2));
+    EXPECT_EQ(layout.vertex_count(), 4u + 6u * static_cast<std::size_t>(k - 1) +
+                                         4u * static_cast<std::size_t>((k - 1) * (k - 2) / 2));
     std::vector<Triangle> triangles(layout.triangle_count());
     for (std::size_t t = 0; t < m.triangles.size(); ++t)
       layout.emit_triangles(t, triangles.data() + t * static_cast<std::size_t>(k * k));

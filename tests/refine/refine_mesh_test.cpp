@@ -36,8 +36,8 @@ TEST(RefineMesh, SphereRefinedIsWatertightRegularAndOnTheSurface) {
   ASSERT_EQ(r.failed_points, 0u);
   const Mesh& mesh = r.mesh;
   EXPECT_EQ(mesh.triangle_count(), base.triangle_count() * 25);
-  EXPECT_EQ(mesh.vertex_count(), base.vertex_count() + (base.triangle_count() * 3 / 2) * 4 +
-                                      base.triangle_count() * 6);
+  EXPECT_EQ(mesh.vertex_count(),
+            base.vertex_count() + (base.triangle_count() * 3 / 2) * 4 + base.triangle_count() * 6);
   const QualityReport q = analyze_quality(mesh, s.get());
   EXPECT_TRUE(q.topology.watertight());
   EXPECT_TRUE(q.topology.manifold());
@@ -76,7 +76,8 @@ TEST(RefineMesh, APointThatLandsOnAnotherSheetFailsTheGuard) {
   // 0.9 inside it: the face centres (at 0.58 from the centre) land on the inner sheet, whose normal
   // points inwards.
   Mesh base;
-  base.positions = {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1), Vec3(0, 0, -1)};
+  base.positions = {Vec3(1, 0, 0),  Vec3(-1, 0, 0), Vec3(0, 1, 0),
+                    Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
   base.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
   const SurfacePtr two = make_surface(
       [](auto x, auto y, auto z) {
