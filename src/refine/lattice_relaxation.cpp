@@ -4,9 +4,8 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
-#include <cmath>
-#include <numbers>
+#include "remesh/remesh_thresholds.hpp"
+#include "remesh/triangle_angle.hpp"
 
 namespace isopatch::refine {
 namespace {
@@ -20,24 +19,18 @@ Vec3 as_vec3(const Eigen::Vector3f& v) {
 
 }  // namespace
 
+bool faces_the_surface(const std::vector<Vec3>& positions, const std::vector<Eigen::Vector3f>& normals,
+                       const Triangle& t) {
+  const Vec3 normal = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]);
+  const double length = normal.norm();
+  if (!(length > 0.0)) return false;
+  for (const std::uint32_t v : t)
+    if (!(normal.dot(as_vec3(normals[v])) > remesh_thresholds::kMinNormalDot * length)) return false;
+  return true;
+}
+
 double smallest_angle_degrees(const Mesh& mesh, const Triangle& t) {
-  const Vec3& a = mesh.positions[t[0]];
-  const Vec3& b = mesh.positions[t[1]];
-  const Vec3& c = mesh.positions[t[2]];
-  const double la = (b - c).squaredNorm(), lb = (c - a).squaredNorm(), lc = (a - b).squaredNorm();
-  // The smallest angle faces the shortest side: law of cosines at the opposite corner.
-  double opposite, s1, s2;
-  if (la <= lb && la <= lc) {
-    opposite = la, s1 = lb, s2 = lc;
-  } else if (lb <= lc) {
-    opposite = lb, s1 = la, s2 = lc;
-  } else {
-    opposite = lc, s1 = la, s2 = lb;
-  }
-  const double denominator = 2.0 * std::sqrt(s1 * s2);
-  if (!(denominator > 0.0)) return 0.0;
-  const double cosine = std::clamp((s1 + s2 - opposite) / denominator, -1.0, 1.0);
-  return std::acos(cosine) * 180.0 / std::numbers::pi;
+  return smallest_angle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
 }
 
 LatticeRelaxation::LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& normals,
@@ -91,9 +84,12 @@ bool LatticeRelaxation::target(std::uint32_t v, Vec3& to, int& plane) const {
 
 std::size_t LatticeRelaxation::sweep(const std::vector<std::uint8_t>* subset) {
   const std::size_t n = mesh_.vertex_count();
-  std::vector<Vec3> next(mesh_.positions);
-  std::vector<Eigen::Vector3f> next_normals(normals_);
-  std::vector<std::uint8_t> moved(n, 0);
+  next_ = mesh_.positions;
+  next_normals_ = normals_;
+  moved_.assign(n, 0);
+  std::vector<Vec3>& next = next_;
+  std::vector<Eigen::Vector3f>& next_normals = next_normals_;
+  std::vector<std::uint8_t>& moved = moved_;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kChunk),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       std::vector<NewtonPoint> points;
@@ -122,20 +118,14 @@ std::size_t LatticeRelaxation::sweep(const std::vector<std::uint8_t>* subset) {
   std::size_t undone = 0;
   for (bool changed = true; changed;) {
     changed = false;
-    std::vector<std::uint8_t> invalid(mesh_.triangles.size(), 0);
+    std::vector<std::uint8_t>& invalid = invalid_;
+    invalid.assign(mesh_.triangles.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh_.triangles.size(), kChunk),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t t = r.begin(); t != r.end(); ++t) {
                           const Triangle& tri = mesh_.triangles[t];
                           if (!moved[tri[0]] && !moved[tri[1]] && !moved[tri[2]]) continue;
-                          const Vec3 normal =
-                              (next[tri[1]] - next[tri[0]]).cross(next[tri[2]] - next[tri[0]]);
-                          const double length = normal.norm();
-                          bool valid = length > 0.0;
-                          for (int c = 0; c < 3 && valid; ++c)
-                            valid = normal.dot(as_vec3(next_normals[tri[static_cast<std::size_t>(c)]])) >
-                                    kMinNormalDot * length;
-                          invalid[t] = valid ? 0 : 1;
+                          invalid[t] = faces_the_surface(next, next_normals, tri) ? 0 : 1;
                         }
                       });
     for (std::size_t t = 0; t < invalid.size(); ++t) {

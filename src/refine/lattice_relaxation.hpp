@@ -24,10 +24,6 @@ namespace isopatch::refine {
 /// How a vertex may move.
 enum class Motion : std::uint8_t { Free, Slides, Locked };
 
-/// A triangle stays valid while its normal is within about 72 degrees of the surface normal at each
-/// corner (cos 72.5 = 0.3: the clean-up's own test, remesh_thresholds.hpp kMinNormalDot).
-inline constexpr double kMinNormalDot = 0.3;
-
 /// Share of the way to the ring centroid that one sweep moves a free vertex (a full step oscillates on
 /// a regular lattice; half of it smooths the lattice's longest wavelengths fastest without).
 inline constexpr double kRelaxationStep = 0.5;
@@ -61,7 +57,18 @@ class LatticeRelaxation {
   const BoundaryPlanes& planes_;
   NewtonLimits limits_;
   VertexRings rings_;
+  // One sweep's results, kept between sweeps so that each sweep does not allocate them again.
+  std::vector<Vec3> next_;
+  std::vector<Eigen::Vector3f> next_normals_;
+  std::vector<std::uint8_t> moved_;
+  std::vector<std::uint8_t> invalid_;
 };
+
+/// Whether triangle t of `positions` faces the surface: its normal within about 72 degrees of the unit
+/// surface normal at each corner (the clean-up's validity test, remesh_thresholds.hpp kMinNormalDot);
+/// false for a degenerate triangle.
+bool faces_the_surface(const std::vector<Vec3>& positions, const std::vector<Eigen::Vector3f>& normals,
+                       const Triangle& t);
 
 /// Smallest angle of triangle t of `mesh`, in degrees (0 for a degenerate triangle).
 double smallest_angle_degrees(const Mesh& mesh, const Triangle& t);

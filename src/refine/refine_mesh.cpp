@@ -52,16 +52,8 @@ std::size_t turned_triangles(const Mesh& mesh, const std::vector<Eigen::Vector3f
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), 4096), std::size_t{0},
       [&](const tbb::blocked_range<std::size_t>& r, std::size_t count) {
-        for (std::size_t t = r.begin(); t != r.end(); ++t) {
-          const Triangle& tri = mesh.triangles[t];
-          const Vec3 n = (mesh.positions[tri[1]] - mesh.positions[tri[0]])
-                             .cross(mesh.positions[tri[2]] - mesh.positions[tri[0]]);
-          const double length = n.norm();
-          bool valid = length > 0.0;
-          for (int c = 0; c < 3 && valid; ++c)
-            valid = n.dot(normals[tri[static_cast<std::size_t>(c)]].cast<double>()) > kMinNormalDot * length;
-          if (!valid) ++count;
-        }
+        for (std::size_t t = r.begin(); t != r.end(); ++t)
+          if (!faces_the_surface(mesh.positions, normals, mesh.triangles[t])) ++count;
         return count;
       },
       std::plus<>());
