@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -112,16 +113,18 @@ Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats
       return mesh;
     }
     case Method::Projection: {
-      check_estimated_size(surface, settings, box);
+      const std::uint64_t estimate_evaluations = check_estimated_size(surface, settings, box);
+      const auto one_level = [&surface](const Settings& s, MeshStats* st) {
+        Mesh level = mesh_projection(surface, s, st);
+        clean_up(level, surface, s, st);
+        return level;
+      };
       // The automatic level leaves the paper's method alone (remesh_iterations = 0) unrefined.
-      if (settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0))
-        return mesh_multiresolution(surface, settings, stats, [&surface](const Settings& s, MeshStats* st) {
-          Mesh level = mesh_projection(surface, s, st);
-          clean_up(level, surface, s, st);
-          return level;
-        });
-      Mesh mesh = mesh_projection(surface, settings, stats);
-      clean_up(mesh, surface, settings, stats);
+      const bool refine =
+          settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0);
+      Mesh mesh =
+          refine ? mesh_multiresolution(surface, settings, stats, one_level) : one_level(settings, stats);
+      if (stats) stats->value_evaluations += estimate_evaluations;
       return mesh;
     }
   }

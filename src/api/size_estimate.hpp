@@ -7,6 +7,7 @@
 #include <isopatch/surface.hpp>
 
 #include <cstddef>
+#include <cstdint>
 
 namespace isopatch {
 
@@ -18,10 +19,13 @@ inline constexpr int kEstimateGrid = 32;
 /// with A measured on a Marching Cubes mesh of a kEstimateGrid grid (so features smaller than its cells
 /// are missed, and varying sizes, which are at most h, make the estimate a lower bound).
 /// \throw EvaluationError when f is not finite at a grid point.
-double estimated_vertices(const Surface& surface, const Settings& settings, const Box& box);
+/// `evaluations`, when given, receives the evaluations of f it made.
+double estimated_vertices(const Surface& surface, const Settings& settings, const Box& box,
+                          std::uint64_t* evaluations = nullptr);
 
 /// When settings.max_vertices is set: throws LimitError("max_vertices") naming the estimate when it
-/// exceeds the budget. Costs about kEstimateGrid^3 evaluations of f (a few milliseconds).
-void check_estimated_size(const Surface& surface, const Settings& settings, const Box& box);
+/// exceeds the budget. Costs about kEstimateGrid^3 evaluations of f (a few milliseconds). Returns the
+/// evaluations it made (0 without a budget), for the run's statistics.
+std::uint64_t check_estimated_size(const Surface& surface, const Settings& settings, const Box& box);
 
 }  // namespace isopatch

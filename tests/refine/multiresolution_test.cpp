@@ -9,7 +9,9 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <set>
+#include <span>
 #include <string>
 
 #include "mesh_checks.hpp"
@@ -123,7 +125,12 @@ TEST(Multiresolution, AnAbsurdSizeIsRefusedAtOnceWithItsEstimate) {
   // The estimate is not a refusal of what fits: 20k vertices in a budget of 40k.
   settings.edge_length = 0.025;
   settings.max_vertices = 40'000;
-  EXPECT_NO_THROW(mesh_surface(*test::sphere(), settings));
+  MeshStats with_estimate, without_estimate;
+  EXPECT_NO_THROW(mesh_surface(*test::sphere(), settings, &with_estimate));
+  // The estimate's evaluations (a 32-cell grid) are in the run's statistics.
+  settings.max_vertices = 0;
+  mesh_surface(*test::sphere(), settings, &without_estimate);
+  EXPECT_GE(with_estimate.value_evaluations, without_estimate.value_evaluations + 32 * 32 * 32);
 }
 
 TEST(Multiresolution, ProgressNamesTheStagesAndCancelStopsTheRefinement) {
@@ -146,11 +153,60 @@ TEST(Multiresolution, ProgressNamesTheStagesAndCancelStopsTheRefinement) {
   EXPECT_TRUE(stages.count("refine"));
 }
 
-TEST(Multiresolution, AnEvaluationBudgetStopsIt) {
+/// Forwards to a surface and counts every evaluation the way the evaluation budget does (each value,
+/// gradient, Hessian and interval bound is one).
+class CountingSurface final : public Surface {
+ public:
+  explicit CountingSurface(const Surface& inner) : Surface(inner.name(), inner.box()), inner_(inner) {}
+  double value(const Vec3& p) const override { return ++count, inner_.value(p); }
+  void values(std::span<const Vec3> points, std::span<double> out) const override {
+    count += points.size();
+    inner_.values(points, out);
+  }
+  ValueGradient value_gradient(const Vec3& p) const override { return ++count, inner_.value_gradient(p); }
+  void value_gradients(std::span<const Vec3> points, std::span<ValueGradient> out) const override {
+    count += points.size();
+    inner_.value_gradients(points, out);
+  }
+  SecondOrder second_order(const Vec3& p) const override { return ++count, inner_.second_order(p); }
+  std::optional<Interval> bound(const Box& box) const override { return ++count, inner_.bound(box); }
+  std::optional<IntervalGradient> gradient_bound(const Box& box) const override {
+    return ++count, inner_.gradient_bound(box);
+  }
+  mutable std::atomic<std::uint64_t> count{0};
+
+ private:
+  const Surface& inner_;
+};
+
+TEST(Multiresolution, AnEvaluationBudgetStopsItInsideTheRefinement) {
+  // A budget that everything before the refinement fits in, with half of the refinement's evaluations
+  // to spare: the run must stop inside the refinement.
+  const SurfacePtr torus = test::torus();
+  const CountingSurface counted(*torus);
+  std::uint64_t before_refinement = 0;
   Settings settings;
   settings.edge_length = 0.03;
-  settings.max_evaluations = 20'000;
-  EXPECT_THROW(mesh_surface(*test::torus(), settings), LimitError);
+  settings.progress = [&](const Progress& p) {
+    if (p.stage && std::string(p.stage) == "refine" && before_refinement == 0)
+      before_refinement = counted.count;
+  };
+  mesh_surface(counted, settings);
+  const std::uint64_t total = counted.count;
+  ASSERT_GT(before_refinement, 0u);
+  ASSERT_GT(total, before_refinement + 100);
+  settings.max_evaluations = before_refinement + (total - before_refinement) / 2;
+  bool reached_refinement = false;
+  settings.progress = [&](const Progress& p) {
+    if (p.stage && std::string(p.stage) == "refine") reached_refinement = true;
+  };
+  try {
+    mesh_surface(*torus, settings);
+    FAIL() << "the budget of " << settings.max_evaluations << " evaluations was not enforced";
+  } catch (const LimitError& e) {
+    EXPECT_EQ(e.setting(), "max_evaluations") << e.what();
+  }
+  EXPECT_TRUE(reached_refinement);
 }
 
 TEST(Multiresolution, ARegionPlaneAndAFrameKeepTheCutAndTheFloor) {
