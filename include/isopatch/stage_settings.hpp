@@ -195,10 +195,11 @@ inline constexpr int kMaxRefineLevel = 16;
 /// new vertices are put on f = 0 and relaxed. Projection only.
 struct RefineSettings {
   /// The level k. 0 (default): chosen from the surface's curvature (k = 1 where a coarser base would not
-  /// resolve it, up to 8 on gently curved surfaces; 4 with max_error or a size_field, whose base is then
-  /// graded; 1 when remesh_iterations is 0, the paper's method alone). 1: no refinement (the projection
-  /// mesher and the clean-up at the target size). 2..16: that
-  /// k, halved where a refined point cannot be put safely on f = 0. 0..kMaxRefineLevel.
+  /// resolve it, up to 8 on gently curved surfaces; 1 with max_error or a size_field, where a graded
+  /// base measured worse, and when remesh_iterations is 0, the paper's method alone). 1: no refinement
+  /// (the projection mesher and the clean-up at the target size). 2..16: that k (with max_error or a
+  /// size_field over a base graded k times coarser), halved where a refined point cannot be put safely
+  /// on f = 0. 0..kMaxRefineLevel.
   int refine = 0;
 
   /// \throw SettingError for a level out of range.

@@ -236,14 +236,19 @@ TEST(Multiresolution, ARegionPlaneAndAFrameKeepTheCutAndTheFloor) {
   expect_closed_floor(turned, *test::torus(), 1, 0.97, 25.0);
 }
 
-TEST(Multiresolution, AnErrorBoundGradesTheBaseAndKeepsTheBound) {
+TEST(Multiresolution, AnErrorBoundIsSingleLevelByDefaultAndAGivenLevelGradesTheBase) {
   const SurfacePtr s = test::torus();
   Settings settings;
   settings.max_error = 2e-4;
+  MeshStats automatic;
+  mesh_surface(*s, settings, &automatic);
+  ASSERT_TRUE(automatic.refine);
+  EXPECT_EQ(automatic.refine->level, 1);
+  settings.refine = 4;
   MeshStats stats;
   const Mesh mesh = mesh_surface(*s, settings, &stats);
   ASSERT_TRUE(stats.refine);
-  EXPECT_GE(stats.refine->level, 2);
+  EXPECT_EQ(stats.refine->level, 4);
   const QualityReport q = analyze_quality(mesh, s.get());
   // Centroids within the bound (the clean-up's own margin: 4/3 longer edges than the size allows).
   EXPECT_LE(q.accuracy->centroid_distance.max, 2.0 * 2e-4);
