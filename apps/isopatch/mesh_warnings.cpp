@@ -29,13 +29,12 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
   // surface turns within an edge (a rim narrower than the edges), or where cells left in doubt joined
   // sheets, which the warning above already names.
   if (doubtful == 0 && stats.cleanup && stats.cleanup->iterations > 0 && mesh.triangle_count() > 0) {
-    const ShapeReport shape = analyze_shape(mesh);
-    if (shape.share_below_10 > 0.0)
-      std::fprintf(
-          out,
-          "warning: %.0f triangles have an angle under 10 degrees (smallest %.2g): the surface turns "
-          "within an edge there (a smaller --edge-length or --max-error resolves it)\n",
-          shape.share_below_10 * static_cast<double>(mesh.triangle_count()), shape.min_angle.min);
+    const SmallAngleCount small = count_small_angles(mesh, 10.0);
+    if (small.triangles > 0)
+      std::fprintf(out,
+                   "warning: %zu triangles have an angle under 10 degrees (smallest %.2g): the surface turns "
+                   "within an edge there (a smaller --edge-length or --max-error resolves it)\n",
+                   small.triangles, small.smallest);
   }
   if (const SelfIntersectionReport r = find_self_intersections(mesh); r.pairs > 0)
     std::fprintf(

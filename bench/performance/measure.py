@@ -13,8 +13,9 @@ import runs
 import systems
 
 REMESH_TOLERANCE = 0.05
-SYSTEMS = ["default 2t", "default 1t", "default 4t", "preview", "fine", "pipeline", "raw", "cgal", "fe", "fe + remesh"]
-ANALYSED = ["default 2t", "preview", "fine", "pipeline", "raw", "cgal", "fe", "fe + remesh"]
+SYSTEMS = ["default 2t", "default 1t", "default 4t", "preview", "fine", "pipeline", systems.FINE_PIPELINE, "raw",
+           "cgal", "fe", "fe + remesh"]
+ANALYSED = ["default 2t", "preview", "fine", "pipeline", systems.FINE_PIPELINE, "raw", "cgal", "fe", "fe + remesh"]
 
 
 @dataclass
@@ -75,6 +76,31 @@ def _fit(tools, surface, target, side, tag, known, quality):
     return run
 
 
+def fit_flying_edges(tools, surface, count, known, tag) -> systems.Timed:
+    """VTK Flying Edges on 2 threads with the grid whose vertex count is closest to `count`. V ~ c g^2:
+    `known["fe_c"]` (from an earlier Flying Edges run of the surface, updated here) gives the first grid."""
+    if not tools.vtk:
+        return _missing("vtk fe", "isopatch_vtk_peer not built (VTK not found)")
+    make = lambda g, out: systems.flying_edges(tools.vtk, surface, g, 2, out)  # noqa: E731
+    start = max(2, round(math.sqrt(count / known["fe_c"]))) if "fe_c" in known else 64
+    fe = matching.match_mc("", surface, count, tools.work, tag, make=make, grid=start)
+    if fe.ok:
+        known["fe_c"] = fe.vertices / fe.value**2
+    return fe
+
+
+def _fine_one_level(tools, surface, fine, default, tag) -> systems.Timed:
+    """fine at one level (`--quality fine --refine 1`) at the fine run's edge length (the default's when
+    fine failed), run once (slow, and only its quality is compared: no fitting, no repetition)."""
+    base = fine if fine.ok else default
+    if not base.ok:
+        return _missing(systems.FINE_PIPELINE, "no fine or default run to take the edge length from")
+    run = systems.isopatch(tools.isopatch, surface, base.value, systems.FINE_PIPELINE, 2,
+                           os.path.join(tools.work, f"{tag}-x.ply"))
+    runs.log_attempt(run)
+    return run
+
+
 def _fit_all(tools, name, surface, side, label, target, known) -> dict:
     """Every system fitted to the count of isopatch's default (2 threads); the chosen runs by name."""
     tag = lambda system: f"{name}-{label}-{system.replace(' ', '')}"  # noqa: E731
@@ -92,21 +118,13 @@ def _fit_all(tools, name, surface, side, label, target, known) -> dict:
         runs.analyze(tools.isopatch, d2, surface)
     for quality in ("preview", "fine", systems.PIPELINE):
         r[quality] = _fit(tools, surface, count, side, tag(quality), known, quality)
-    if tools.vtk:
-        fe_make = lambda g, out: systems.flying_edges(tools.vtk, surface, g, 2, out)  # noqa: E731
-        # V ~ c g^2: an earlier size's Flying Edges run gives the first grid
-        start = max(2, round(math.sqrt(count / known["fe_c"]))) if "fe_c" in known else 64
-        fe = matching.match_mc("", surface, count, tools.work, tag("fe"), make=fe_make, grid=start)
-        r["fe"] = fe
-        if fe.ok:
-            known["fe_c"] = fe.vertices / fe.value**2
-            r["fe + remesh"] = _fit_remesh(tools, fe, count, tag("remesh")) if tools.remesh else _missing(
-                "fe + remesh", "isopatch_cgal_remesh not built (CGAL not found)")
-        else:
-            r["fe + remesh"] = _missing("fe + remesh", "Flying Edges failed")
+    r[systems.FINE_PIPELINE] = _fine_one_level(tools, surface, r["fine"], d2, tag(systems.FINE_PIPELINE))
+    r["fe"] = fit_flying_edges(tools, surface, count, known, tag("fe"))
+    if r["fe"].ok:
+        r["fe + remesh"] = _fit_remesh(tools, r["fe"], count, tag("remesh")) if tools.remesh else _missing(
+            "fe + remesh", "isopatch_cgal_remesh not built (CGAL not found)")
     else:
-        r["fe"] = _missing("vtk fe", "isopatch_vtk_peer not built (VTK not found)")
-        r["fe + remesh"] = _missing("fe + remesh", "isopatch_vtk_peer not built (VTK not found)")
+        r["fe + remesh"] = _missing("fe + remesh", r["fe"].error if not tools.vtk else "Flying Edges failed")
     if tools.cgal:
         radius = matching.cgal_first_radius(known.setdefault("cgal", []), d2 if d2.analysis else None, count, side)
         c = matching.match_cgal(tools.cgal, surface, count, radius, tools.work, tag("cgal"))
@@ -119,8 +137,9 @@ def _fit_all(tools, name, surface, side, label, target, known) -> dict:
 
 
 def _again(tools, surface, name, run, chosen):
-    """A function that repeats `run` (same knob, same output file), or None when it is not repeated."""
-    if not run.ok or name == "default 4t":
+    """A function that repeats `run` (same knob, same output file), or None when it is not repeated (4
+    threads: only its bytes count; fine at one level: slow, only its quality counts)."""
+    if not run.ok or name in ("default 4t", systems.FINE_PIPELINE):
         return None
     if name.startswith("default") or name in ("preview", "fine", "pipeline", "raw"):
         return lambda: systems.isopatch(tools.isopatch, surface, run.value, run.quality, run.threads, run.mesh)

@@ -32,6 +32,7 @@ class Timed(runs.Run):
     input_vertices: int | None = None
     notes: list[str] = field(default_factory=list)  # oddities seen while measuring
     reference: "Timed | None" = None  # the large run: the small run of the same surface timed around it
+    fe: "Timed | None" = None  # the large run: VTK Flying Edges fitted to its vertex count
     cpu_ms: list[float] = field(default_factory=list)  # user + system time of each timed process, whole run
 
 
@@ -100,15 +101,19 @@ def read_stats(run: Timed, path: str) -> None:
 
 RAW = "raw"  # not a preset: the paper's method alone, `--refine 1 --remesh 0` (no clean-up at all)
 PIPELINE = "pipeline"  # not a preset: the default without multiresolution, `--refine 1` (the whole-mesh clean-up)
+FINE_PIPELINE = "fine pipeline"  # not a preset: fine without multiresolution, `--quality fine --refine 1`
 
 
 def quality_arguments(quality: str) -> list[str]:
     """The command-line arguments of a preset name, of RAW (the default's partition and patches with
-    the clean-up switched off) or of PIPELINE (the default at one level: patches and clean-up)."""
+    the clean-up switched off), of PIPELINE (the default at one level: patches and clean-up) or of
+    FINE_PIPELINE (fine at one level)."""
     if quality == RAW:
         return ["--quality", "default", "--refine", "1", "--remesh", "0"]
     if quality == PIPELINE:
         return ["--quality", "default", "--refine", "1"]
+    if quality == FINE_PIPELINE:
+        return ["--quality", "fine", "--refine", "1"]
     return ["--quality", quality]
 
 

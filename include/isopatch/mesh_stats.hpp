@@ -138,10 +138,12 @@ struct MeshWarnings {
 
 /// What multiresolution meshing did (RefineSettings): the level used and what its base was.
 struct RefineStats {
-  int level = 1;                   ///< k of the output (1: the base is the output)
-  int attempts = 0;                ///< bases meshed (a failed guard or a curvature step adds one)
-  double target_edge = 0.0;        ///< h, the target (largest) edge length
-  double largest_curvature = 0.0;  ///< over the first base's vertices (automatic level)
+  int level = 1;                     ///< k of the output (1: the base is the output)
+  int first_level = 1;               ///< the first level tried
+  int attempts = 0;                  ///< bases meshed (a failed guard or a curvature step adds one)
+  double target_edge = 0.0;          ///< h, the target (largest) edge length
+  double largest_curvature = 0.0;    ///< over the first base's vertices (automatic level)
+  double estimated_curvature = 0.0;  ///< the coarse grid's first guess of it (automatic level)
   std::size_t base_vertices = 0;
   std::size_t base_triangles = 0;
   std::size_t failed_points = 0;           ///< of the refinements given up (their level halved)

@@ -93,4 +93,14 @@ ShapeReport analyze_shape(const Mesh& mesh);
 ValenceReport analyze_valence(const Mesh& mesh);
 AccuracyReport analyze_accuracy(const Mesh& mesh, const Surface& surface);
 
+/// Triangles with an angle under some limit, and the smallest angle of all.
+struct SmallAngleCount {
+  std::size_t triangles = 0;  ///< with their smallest angle under the limit
+  double smallest = 180.0;    ///< degrees, over every triangle (180 for a mesh without triangles)
+};
+/// Counts the triangles of `mesh` whose smallest angle is under `degrees`: analyze_shape's min-angle
+/// figures in one pass and no memory beyond the mesh (for meshes of millions of triangles).
+/// 	hrow InputError as analyze_shape.
+SmallAngleCount count_small_angles(const Mesh& mesh, double degrees);
+
 }  // namespace isopatch

@@ -20,6 +20,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 namespace isopatch {
 namespace {
@@ -175,19 +176,34 @@ float round_up(double x) {
   return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-/// A box in floats rounded outwards (it holds the double box, so overlaps are never missed; the exact
-/// triangle test decides): half the memory of doubles, for meshes of millions of triangles.
+/// A triangle's box, in doubles: computed when needed from the positions, so that the tree keeps no
+/// box per triangle (a 1M-vertex mesh has 2M triangles: 48 MB of boxes otherwise).
+struct TriangleBox {
+  Vec3 lo, hi;
+  TriangleBox() = default;
+  TriangleBox(const Mesh& mesh, std::uint32_t t) {
+    const Triangle& tri = mesh.triangles[t];
+    lo = hi = mesh.positions[tri[0]];
+    for (int k = 1; k < 3; ++k) {
+      lo = lo.cwiseMin(mesh.positions[tri[static_cast<std::size_t>(k)]]);
+      hi = hi.cwiseMax(mesh.positions[tri[static_cast<std::size_t>(k)]]);
+    }
+  }
+  bool overlaps(const TriangleBox& b) const {
+    return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all();
+  }
+};
+
+/// A node's box in floats rounded outwards (it holds the triangles' double boxes, so overlaps are never
+/// missed; the exact triangle test decides): half the memory of doubles.
 struct BoxOf {
   Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity());
   Eigen::Vector3f hi = Eigen::Vector3f::Constant(-std::numeric_limits<float>::infinity());
-  static BoxOf around(const Vec3& p) {
-    BoxOf b;
-    for (int a = 0; a < 3; ++a) b.lo[a] = round_down(p[a]), b.hi[a] = round_up(p[a]);
-    return b;
-  }
-  void add(const BoxOf& b) {
-    lo = lo.cwiseMin(b.lo);
-    hi = hi.cwiseMax(b.hi);
+  void add(const TriangleBox& b) {
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], round_down(b.lo[a]));
+      hi[a] = std::max(hi[a], round_up(b.hi[a]));
+    }
   }
   bool overlaps(const BoxOf& b) const {
     return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all();
@@ -200,12 +216,16 @@ constexpr std::size_t kTrianglesPerJob = 1024;
 
 class TriangleTree {
  public:
-  static constexpr std::size_t kLeafSize = 4;
+  /// Leaves hold at most this many triangles (between half of it and it, the splits being medians).
+  static constexpr std::size_t kLeafSize = 8;
+  /// Subtrees of at least this many triangles build their two halves in parallel.
+  static constexpr std::size_t kParallelBuild = std::size_t{1} << 14;
 
-  TriangleTree(std::vector<BoxOf> boxes, std::vector<std::uint32_t> order)
-      : boxes_(std::move(boxes)), order_(std::move(order)) {
-    nodes_.reserve(2 * order_.size() / kLeafSize + 2);
-    if (!order_.empty()) build(0, order_.size());
+  /// The tree over the triangles `order` of `mesh` (which must outlive it). Memory: 4 bytes per triangle
+  /// and a 32-byte node per 3 to 4 triangles.
+  TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order) : mesh_(mesh), order_(std::move(order)) {
+    nodes_.resize(node_count(order_.size()));
+    if (!order_.empty()) build(0, 0, order_.size());
   }
 
   /// Calls visit(i, j) once for every pair of triangles (i != j) whose boxes overlap, until it
@@ -234,40 +254,68 @@ class TriangleTree {
   }
 
  private:
+  /// 36 bytes: nodes are stored depth first, so an inner node's left child follows it.
   struct Node {
     BoxOf box;
-    std::uint32_t begin = 0, end = 0;   // triangle range in order_ (leaves)
-    std::uint32_t left = 0, right = 0;  // children (inner nodes; left == 0 for leaves)
-    bool leaf() const { return left == 0; }
+    std::uint32_t begin = 0, end = 0;  // triangle range in order_
+    std::uint32_t right = 0;           // the right child of an inner node; 0 for leaves
+    bool leaf() const { return right == 0; }
   };
 
-  std::size_t build(std::size_t begin, std::size_t end) {
-    const std::size_t index = nodes_.size();
-    nodes_.emplace_back();
-    BoxOf box, centres;
-    for (std::size_t k = begin; k < end; ++k) {
-      const BoxOf& b = boxes_[order_[k]];
-      box.add(b);
-      const Eigen::Vector3f c = 0.5f * (b.lo + b.hi);
-      centres.add(BoxOf{c, c});
+  /// The nodes of a tree over n triangles (the splits of build()).
+  static std::size_t node_count(std::size_t n) {
+    if (n <= kLeafSize) return n > 0 ? 1 : 0;
+    return 1 + node_count(n / 2) + node_count(n - n / 2);
+  }
+
+  /// Builds the subtree over order_[begin, end) at nodes_[index] (its nodes at index..index +
+  /// node_count(end - begin) - 1, depth first). Splits at the median of the triangles' first corners
+  /// along the longest axis of their spread (any split gives the same pairs; this one costs one
+  /// position per triangle and level); boxes are made bottom-up, rounded once per leaf. Large subtrees
+  /// are built in parallel: the node numbers are fixed in advance, so the tree is the same for any
+  /// number of threads.
+  void build(std::size_t index, std::size_t begin, std::size_t end) {
+    Node& node = nodes_[index];
+    node.begin = static_cast<std::uint32_t>(begin);
+    node.end = static_cast<std::uint32_t>(end);
+    if (end - begin <= kLeafSize) {
+      TriangleBox box(mesh_, order_[begin]);
+      for (std::size_t k = begin + 1; k < end; ++k) {
+        const TriangleBox b(mesh_, order_[k]);
+        box.lo = box.lo.cwiseMin(b.lo);
+        box.hi = box.hi.cwiseMax(b.hi);
+      }
+      node.box.add(box);
+      return;
     }
-    nodes_[index].box = box;
-    nodes_[index].begin = static_cast<std::uint32_t>(begin);
-    nodes_[index].end = static_cast<std::uint32_t>(end);
-    if (end - begin <= kLeafSize) return index;
+    const auto first_corner = [&](std::uint32_t t) -> const Vec3& {
+      return mesh_.positions[mesh_.triangles[t][0]];
+    };
+    Vec3 lo = first_corner(order_[begin]), hi = lo;
+    for (std::size_t k = begin + 1; k < end; ++k) {
+      lo = lo.cwiseMin(first_corner(order_[k]));
+      hi = hi.cwiseMax(first_corner(order_[k]));
+    }
     int axis = 0;
-    (centres.hi - centres.lo).maxCoeff(&axis);
+    (hi - lo).maxCoeff(&axis);
     const std::size_t middle = begin + (end - begin) / 2;
-    const auto centre = [&](std::size_t t) { return boxes_[t].lo[axis] + boxes_[t].hi[axis]; };
-    std::nth_element(order_.begin() + static_cast<std::ptrdiff_t>(begin),
-                     order_.begin() + static_cast<std::ptrdiff_t>(middle),
-                     order_.begin() + static_cast<std::ptrdiff_t>(end),
-                     [&](std::uint32_t a, std::uint32_t b) { return centre(a) < centre(b); });
-    const std::size_t left = build(begin, middle);
-    const std::size_t right = build(middle, end);
-    nodes_[index].left = static_cast<std::uint32_t>(left);
-    nodes_[index].right = static_cast<std::uint32_t>(right);
-    return index;
+    std::nth_element(
+        order_.begin() + static_cast<std::ptrdiff_t>(begin),
+        order_.begin() + static_cast<std::ptrdiff_t>(middle),
+        order_.begin() + static_cast<std::ptrdiff_t>(end),
+        [&](std::uint32_t a, std::uint32_t b) { return first_corner(a)[axis] < first_corner(b)[axis]; });
+    const std::size_t left = index + 1;
+    const std::size_t right = left + node_count(middle - begin);
+    node.right = static_cast<std::uint32_t>(right);
+    if (end - begin >= kParallelBuild)
+      tbb::parallel_invoke([&] { build(left, begin, middle); }, [&] { build(right, middle, end); });
+    else {
+      build(left, begin, middle);
+      build(right, middle, end);
+    }
+    node.box = nodes_[left].box;
+    node.box.lo = node.box.lo.cwiseMin(nodes_[right].box.lo);
+    node.box.hi = node.box.hi.cwiseMax(nodes_[right].box.hi);
   }
 
   void self_jobs(std::size_t n, std::size_t grain, std::vector<Job>& out) const {
@@ -276,9 +324,9 @@ class TriangleTree {
       out.push_back({n, n, true});
       return;
     }
-    self_jobs(node.left, grain, out);  // the order of self_pairs
+    self_jobs(n + 1, grain, out);  // the order of self_pairs
     self_jobs(node.right, grain, out);
-    cross_jobs(node.left, node.right, grain, out);
+    cross_jobs(n + 1, node.right, grain, out);
   }
 
   void cross_jobs(std::size_t m, std::size_t n, std::size_t grain, std::vector<Job>& out) const {
@@ -290,10 +338,10 @@ class TriangleTree {
       return;
     }
     if (splits_first(a, b)) {  // the order of cross_pairs
-      cross_jobs(a.left, n, grain, out);
+      cross_jobs(m + 1, n, grain, out);
       cross_jobs(a.right, n, grain, out);
     } else {
-      cross_jobs(m, b.left, grain, out);
+      cross_jobs(m, n + 1, grain, out);
       cross_jobs(m, b.right, grain, out);
     }
   }
@@ -303,17 +351,26 @@ class TriangleTree {
     return !a.leaf() && (b.leaf() || a.end - a.begin >= b.end - b.begin);
   }
 
+  /// The boxes of a leaf's triangles, into `boxes` (kLeafSize of them); returns their count.
+  std::size_t leaf_boxes(const Node& leaf, TriangleBox* boxes) const {
+    for (std::uint32_t k = leaf.begin; k < leaf.end; ++k)
+      boxes[k - leaf.begin] = TriangleBox(mesh_, order_[k]);
+    return leaf.end - leaf.begin;
+  }
+
   template <class Visit>
   bool self_pairs(std::size_t n, Visit& visit) const {
     const Node& node = nodes_[n];
     if (node.leaf()) {
-      for (std::size_t a = node.begin; a < node.end; ++a)
-        for (std::size_t b = a + 1; b < node.end; ++b)
-          if (boxes_[order_[a]].overlaps(boxes_[order_[b]]) && !visit(order_[a], order_[b])) return false;
+      TriangleBox boxes[kLeafSize];
+      const std::size_t count = leaf_boxes(node, boxes);
+      for (std::size_t a = 0; a < count; ++a)
+        for (std::size_t b = a + 1; b < count; ++b)
+          if (boxes[a].overlaps(boxes[b]) && !visit(order_[node.begin + a], order_[node.begin + b]))
+            return false;
       return true;
     }
-    return self_pairs(node.left, visit) && self_pairs(node.right, visit) &&
-           cross_pairs(node.left, node.right, visit);
+    return self_pairs(n + 1, visit) && self_pairs(node.right, visit) && cross_pairs(n + 1, node.right, visit);
   }
 
   template <class Visit>
@@ -322,16 +379,19 @@ class TriangleTree {
     const Node& b = nodes_[n];
     if (!a.box.overlaps(b.box)) return true;
     if (a.leaf() && b.leaf()) {
-      for (std::size_t i = a.begin; i < a.end; ++i)
-        for (std::size_t j = b.begin; j < b.end; ++j)
-          if (boxes_[order_[i]].overlaps(boxes_[order_[j]]) && !visit(order_[i], order_[j])) return false;
+      TriangleBox boxes_a[kLeafSize], boxes_b[kLeafSize];
+      const std::size_t count_a = leaf_boxes(a, boxes_a), count_b = leaf_boxes(b, boxes_b);
+      for (std::size_t i = 0; i < count_a; ++i)
+        for (std::size_t j = 0; j < count_b; ++j)
+          if (boxes_a[i].overlaps(boxes_b[j]) && !visit(order_[a.begin + i], order_[b.begin + j]))
+            return false;
       return true;
     }
-    if (splits_first(a, b)) return cross_pairs(a.left, n, visit) && cross_pairs(a.right, n, visit);
-    return cross_pairs(m, b.left, visit) && cross_pairs(m, b.right, visit);
+    if (splits_first(a, b)) return cross_pairs(m + 1, n, visit) && cross_pairs(a.right, n, visit);
+    return cross_pairs(m, n + 1, visit) && cross_pairs(m, b.right, visit);
   }
 
-  std::vector<BoxOf> boxes_;
+  const Mesh& mesh_;
   std::vector<std::uint32_t> order_;
   std::vector<Node> nodes_;
 };
@@ -342,18 +402,13 @@ SelfIntersectionReport find_self_intersections(const Mesh& mesh, std::size_t lim
   analysis::check_mesh(mesh, "find_self_intersections");
   if (mesh.triangles.size() >= std::numeric_limits<std::uint32_t>::max())
     throw InputError("find_self_intersections: more than 2^32 triangles");
-  std::vector<BoxOf> boxes(mesh.triangles.size());
   std::vector<std::uint32_t> order;
   order.reserve(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Triangle& tri = mesh.triangles[t];
-    if (analysis::repeats_vertex(tri)) continue;
-    for (std::uint32_t v : tri) boxes[t].add(BoxOf::around(mesh.positions[v]));
-    order.push_back(static_cast<std::uint32_t>(t));
-  }
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    if (!analysis::repeats_vertex(mesh.triangles[t])) order.push_back(static_cast<std::uint32_t>(t));
   SelfIntersectionReport report;
   if (limit == 0) return report;
-  const TriangleTree tree(std::move(boxes), std::move(order));
+  const TriangleTree tree(mesh, std::move(order));
   // The scan in pieces, in parallel; each piece counts its own pairs (up to the limit) and keeps its
   // first. In the pieces' order, the first piece with a pair has the scan's first pair: the same report
   // as one scan, for any number of threads.

@@ -80,6 +80,18 @@ ShapeReport analyze_shape(const Mesh& mesh) {
   return report;
 }
 
+SmallAngleCount count_small_angles(const Mesh& mesh, double degrees) {
+  analysis::check_mesh(mesh, "count_small_angles");
+  SmallAngleCount count;
+  for (const Triangle& tri : mesh.triangles) {
+    const double angle =
+        triangle_shape(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]).min_angle;
+    if (angle < degrees) ++count.triangles;
+    count.smallest = std::min(count.smallest, angle);
+  }
+  return count;
+}
+
 ValenceReport analyze_valence(const Mesh& mesh) {
   analysis::check_mesh(mesh, "analyze_valence");
   const analysis::MeshNeighbourhood hood = analysis::mesh_neighbourhood(mesh);

@@ -113,18 +113,29 @@ Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats
       return mesh;
     }
     case Method::Projection: {
-      const std::uint64_t estimate_evaluations = check_estimated_size(surface, settings, box);
+      // The automatic level leaves the paper's method alone (remesh_iterations = 0) unrefined.
+      const bool refine =
+          settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0);
+      // The automatic level's first guess, from the coarse grid's curvature (not with an error bound or a
+      // size field, which keep one level: multiresolution.hpp).
+      const bool first_guess = refine && settings.refine == 0 && !settings.max_error && !settings.size_field;
+      SizeEstimate estimate;
+      if (settings.max_vertices > 0 || first_guess) {
+        estimate = estimate_size(surface, settings, box, first_guess);
+        check_estimated_size(estimate, settings, box);
+      }
       const auto one_level = [&surface](const Settings& s, MeshStats* st) {
         Mesh level = mesh_projection(surface, s, st);
         clean_up(level, surface, s, st);
         return level;
       };
-      // The automatic level leaves the paper's method alone (remesh_iterations = 0) unrefined.
-      const bool refine =
-          settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0);
-      Mesh mesh =
-          refine ? mesh_multiresolution(surface, settings, stats, one_level) : one_level(settings, stats);
-      if (stats) stats->value_evaluations += estimate_evaluations;
+      Mesh mesh = refine ? mesh_multiresolution(surface, settings, stats, one_level,
+                                                first_guess ? &estimate : nullptr)
+                         : one_level(settings, stats);
+      if (stats) {
+        stats->value_evaluations += estimate.value_evaluations;
+        stats->gradient_evaluations += estimate.gradient_evaluations;
+      }
       return mesh;
     }
   }

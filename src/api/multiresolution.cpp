@@ -52,6 +52,11 @@ RefinePreset refine_preset(Quality quality) {
 /// nRMS rose from 0.0179 and 0.0149 to 0.0198 and 0.0189, and a coarse bound gave 5 times the vertices,
 /// the base's partition refining far below its sizes). An explicit level still grades the base.
 constexpr int kGradedLevel = 1;
+/// The automatic level's floor where the curvature asks for less: at about 20k vertices on the public
+/// closed surfaces, level 2 against level 1 gave H nRMS 0.86 to 1.04 times and about 3 times the
+/// speed, with smallest angles of 25.7 degrees and more (docs/algorithms.md 8.4). The guard and the angle
+/// floor still drop it to 1.
+constexpr int kLeastAutomaticLevel = 2;
 /// An automatic level whose refined mesh keeps a triangle under this smallest angle (degrees) is halved:
 /// the base was too coarse somewhere for its curvature.
 constexpr double kAngleFloor = 20.0;
@@ -67,6 +72,17 @@ Settings base_settings(const Settings& settings, double edge, int level) {
   return s;
 }
 
+/// The automatic level at most `ceiling` for a surface of largest curvature `kappa` whose mesh at the
+/// target edge length `edge` has about `vertices` vertices: the curvature's level (at least
+/// kLeastAutomaticLevel), lowered so that the base keeps the preset's fewest vertices.
+int automatic_level(const RefinePreset& preset, double kappa, double edge, double vertices, int ceiling) {
+  const int by_curvature = std::max(refine::level_for_curvature(kappa, edge, preset.max_turn, ceiling),
+                                    std::min(kLeastAutomaticLevel, ceiling));
+  const int by_size = static_cast<int>(
+      std::clamp(std::floor(std::sqrt(vertices / preset.min_base)), 1.0, static_cast<double>(ceiling)));
+  return std::min(by_curvature, by_size);
+}
+
 /// Adds the evaluations and stage times of `from` to `into`.
 void add_costs(MeshStats& into, const MeshStats& from) {
   into.value_evaluations += from.value_evaluations;
@@ -77,7 +93,7 @@ void add_costs(MeshStats& into, const MeshStats& from) {
 }  // namespace
 
 Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
-                          const LevelMesher& mesh_level) {
+                          const LevelMesher& mesh_level, const SizeEstimate* estimate) {
   const auto start = std::chrono::steady_clock::now();
   const Box box = settings.box.value_or(surface.box());
   const double edge = default_edge_length(settings, box);
@@ -85,9 +101,13 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
   const RefinePreset preset = refine_preset(settings.quality);
   const bool automatic = settings.refine == 0;
   int level = !automatic ? settings.refine : graded ? kGradedLevel : preset.max_level;
-
   RefineStats info;
   info.target_edge = edge;
+  if (automatic && !graded && estimate) {
+    info.estimated_curvature = estimate->largest_curvature;
+    level = automatic_level(preset, estimate->largest_curvature, edge, estimate->vertices, level);
+  }
+  info.first_level = level;
   MeshStats spent;       // every attempt's evaluations and times
   MeshStats base_stats;  // the last base's
   Mesh base;
@@ -131,12 +151,9 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
   if (level > 1) {
     if (automatic && !graded) {
       info.largest_curvature = refine::largest_curvature(base, surface);
-      int resolved = refine::level_for_curvature(info.largest_curvature, edge, preset.max_turn, level);
-      // About base_vertices * level^2 output vertices: the level that leaves min_base in the base.
-      const double base_vertices = static_cast<double>(base.vertex_count());
-      if (base_vertices < preset.min_base)
-        resolved = std::min(
-            resolved, std::max(1, static_cast<int>(level * std::sqrt(base_vertices / preset.min_base))));
+      // About base_vertices * level^2 output vertices.
+      const double output_vertices = static_cast<double>(base.vertex_count()) * level * level;
+      const int resolved = automatic_level(preset, info.largest_curvature, edge, output_vertices, level);
       if (resolved < level) level = usable_level(resolved);
     }
   }

@@ -8,6 +8,8 @@
 #include <isopatch/settings.hpp>
 #include <isopatch/surface.hpp>
 
+#include "api/size_estimate.hpp"
+
 #include <functional>
 
 namespace isopatch {
@@ -18,8 +20,12 @@ using LevelMesher = std::function<Mesh(const Settings&, MeshStats*)>;
 /// The multiresolution mesh of `surface` (settings.refine != 1, projection). `mesh_level` meshes the
 /// bases (and the output itself when the level ends at 1); stats, when given, are those of the final
 /// base with the evaluations and times of every attempt added and MeshStats::refine filled.
+/// `estimate`, when given (the automatic level), sets the first level tried: the largest whose base
+/// edge turns the normal by at most the preset's max_turn at the estimate's largest curvature and
+/// leaves the preset's fewest base vertices; without it the first base is made at the preset's
+/// ceiling. Either way the level is then checked on the base's own curvature.
 /// \throw as mesh_surface(): SettingError, LimitError (budgets, cancel, max_vertices), EvaluationError.
 Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
-                          const LevelMesher& mesh_level);
+                          const LevelMesher& mesh_level, const SizeEstimate* estimate = nullptr);
 
 }  // namespace isopatch

@@ -93,9 +93,11 @@ void visit_stats(
   if (const auto& r = stats.refine) {
     const auto v = [&](std::string_view name, double value) { visit("refine", name, value); };
     v("level", r->level);
+    v("first_level", r->first_level);
     v("attempts", r->attempts);
     v("target_edge", r->target_edge);
     v("largest_curvature", r->largest_curvature);
+    v("estimated_curvature", r->estimated_curvature);
     v("base_vertices", count(r->base_vertices));
     v("base_triangles", count(r->base_triangles));
     v("failed_points", count(r->failed_points));

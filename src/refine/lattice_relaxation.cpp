@@ -1,6 +1,9 @@
 // Jacobi relaxation of a refined mesh on f = 0 (lattice_relaxation.hpp).
 #include "refine/lattice_relaxation.hpp"
 
+#include <algorithm>
+#include <array>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -19,14 +22,20 @@ Vec3 as_vec3(const Eigen::Vector3f& v) {
 
 }  // namespace
 
-bool faces_the_surface(const std::vector<Vec3>& positions, const std::vector<Eigen::Vector3f>& normals,
-                       const Triangle& t) {
-  const Vec3 normal = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]);
+bool faces_the_surface(const Vec3& a, const Vec3& b, const Vec3& c,
+                       const std::array<Eigen::Vector3f, 3>& corner_normals) {
+  const Vec3 normal = (b - a).cross(c - a);
   const double length = normal.norm();
   if (!(length > 0.0)) return false;
-  for (const std::uint32_t v : t)
-    if (!(normal.dot(as_vec3(normals[v])) > remesh_thresholds::kMinNormalDot * length)) return false;
+  for (const Eigen::Vector3f& n : corner_normals)
+    if (!(normal.dot(as_vec3(n)) > remesh_thresholds::kMinNormalDot * length)) return false;
   return true;
+}
+
+bool faces_the_surface(const std::vector<Vec3>& positions, const std::vector<Eigen::Vector3f>& normals,
+                       const Triangle& t) {
+  return faces_the_surface(positions[t[0]], positions[t[1]], positions[t[2]],
+                           {normals[t[0]], normals[t[1]], normals[t[2]]});
 }
 
 double smallest_angle_degrees(const Mesh& mesh, const Triangle& t) {
@@ -37,7 +46,7 @@ LatticeRelaxation::LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& n
                                      const std::vector<Motion>& motion, const LatticeLayout& layout,
                                      const BaseEdges& edges, const std::vector<int>& edge_plane,
                                      const Sampler& f, const BoundaryPlanes& planes,
-                                     const NewtonLimits& limits)
+                                     const NewtonLimits& limits, std::size_t block)
     : mesh_(mesh),
       normals_(normals),
       motion_(motion),
@@ -47,6 +56,7 @@ LatticeRelaxation::LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& n
       f_(f),
       planes_(planes),
       limits_(limits),
+      block_(std::max<std::size_t>(block, 1)),
       rings_(mesh.vertex_count(), mesh.triangles) {}
 
 bool LatticeRelaxation::target(std::uint32_t v, Vec3& to, int& plane) const {
@@ -83,14 +93,20 @@ bool LatticeRelaxation::target(std::uint32_t v, Vec3& to, int& plane) const {
 }
 
 std::size_t LatticeRelaxation::sweep(const std::vector<std::uint8_t>* subset) {
-  const std::size_t n = mesh_.vertex_count();
-  next_ = mesh_.positions;
-  next_normals_ = normals_;
-  moved_.assign(n, 0);
-  std::vector<Vec3>& next = next_;
-  std::vector<Eigen::Vector3f>& next_normals = next_normals_;
-  std::vector<std::uint8_t>& moved = moved_;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kChunk),
+  std::size_t undone = 0;
+  for (std::size_t begin = 0; begin < mesh_.vertex_count(); begin += block_)
+    undone += sweep_block(begin, std::min(mesh_.vertex_count(), begin + block_), subset);
+  return undone;
+}
+
+std::size_t LatticeRelaxation::sweep_block(std::size_t begin, std::size_t end,
+                                           const std::vector<std::uint8_t>* subset) {
+  next_.assign(mesh_.positions.begin() + static_cast<std::ptrdiff_t>(begin),
+               mesh_.positions.begin() + static_cast<std::ptrdiff_t>(end));
+  next_normals_.assign(normals_.begin() + static_cast<std::ptrdiff_t>(begin),
+                       normals_.begin() + static_cast<std::ptrdiff_t>(end));
+  moved_.assign(end - begin, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, kChunk),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       std::vector<NewtonPoint> points;
                       std::vector<std::uint32_t> ids;
@@ -108,40 +124,51 @@ std::size_t LatticeRelaxation::sweep(const std::vector<std::uint8_t>* subset) {
                       land_on_surface(f_, planes_, points, limits_);
                       for (std::size_t i = 0; i < points.size(); ++i) {
                         if (points[i].landing != Landing::Ok) continue;
-                        next[ids[i]] = points[i].position;
-                        next_normals[ids[i]] = points[i].normal.cast<float>();
-                        moved[ids[i]] = 1;
+                        next_[ids[i] - begin] = points[i].position;
+                        next_normals_[ids[i] - begin] = points[i].normal.cast<float>();
+                        moved_[ids[i] - begin] = 1;
                       }
                     });
+  const auto moved = [&](std::uint32_t v) { return v >= begin && v < end && moved_[v - begin]; };
+  const auto position = [&](std::uint32_t v) -> const Vec3& {
+    return moved(v) ? next_[v - begin] : mesh_.positions[v];
+  };
+  const auto normal = [&](std::uint32_t v) -> const Eigen::Vector3f& {
+    return moved(v) ? next_normals_[v - begin] : normals_[v];
+  };
   // Undo the moves that leave a triangle turned away from the surface, until none does (the positions
   // before the sweep are valid, so this ends).
   std::size_t undone = 0;
   for (bool changed = true; changed;) {
     changed = false;
-    std::vector<std::uint8_t>& invalid = invalid_;
-    invalid.assign(mesh_.triangles.size(), 0);
+    invalid_.assign(mesh_.triangles.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh_.triangles.size(), kChunk),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t t = r.begin(); t != r.end(); ++t) {
                           const Triangle& tri = mesh_.triangles[t];
-                          if (!moved[tri[0]] && !moved[tri[1]] && !moved[tri[2]]) continue;
-                          invalid[t] = faces_the_surface(next, next_normals, tri) ? 0 : 1;
+                          if (!moved(tri[0]) && !moved(tri[1]) && !moved(tri[2])) continue;
+                          invalid_[t] =
+                              faces_the_surface(position(tri[0]), position(tri[1]), position(tri[2]),
+                                                {normal(tri[0]), normal(tri[1]), normal(tri[2])})
+                                  ? 0
+                                  : 1;
                         }
                       });
-    for (std::size_t t = 0; t < invalid.size(); ++t) {
-      if (!invalid[t]) continue;
+    for (std::size_t t = 0; t < invalid_.size(); ++t) {
+      if (!invalid_[t]) continue;
       for (std::uint32_t v : mesh_.triangles[t]) {
-        if (!moved[v]) continue;
-        next[v] = mesh_.positions[v];
-        next_normals[v] = normals_[v];
-        moved[v] = 0;
+        if (!moved(v)) continue;
+        moved_[v - begin] = 0;
         ++undone;
         changed = true;
       }
     }
   }
-  mesh_.positions.swap(next);
-  normals_.swap(next_normals);
+  for (std::size_t v = begin; v < end; ++v)
+    if (moved_[v - begin]) {
+      mesh_.positions[v] = next_[v - begin];
+      normals_[v] = next_normals_[v - begin];
+    }
   return undone;
 }
 

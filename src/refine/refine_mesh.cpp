@@ -209,7 +209,8 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
   }
   report(params, layout.vertex_count(), total_work);
 
-  LatticeRelaxation relaxation(mesh, normals, motion, layout, edges, edge_plane, f, planes, limits);
+  LatticeRelaxation relaxation(mesh, normals, motion, layout, edges, edge_plane, f, planes, limits,
+                               params.sweep_block);
   for (int s = 0; s < params.sweeps; ++s) {
     check_cancel(params);
     result.rejected_moves += relaxation.sweep();

@@ -24,6 +24,8 @@
 #include <isopatch/stage_settings.hpp>
 #include <isopatch/surface.hpp>
 
+#include "refine/lattice_relaxation.hpp"
+
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -32,13 +34,14 @@
 namespace isopatch::refine {
 
 struct RefineParams {
-  int level = 2;                 ///< k: every base edge cut into k segments, 1..kMaxLevel
-  int sweeps = 2;                ///< relaxation sweeps over the whole mesh
-  int angle_sweeps = 4;          ///< sweeps over the vertices near triangles under angle_target
-  double angle_target = 30.0;    ///< degrees
-  std::optional<Box> box;        ///< the box the mesh is cut by (its faces hold the cut)
-  ConvexRegion region;           ///< region planes the mesh is cut by
-  std::size_t max_vertices = 0;  ///< refuse a larger output before any work (0: no limit)
+  int level = 2;                          ///< k: every base edge cut into k segments, 1..kMaxLevel
+  int sweeps = 2;                         ///< relaxation sweeps over the whole mesh
+  int angle_sweeps = 4;                   ///< sweeps over the vertices near triangles under angle_target
+  double angle_target = 30.0;             ///< degrees
+  std::optional<Box> box;                 ///< the box the mesh is cut by (its faces hold the cut)
+  ConvexRegion region;                    ///< region planes the mesh is cut by
+  std::size_t max_vertices = 0;           ///< refuse a larger output before any work (0: no limit)
+  std::size_t sweep_block = kSweepBlock;  ///< vertices per block of a relaxation sweep (>= 1)
   const std::atomic<bool>* cancel = nullptr;
   std::function<void(const Progress&)> progress;  ///< may be empty
 };

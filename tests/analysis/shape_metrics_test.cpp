@@ -84,6 +84,13 @@ TEST(Shape, ThinAndDegenerateTrianglesAreCountedBelowThresholds) {
   EXPECT_NEAR(s.min_angle.median, std::atan(0.1) * 180.0 / std::numbers::pi, 1e-9);
   EXPECT_NEAR(s.share_below_10, 2.0 / 3.0, 1e-15);
   EXPECT_NEAR(s.share_below_30, 2.0 / 3.0, 1e-15);
+  // The one-pass count agrees with the report.
+  const SmallAngleCount small = count_small_angles(m, 10.0);
+  EXPECT_EQ(small.triangles, 2u);
+  EXPECT_EQ(small.smallest, 0.0);
+  EXPECT_EQ(count_small_angles(m, 5.0).triangles, 1u);
+  EXPECT_EQ(count_small_angles(m, 60.5).triangles, 3u);
+  EXPECT_EQ(count_small_angles(Mesh{}, 10.0).smallest, 180.0);
 }
 
 TEST(Shape, IcosahedronIsEquilateralEverywhere) {

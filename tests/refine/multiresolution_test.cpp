@@ -61,6 +61,30 @@ TEST(Multiresolution, TightlyBentSurfacesGetASmallerLevelAndKeepTheFloor) {
   expect_closed_floor(mesh, *s, 2, 0.90, 20.0);
 }
 
+TEST(Multiresolution, WhereTheCurvatureAsksForLevelOneTheGuardedLevelTwoBeatsIt) {
+  // genus2's tubes (curvature about 40) turn the normal by more than 0.4 rad over one edge of 0.014: the
+  // curvature alone allows no refinement, but the least automatic level (2) passes the guard and the
+  // angle floor, with no higher a curvature error than one level and a quarter of its clean-up.
+  const SurfacePtr s = test::genus2();
+  Settings settings;
+  settings.edge_length = 0.014;
+  MeshStats stats, one_stats;
+  const Mesh mesh = mesh_surface(*s, settings, &stats);
+  ASSERT_TRUE(stats.refine);
+  EXPECT_EQ(stats.refine->level, 2);
+  EXPECT_EQ(stats.refine->first_level, 2);  // the grid's first guess: no base thrown away
+  EXPECT_EQ(stats.refine->attempts, 1);
+  EXPECT_GT(stats.refine->estimated_curvature, 30.0);
+  EXPECT_GT(2.0 * *settings.edge_length * stats.refine->largest_curvature, 0.8);  // the default's max_turn
+  expect_closed_floor(mesh, *s, 2, 0.97, 25.0);
+  settings.refine = 1;
+  const Mesh one = mesh_surface(*s, settings, &one_stats);
+  EXPECT_LT(stats.gradient_evaluations, one_stats.gradient_evaluations);
+  const double h_refined = analyze_accuracy(mesh, *s).mean_curvature.nrms;
+  const double h_one = analyze_accuracy(one, *s).mean_curvature.nrms;
+  EXPECT_LT(h_refined, 1.05 * h_one);
+}
+
 TEST(Multiresolution, SameBytesForOneTwoAndFourThreads) {
   const SurfacePtr s = test::tanglecube();
   std::vector<Mesh> meshes;
@@ -127,10 +151,16 @@ TEST(Multiresolution, AnAbsurdSizeIsRefusedAtOnceWithItsEstimate) {
   settings.max_vertices = 40'000;
   MeshStats with_estimate, without_estimate;
   EXPECT_NO_THROW(mesh_surface(*test::sphere(), settings, &with_estimate));
-  // The estimate's evaluations (a 32-cell grid) are in the run's statistics.
+  // The estimate's evaluations (a 32-cell grid) are in the run's statistics; with an explicit level
+  // the estimate is made for the budget alone.
+  ASSERT_TRUE(with_estimate.refine.has_value());
+  EXPECT_NEAR(with_estimate.refine->estimated_curvature, 1.0, 0.1);  // the unit sphere's, from the grid
+  EXPECT_EQ(with_estimate.refine->attempts, 1);                      // the first guess needs no second base
+  settings.refine = with_estimate.refine->level;
   settings.max_vertices = 0;
   mesh_surface(*test::sphere(), settings, &without_estimate);
   EXPECT_GE(with_estimate.value_evaluations, without_estimate.value_evaluations + 32 * 32 * 32);
+  EXPECT_EQ(without_estimate.refine->estimated_curvature, 0.0);
 }
 
 TEST(Multiresolution, ProgressNamesTheStagesAndCancelStopsTheRefinement) {

@@ -57,6 +57,7 @@ TEST(RefineMesh, SameBytesForAnyThreadCount) {
   const Mesh base = base_of(*s, 0.25);
   RefineParams p;
   p.level = 6;
+  p.sweep_block = 1000;  // several blocks per sweep, as on meshes of millions of vertices
   std::vector<Mesh> meshes;
   for (int threads : {1, 2, 4}) {
     tbb::task_arena arena(threads);
