@@ -38,10 +38,14 @@ RefinePreset refine_preset(Quality quality) {
     case Quality::Default:
       return {8, 0.8, 1000.0, 2, 4, 30.0};
     case Quality::Fine:
-      // The default's refinement over a base made with the fine clean-up. A smaller max_turn with more
-      // sweeps (0.5, 2000 base vertices, 4 + 8 sweeps) gave a higher H nRMS than the default at 200k on
-      // 8 of 9 surfaces and smallest angles down to 21 degrees (docs/performance.md of 830d25d).
-      return {8, 0.8, 1000.0, 2, 4, 30.0};
+      // The default's refinement over a base made with the fine clean-up, up to level 12: at about 200k
+      // vertices, level 12 against 8 gave H nRMS 0.00101 / 0.00173 (torus), 0.00005 / 0.00013
+      // (sphere), 0.00045 / 0.00060 (ellipsoid), 0.00066 / 0.00085 (blobby) and 0.00137 / 0.00107
+      // (cassini), smallest angles 25.0 to 27.0 degrees; 16 gave no less than 12 on the torus and 24.7
+      // degrees. A smaller max_turn with more sweeps (0.5, 2000 base vertices, 4 + 8 sweeps) gave a
+      // higher H nRMS than the default on 8 of 9 surfaces, and more sweeps alone (6, 12) a higher one
+      // on the torus, tanglecube and chmutov6 (docs/algorithms.md 8.4).
+      return {12, 0.8, 1000.0, 2, 4, 30.0};
   }
   return {1, 0.0, 0.0, 0, 0, 0.0};
 }

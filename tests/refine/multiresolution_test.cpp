@@ -85,6 +85,22 @@ TEST(Multiresolution, WhereTheCurvatureAsksForLevelOneTheGuardedLevelTwoBeatsIt)
   EXPECT_LT(h_refined, 1.05 * h_one);
 }
 
+TEST(Multiresolution, FineRefinesGentleSurfacesFurtherThanTheDefault) {
+  // About 150k vertices on a torus: room for a base of 1000 vertices at level 12.
+  const SurfacePtr s = test::torus();
+  Settings settings;
+  settings.edge_length = 0.011;
+  MeshStats default_stats, fine_stats;
+  const Mesh normal = mesh_surface(*s, settings, &default_stats);
+  settings.quality = Quality::Fine;
+  const Mesh fine = mesh_surface(*s, settings, &fine_stats);
+  ASSERT_TRUE(default_stats.refine && fine_stats.refine);
+  EXPECT_EQ(default_stats.refine->level, 8);
+  EXPECT_EQ(fine_stats.refine->level, 12);
+  EXPECT_LT(analyze_accuracy(fine, *s).mean_curvature.nrms, analyze_accuracy(normal, *s).mean_curvature.nrms);
+  expect_closed_floor(fine, *s, 1, 0.99, 24.0);  // the fine base's own angles (25 degrees) bent a little
+}
+
 TEST(Multiresolution, SameBytesForOneTwoAndFourThreads) {
   const SurfacePtr s = test::tanglecube();
   std::vector<Mesh> meshes;
