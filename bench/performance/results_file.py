@@ -1,8 +1,7 @@
 """results.json: every run of a performance report written out, and read back to rebuild the report
-without measuring (driver.py --from-results). Files written before the header and sizes were kept, or
-with the large run's nested runs written as text, are read too."""
+without measuring (driver.py --from-results). Files written before the header and sizes were kept are
+read too."""
 
-import ast
 import dataclasses
 import json
 
@@ -25,29 +24,10 @@ def save(path, results, large, sizes, seconds, header, loads) -> None:
         json.dump(data, f, indent=1, default=str)
 
 
-def _from_text(text: str):
-    """A run written as its repr ("Timed(system='isopatch default', ...)", older files), read as literals
-    only (no code is run); None when it is not one."""
-    try:
-        node = ast.parse(text, mode="eval").body
-    except SyntaxError:
-        return None
-    if not (isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Timed"):
-        return None
-    values = {}
-    for keyword in node.keywords:
-        inner = ast.get_source_segment(text, keyword.value)
-        values[keyword.arg] = _from_text(inner) if isinstance(keyword.value, ast.Call) else ast.literal_eval(
-            keyword.value)
-    return run_from(values)
-
-
 def run_from(data):
     """A systems.Timed from its dict (unknown keys left out, nested runs read too), or None."""
     if data is None:
         return None
-    if isinstance(data, str):
-        return _from_text(data)
     values = {k: v for k, v in data.items() if k in FIELDS}
     for nested in ("reference", "fe"):
         values[nested] = run_from(values.get(nested))

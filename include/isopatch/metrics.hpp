@@ -100,7 +100,7 @@ struct SmallAngleCount {
 };
 /// Counts the triangles of `mesh` whose smallest angle is under `degrees`: analyze_shape's min-angle
 /// figures in one pass and no memory beyond the mesh (for meshes of millions of triangles).
-/// 	hrow InputError as analyze_shape.
+/// \throw InputError as analyze_shape.
 SmallAngleCount count_small_angles(const Mesh& mesh, double degrees);
 
 }  // namespace isopatch

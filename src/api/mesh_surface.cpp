@@ -116,9 +116,8 @@ Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats
       // The automatic level leaves the paper's method alone (remesh_iterations = 0) unrefined.
       const bool refine =
           settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0);
-      // The automatic level's first guess, from the coarse grid's curvature (not with an error bound or a
-      // size field, which keep one level: multiresolution.hpp).
-      const bool first_guess = refine && settings.refine == 0 && !settings.max_error && !settings.size_field;
+      // The automatic level's first guess, from the coarse grid's curvature.
+      const bool first_guess = refine && level_from_curvature(settings);
       SizeEstimate estimate;
       if (settings.max_vertices > 0 || first_guess) {
         estimate = estimate_size(surface, settings, box, first_guess);

@@ -96,18 +96,23 @@ void add_costs(MeshStats& into, const MeshStats& from) {
 
 }  // namespace
 
+bool level_from_curvature(const Settings& settings) {
+  return settings.refine == 0 && !settings.max_error && !settings.size_field;
+}
+
 Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
                           const LevelMesher& mesh_level, const SizeEstimate* estimate) {
   const auto start = std::chrono::steady_clock::now();
   const Box box = settings.box.value_or(surface.box());
   const double edge = default_edge_length(settings, box);
-  const bool graded = settings.max_error.has_value() || static_cast<bool>(settings.size_field);
+  const bool graded = settings.max_error.has_value() || static_cast<bool>(settings.size_field);  // sizes vary
   const RefinePreset preset = refine_preset(settings.quality);
   const bool automatic = settings.refine == 0;
+  const bool from_curvature = level_from_curvature(settings);
   int level = !automatic ? settings.refine : graded ? kGradedLevel : preset.max_level;
   RefineStats info;
   info.target_edge = edge;
-  if (automatic && !graded && estimate) {
+  if (from_curvature && estimate) {
     info.estimated_curvature = estimate->largest_curvature;
     level = automatic_level(preset, estimate->largest_curvature, edge, estimate->vertices, level);
   }
@@ -153,8 +158,8 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
 
   level = usable_level(level);
   if (level > 1) {
-    if (automatic && !graded) {
-      info.largest_curvature = refine::largest_curvature(base, surface);
+    if (from_curvature) {
+      info.largest_curvature = refine::largest_curvature(base.positions, surface);
       // About base_vertices * level^2 output vertices.
       const double output_vertices = static_cast<double>(base.vertex_count()) * level * level;
       const int resolved = automatic_level(preset, info.largest_curvature, edge, output_vertices, level);

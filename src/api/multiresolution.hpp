@@ -17,6 +17,10 @@ namespace isopatch {
 /// Meshes `surface` with `settings` at one level: the projection mesher and the clean-up.
 using LevelMesher = std::function<Mesh(const Settings&, MeshStats*)>;
 
+/// Whether the level is chosen from the surface's curvature: the automatic level (settings.refine 0)
+/// without an error bound or a size field (which keep one level, docs/algorithms.md 8.4).
+bool level_from_curvature(const Settings& settings);
+
 /// The multiresolution mesh of `surface` (settings.refine != 1, projection). `mesh_level` meshes the
 /// bases (and the output itself when the level ends at 1); stats, when given, are those of the final
 /// base with the evaluations and times of every attempt added and MeshStats::refine filled.

@@ -2,13 +2,20 @@
 #include "api/size_estimate.hpp"
 
 #include <isopatch/error.hpp>
-#include <isopatch/level_set_curvature.hpp>
 #include <isopatch/marching_cubes.hpp>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
+
+#include "refine/refinement_level.hpp"
+#include "surface/project_point.hpp"
+#include "surface/sampler.hpp"
 
 namespace isopatch {
 
@@ -33,22 +40,24 @@ SizeEstimate estimate_size(const Surface& surface, const Settings& settings, con
   estimate.vertices = 2.0 * area / (std::sqrt(3.0) * h * h);
   if (with_curvature) {
     // Linear roots on the grid's edges lie off f = 0 by up to a fraction of a cell, where the level set
-    // through them bends more or less than f = 0 (inside a thin tube, much more): two Newton steps along
-    // grad f first, each at most a cell long.
+    // through them bends more or less than f = 0 (inside a thin tube, much more): each is moved onto
+    // f = 0 first (steps of at most a cell); a point that does not get there, or meets f undefined on
+    // the way, is measured where the grid put it (and skipped where its curvature is not finite).
     const double cell = box.size().maxCoeff() / kEstimateGrid;
-    for (Vec3 p : mesh.positions) {
-      for (int step = 0; step < kEstimateNewtonSteps; ++step) {
-        const ValueGradient vg = surface.value_gradient(p);
-        const double g2 = vg.gradient.squaredNorm();
-        if (!(g2 > 0.0) || !std::isfinite(vg.value)) break;
-        const Vec3 move = -vg.value / g2 * vg.gradient;
-        if (!(move.norm() <= cell)) break;
-        p += move;
-      }
-      const double kappa = max_abs_principal_curvature(surface, p);
-      if (std::isfinite(kappa)) estimate.largest_curvature = std::max(estimate.largest_curvature, kappa);
-    }
-    estimate.gradient_evaluations = (1 + kEstimateNewtonSteps) * mesh.vertex_count();
+    const Sampler f(surface);
+    std::vector<Vec3> points = mesh.positions;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 256),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                          Vec3 p = points[i];
+                          try {
+                            if (project_to_surface(f, p, kEstimateTolerance * cell, cell)) points[i] = p;
+                          } catch (const EvaluationError&) {
+                          }
+                        }
+                      });
+    estimate.largest_curvature = refine::largest_curvature(points, surface, true);
+    estimate.gradient_evaluations = f.gradient_count() + points.size();
   }
   return estimate;
 }

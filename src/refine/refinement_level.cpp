@@ -12,12 +12,13 @@
 
 namespace isopatch::refine {
 
-double largest_curvature(const Mesh& mesh, const Surface& surface) {
+double largest_curvature(std::span<const Vec3> points, const Surface& surface, bool skip_undefined) {
   return tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, mesh.vertex_count(), 1024), 0.0,
+      tbb::blocked_range<std::size_t>(0, points.size(), 1024), 0.0,
       [&](const tbb::blocked_range<std::size_t>& r, double largest) {
         for (std::size_t v = r.begin(); v != r.end(); ++v) {
-          const double kappa = max_abs_principal_curvature(surface, mesh.positions[v]);
+          const double kappa = max_abs_principal_curvature(surface, points[v]);
+          if (skip_undefined && !std::isfinite(kappa)) continue;
           if (std::isnan(kappa))
             throw EvaluationError("the curvature of f = 0 is not finite at a base vertex");
           largest = std::max(largest, kappa);

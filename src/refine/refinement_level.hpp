@@ -8,12 +8,15 @@
 #include <isopatch/mesh.hpp>
 #include <isopatch/surface.hpp>
 
+#include <span>
+
 namespace isopatch::refine {
 
-/// The largest |principal curvature| of f = 0 at the vertices of `mesh` (exact, from the Hessian; 0 for
-/// an empty mesh). Parallel; the same value for any thread count.
-/// \throw EvaluationError if f or its derivatives are not finite at a vertex.
-double largest_curvature(const Mesh& mesh, const Surface& surface);
+/// The largest |principal curvature| of f = 0 at `points` (exact, from the Hessian; 0 for no points).
+/// Parallel; the same value for any thread count. Infinite where grad f vanishes (a singular point);
+/// where f or its derivatives are undefined it throws EvaluationError. With `skip_undefined`, points
+/// where it is not finite are left out instead.
+double largest_curvature(std::span<const Vec3> points, const Surface& surface, bool skip_undefined = false);
 
 /// The largest k in [1, max_level] with k * edge * kappa <= max_turn (max_level when kappa is 0).
 /// \pre edge > 0, max_turn > 0, max_level >= 1.

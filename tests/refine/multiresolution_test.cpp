@@ -34,6 +34,20 @@ void expect_closed_floor(const Mesh& mesh, const Surface& s, int genus, double v
   EXPECT_GE(q.shape.min_angle.min, angle) << s.name();
 }
 
+/// A mesh with its statistics and its curvature error.
+struct MeasuredMesh {
+  Mesh mesh;
+  MeshStats stats;
+  double h_nrms = 0.0;
+};
+
+MeasuredMesh mesh_and_measure(const Surface& s, const Settings& settings) {
+  MeasuredMesh m;
+  m.mesh = mesh_surface(s, settings, &m.stats);
+  m.h_nrms = analyze_accuracy(m.mesh, s).mean_curvature.nrms;
+  return m;
+}
+
 TEST(Multiresolution, DefaultRefinesGentleSurfacesAndHoldsTheFloor) {
   for (const auto& [s, genus] : {std::pair{test::sphere(), 0}, std::pair{test::torus(), 1}}) {
     Settings settings;
@@ -68,21 +82,19 @@ TEST(Multiresolution, WhereTheCurvatureAsksForLevelOneTheGuardedLevelTwoBeatsIt)
   const SurfacePtr s = test::genus2();
   Settings settings;
   settings.edge_length = 0.014;
-  MeshStats stats, one_stats;
-  const Mesh mesh = mesh_surface(*s, settings, &stats);
+  const MeasuredMesh refined = mesh_and_measure(*s, settings);
+  const MeshStats& stats = refined.stats;
   ASSERT_TRUE(stats.refine);
   EXPECT_EQ(stats.refine->level, 2);
   EXPECT_EQ(stats.refine->first_level, 2);  // the grid's first guess: no base thrown away
   EXPECT_EQ(stats.refine->attempts, 1);
   EXPECT_GT(stats.refine->estimated_curvature, 30.0);
   EXPECT_GT(2.0 * *settings.edge_length * stats.refine->largest_curvature, 0.8);  // the default's max_turn
-  expect_closed_floor(mesh, *s, 2, 0.97, 25.0);
+  expect_closed_floor(refined.mesh, *s, 2, 0.97, 25.0);
   settings.refine = 1;
-  const Mesh one = mesh_surface(*s, settings, &one_stats);
-  EXPECT_LT(stats.gradient_evaluations, one_stats.gradient_evaluations);
-  const double h_refined = analyze_accuracy(mesh, *s).mean_curvature.nrms;
-  const double h_one = analyze_accuracy(one, *s).mean_curvature.nrms;
-  EXPECT_LT(h_refined, 1.05 * h_one);
+  const MeasuredMesh one = mesh_and_measure(*s, settings);
+  EXPECT_LT(stats.gradient_evaluations, one.stats.gradient_evaluations);
+  EXPECT_LT(refined.h_nrms, 1.05 * one.h_nrms);
 }
 
 TEST(Multiresolution, FineRefinesGentleSurfacesFurtherThanTheDefault) {
@@ -90,15 +102,14 @@ TEST(Multiresolution, FineRefinesGentleSurfacesFurtherThanTheDefault) {
   const SurfacePtr s = test::torus();
   Settings settings;
   settings.edge_length = 0.011;
-  MeshStats default_stats, fine_stats;
-  const Mesh normal = mesh_surface(*s, settings, &default_stats);
+  const MeasuredMesh normal = mesh_and_measure(*s, settings);
   settings.quality = Quality::Fine;
-  const Mesh fine = mesh_surface(*s, settings, &fine_stats);
-  ASSERT_TRUE(default_stats.refine && fine_stats.refine);
-  EXPECT_EQ(default_stats.refine->level, 8);
-  EXPECT_EQ(fine_stats.refine->level, 12);
-  EXPECT_LT(analyze_accuracy(fine, *s).mean_curvature.nrms, analyze_accuracy(normal, *s).mean_curvature.nrms);
-  expect_closed_floor(fine, *s, 1, 0.99, 24.0);  // the fine base's own angles (25 degrees) bent a little
+  const MeasuredMesh fine = mesh_and_measure(*s, settings);
+  ASSERT_TRUE(normal.stats.refine && fine.stats.refine);
+  EXPECT_EQ(normal.stats.refine->level, 8);
+  EXPECT_EQ(fine.stats.refine->level, 12);
+  EXPECT_LT(fine.h_nrms, normal.h_nrms);
+  expect_closed_floor(fine.mesh, *s, 1, 0.99, 24.0);  // the fine base's own angles (25 degrees) bent a little
 }
 
 TEST(Multiresolution, SameBytesForOneTwoAndFourThreads) {
