@@ -149,6 +149,7 @@ struct RefineStats {
   std::size_t failed_points = 0;           ///< of the refinements given up (their level halved)
   std::size_t rejected_moves = 0;          ///< relaxation moves undone
   std::size_t angle_vertices = 0;          ///< vertices of the sweeps aimed at small angles
+  std::size_t repaired_vertices = 0;       ///< moves that raised the smallest angle around a vertex
   double smallest_angle = 0.0;             ///< after the refinement, degrees
   std::uint64_t gradient_evaluations = 0;  ///< of the refinement alone
 };

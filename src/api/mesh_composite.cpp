@@ -7,15 +7,38 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "api/budgeted_composite.hpp"
+#include "api/multiresolution.hpp"
 #include "composite/composite_mesher.hpp"
+#include "composite/composite_refinement.hpp"
 #include "ipatch/composite_surface.hpp"
 #include "ipatch/ipatch_file.hpp"
 #include "ipatch/patch_validity.hpp"
+#include "refine/refinement_level.hpp"
 
 namespace isopatch {
+namespace {
+
+/// The largest curvature of the composite at the vertices of `base` inside patches, each on its own
+/// patch's function (the corners, where I-patch functions are 0/0, and the other curve vertices left
+/// out; a vertex where the curvature is not finite is skipped).
+double patch_curvature(const Composite& c, const CompositeMesh& patches, const Mesh& base) {
+  double largest = 0.0;
+  std::vector<std::vector<Vec3>> inside(c.patches.size());
+  for (std::size_t v = 0; v < base.vertex_count(); ++v)
+    if (patches.vertex_patch[v] >= 0)
+      inside[static_cast<std::size_t>(patches.vertex_patch[v])].push_back(base.positions[v]);
+  for (std::size_t p = 0; p < c.patches.size(); ++p)
+    largest = std::max(largest, refine::largest_curvature(inside[p], *c.patches[p].surface, true));
+  return largest;
+}
+
+}  // namespace
 
 CompositeModel::CompositeModel(std::shared_ptr<const Composite> composite)
     : composite_(composite), surface_(std::make_shared<CompositeSurface>(std::move(composite))) {}
@@ -54,7 +77,27 @@ Mesh mesh_composite(const CompositeModel& model, const Settings& settings, MeshS
     if (settings.max_evaluations > 0 || settings.time_limit > 0.0)
       budgeted.emplace(model.composite(), settings.max_evaluations, settings.time_limit);
     const Composite& c = budgeted ? budgeted->composite() : model.composite();
-    return mesh_composite_projection(c, settings, stats).mesh;
+    // As for one surface (mesh_surface.cpp): the automatic level leaves the paper's method alone
+    // (remesh_iterations = 0) unrefined, and so a fixed number of segments per curve (resolution).
+    const bool refine =
+        settings.refine > 1 ||
+        (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0 && settings.resolution == 0);
+    if (!refine) return mesh_composite_projection(c, settings, stats).mesh;
+    CompositeMesh last;  // the patches and curves of the last base (its mesh is the one returned)
+    const auto one_level = [&](const Settings& s, MeshStats* st) {
+      last = mesh_composite_projection(c, s, st);
+      return std::exchange(last.mesh, Mesh{});
+    };
+    BaseRefinement bases;
+    bases.keep_base_angles = true;
+    bases.largest_curvature = [&](const Mesh& base) { return patch_curvature(c, last, base); };
+    bases.refine = [&](const Mesh& base, const refine::RefineParams& params) {
+      last.mesh = base;
+      refine::RefineResult refined = refine_composite(c, last, params);
+      last.mesh = Mesh{};
+      return refined;
+    };
+    return mesh_multiresolution(*model.surface(), settings, stats, one_level, nullptr, bases);
   });
 }
 

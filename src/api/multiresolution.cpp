@@ -10,6 +10,7 @@
 
 #include "refine/refine_mesh.hpp"
 #include "refine/refinement_level.hpp"
+#include "remesh/triangle_angle.hpp"
 
 namespace isopatch {
 namespace {
@@ -65,6 +66,20 @@ constexpr int kLeastAutomaticLevel = 2;
 /// the base was too coarse somewhere for its curvature.
 constexpr double kAngleFloor = 20.0;
 
+/// With BaseRefinement::keep_base_angles, an automatic level is kept only when its smallest angle is at
+/// least the clean-up's floor or no more than kBaseAngleSlack below the base's own (degrees).
+constexpr double kCleanupFloor = 25.0;
+constexpr double kBaseAngleSlack = 0.5;
+
+/// The smallest angle of any triangle of `mesh`, degrees (180 without triangles).
+double smallest_angle(const Mesh& mesh) {
+  double least = 180.0;
+  for (const Triangle& t : mesh.triangles)
+    least = std::min(
+        least, isopatch::smallest_angle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+  return least;
+}
+
 /// The settings of a base at `level` times the target sizes.
 Settings base_settings(const Settings& settings, double edge, int level) {
   Settings s = settings;
@@ -101,7 +116,8 @@ bool level_from_curvature(const Settings& settings) {
 }
 
 Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
-                          const LevelMesher& mesh_level, const SizeEstimate* estimate) {
+                          const LevelMesher& mesh_level, const SizeEstimate* estimate,
+                          const BaseRefinement& bases) {
   const auto start = std::chrono::steady_clock::now();
   const Box box = settings.box.value_or(surface.box());
   const double edge = default_edge_length(settings, box);
@@ -159,7 +175,8 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
   level = usable_level(level);
   if (level > 1) {
     if (from_curvature) {
-      info.largest_curvature = refine::largest_curvature(base.positions, surface);
+      info.largest_curvature = bases.largest_curvature ? bases.largest_curvature(base)
+                                                       : refine::largest_curvature(base.positions, surface);
       // About base_vertices * level^2 output vertices.
       const double output_vertices = static_cast<double>(base.vertex_count()) * level * level;
       const int resolved = automatic_level(preset, info.largest_curvature, edge, output_vertices, level);
@@ -178,17 +195,24 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
     params.cancel = settings.cancel;
     params.progress = settings.progress;
     const auto refine_start = std::chrono::steady_clock::now();
-    refine::RefineResult refined = refine::refine_mesh(base, surface, params);
+    refine::RefineResult refined =
+        bases.refine ? bases.refine(base, params) : refine::refine_mesh(base, surface, params);
     spent.gradient_evaluations += refined.gradient_evaluations;
     spent.times.add("refine",
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - refine_start).count());
-    const bool kept = refined.failed_points == 0 && (!automatic || refined.smallest_angle >= kAngleFloor);
+    const bool kept =
+        refined.failed_points == 0 &&
+        (!automatic ||
+         (refined.smallest_angle >= kAngleFloor &&
+          (!bases.keep_base_angles ||
+           refined.smallest_angle >= std::min(kCleanupFloor, smallest_angle(base) - kBaseAngleSlack))));
     if (kept) {
       info.level = level;
       info.base_vertices = base.vertex_count();
       info.base_triangles = base.triangle_count();
       info.rejected_moves = refined.rejected_moves;
       info.angle_vertices = refined.angle_vertices;
+      info.repaired_vertices = refined.repaired_vertices;
       info.smallest_angle = refined.smallest_angle;
       info.gradient_evaluations = refined.gradient_evaluations;
       return finish(std::move(refined.mesh), base_stats);

@@ -9,6 +9,7 @@
 #include <isopatch/surface.hpp>
 
 #include "api/size_estimate.hpp"
+#include "refine/refine_mesh.hpp"
 
 #include <functional>
 
@@ -16,6 +17,18 @@ namespace isopatch {
 
 /// Meshes `surface` with `settings` at one level: the projection mesher and the clean-up.
 using LevelMesher = std::function<Mesh(const Settings&, MeshStats*)>;
+
+/// How the bases of a kind of surface are measured and refined, for surfaces that are not one function
+/// (a composite: every patch on its own function). An empty member means the plain surface's own:
+/// refine::largest_curvature of the base's vertices on `surface`, refine::refine_mesh on `surface`.
+/// Both are given the base the LevelMesher returned last.
+struct BaseRefinement {
+  std::function<double(const Mesh& base)> largest_curvature;
+  std::function<refine::RefineResult(const Mesh& base, const refine::RefineParams& params)> refine;
+  /// The automatic level keeps a refinement only when its smallest angle is at least the clean-up's
+  /// floor (25 degrees) or within half a degree of the base's own, besides the usual 20 degrees.
+  bool keep_base_angles = false;
+};
 
 /// Whether the level is chosen from the surface's curvature: the automatic level (settings.refine 0)
 /// without an error bound or a size field (which keep one level, docs/algorithms.md 8.4).
@@ -27,9 +40,11 @@ bool level_from_curvature(const Settings& settings);
 /// `estimate`, when given (the automatic level), sets the first level tried: the largest whose base
 /// edge turns the normal by at most the preset's max_turn at the estimate's largest curvature and
 /// leaves the preset's fewest base vertices; without it the first base is made at the preset's
-/// ceiling. Either way the level is then checked on the base's own curvature.
+/// ceiling. Either way the level is then checked on the base's own curvature. `bases` replaces how a
+/// base is measured and refined (see BaseRefinement).
 /// \throw as mesh_surface(): SettingError, LimitError (budgets, cancel, max_vertices), EvaluationError.
 Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
-                          const LevelMesher& mesh_level, const SizeEstimate* estimate = nullptr);
+                          const LevelMesher& mesh_level, const SizeEstimate* estimate = nullptr,
+                          const BaseRefinement& bases = {});
 
 }  // namespace isopatch

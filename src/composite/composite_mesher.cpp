@@ -256,6 +256,7 @@ CompositeMesh mesh_composite_projection(const Composite& c, const Settings& sett
 
   CompositeMesh out;
   out.curve_segments = segments;
+  out.curve_vertices = sampling.ids;
   out.mesh.positions = sampling.positions;
   out.vertex_patch.assign(sampling.positions.size(), -1);
   for (std::size_t p = 0; p < patches; ++p) {

@@ -31,6 +31,9 @@ struct CompositeMesh {
   std::vector<std::uint32_t> triangle_patch;
   /// Per curve: the segments it was sampled with.
   std::vector<int> curve_segments;
+  /// Per curve: its vertices from its start to its end (curve_segments + 1 of them; none for a curve
+  /// no patch uses).
+  std::vector<std::vector<std::uint32_t>> curve_vertices;
 };
 
 /// Checks the composite's topology: 3..12 sides per patch with as many finite non-zero corner

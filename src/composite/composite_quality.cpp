@@ -122,10 +122,16 @@ CompositeQuality measure_composite_mesh(const Composite& composite, const Compos
   const double diagonal = composite.box.diagonal();
   std::vector<std::unique_ptr<Sampler>> f;
   for (const CompositePatch& p : composite.patches) f.push_back(std::make_unique<Sampler>(*p.surface));
+  // The corners: curve vertices at a curve's end (anywhere in the vertex order: a refined mesh puts
+  // its curve points among the others).
+  std::set<std::array<double, 3>> curve_ends;
+  for (const ConicArc& a : composite.curves) {
+    curve_ends.insert({a.start.x(), a.start.y(), a.start.z()});
+    curve_ends.insert({a.end.x(), a.end.y(), a.end.z()});
+  }
   std::set<std::uint32_t> corners;
-  for (const ConicArc& a : composite.curves)
-    for (std::uint32_t v = 0; v < nv && m.vertex_patch[v] < 0; ++v)
-      if (pos[v] == a.start || pos[v] == a.end) corners.insert(v);
+  for (std::uint32_t v = 0; v < nv; ++v)
+    if (m.vertex_patch[v] < 0 && curve_ends.count({pos[v].x(), pos[v].y(), pos[v].z()})) corners.insert(v);
   for (std::uint32_t v = 0; v < nv; ++v) {
     std::vector<Vec3> gradients;
     for (const std::uint32_t p : vertex_patches[v]) {

@@ -41,7 +41,7 @@ struct CompositeQuality {
   double seam_gradient_angle = 0.0;
 };
 
-/// \pre `m` is mesh_composite_projection(composite, ...).
+/// \pre `m` is mesh_composite_projection(composite, ...) or refine_composite(composite, ...).
 /// \throw EvaluationError when a patch function is not finite at a vertex.
 CompositeQuality measure_composite_mesh(const Composite& composite, const CompositeMesh& m);
 

@@ -103,6 +103,7 @@ void visit_stats(
     v("failed_points", count(r->failed_points));
     v("rejected_moves", count(r->rejected_moves));
     v("angle_vertices", count(r->angle_vertices));
+    v("repaired_vertices", count(r->repaired_vertices));
     v("smallest_angle", r->smallest_angle);
     v("gradient_evaluations", count(r->gradient_evaluations));
   }

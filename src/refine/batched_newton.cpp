@@ -5,9 +5,43 @@
 #include <vector>
 
 namespace isopatch::refine {
+void value_gradients(std::span<const Sampler* const> functions, std::span<const Vec3> at,
+                     std::span<const std::uint32_t> piece, std::span<ValueGradient> out) {
+  if (functions.size() == 1 || piece.empty()) {
+    functions[0]->value_gradients(at, out);
+    return;
+  }
+  // The points grouped by piece (a counting sort keeps their order within a piece).
+  std::vector<std::size_t> first(functions.size() + 1, 0);
+  for (const std::uint32_t f : piece) ++first[f + 1];
+  for (std::size_t f = 0; f < functions.size(); ++f) first[f + 1] += first[f];
+  std::vector<std::size_t> order(at.size());
+  {
+    std::vector<std::size_t> next(first.begin(), first.end() - 1);
+    for (std::size_t i = 0; i < at.size(); ++i) order[next[piece[i]]++] = i;
+  }
+  std::vector<Vec3> group_at;
+  std::vector<ValueGradient> group_out;
+  for (std::size_t f = 0; f < functions.size(); ++f) {
+    const std::size_t n = first[f + 1] - first[f];
+    if (n == 0) continue;
+    group_at.resize(n);
+    group_out.resize(n);
+    for (std::size_t g = 0; g < n; ++g) group_at[g] = at[order[first[f] + g]];
+    functions[f]->value_gradients(group_at, group_out);
+    for (std::size_t g = 0; g < n; ++g) out[order[first[f] + g]] = group_out[g];
+  }
+}
 
 void land_on_surface(const Sampler& f, const BoundaryPlanes& planes, std::span<NewtonPoint> points,
                      const NewtonLimits& limits) {
+  const Sampler* const one[] = {&f};
+  for (NewtonPoint& p : points) p.piece = 0;
+  land_on_surface(one, planes, points, limits);
+}
+
+void land_on_surface(std::span<const Sampler* const> functions, const BoundaryPlanes& planes,
+                     std::span<NewtonPoint> points, const NewtonLimits& limits) {
   std::vector<std::uint32_t> active;
   active.reserve(points.size());
   std::vector<Vec3> start(points.size());
@@ -20,12 +54,15 @@ void land_on_surface(const Sampler& f, const BoundaryPlanes& planes, std::span<N
   }
   std::vector<Vec3> at;
   std::vector<ValueGradient> vg;
+  std::vector<std::uint32_t> piece;
   // max_steps steps, and one more evaluation that confirms the last of them.
   for (int round = 0; round <= limits.max_steps && !active.empty(); ++round) {
     at.resize(active.size());
     vg.resize(active.size());
+    piece.resize(functions.size() > 1 ? active.size() : 0);
     for (std::size_t a = 0; a < active.size(); ++a) at[a] = points[active[a]].position;
-    f.value_gradients(at, vg);
+    for (std::size_t a = 0; a < piece.size(); ++a) piece[a] = points[active[a]].piece;
+    value_gradients(functions, at, piece, vg);
     std::size_t kept = 0;
     for (std::size_t a = 0; a < active.size(); ++a) {
       NewtonPoint& p = points[active[a]];

@@ -45,15 +45,18 @@ double smallest_angle_degrees(const Mesh& mesh, const Triangle& t) {
 LatticeRelaxation::LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& normals,
                                      const std::vector<Motion>& motion, const LatticeLayout& layout,
                                      const BaseEdges& edges, const std::vector<int>& edge_plane,
-                                     const Sampler& f, const BoundaryPlanes& planes,
-                                     const NewtonLimits& limits, std::size_t block)
+                                     std::span<const Sampler* const> functions,
+                                     const std::vector<std::uint32_t>& vertex_function,
+                                     const BoundaryPlanes& planes, const NewtonLimits& limits,
+                                     std::size_t block)
     : mesh_(mesh),
       normals_(normals),
       motion_(motion),
       layout_(layout),
       edges_(edges),
       edge_plane_(edge_plane),
-      f_(f),
+      functions_(functions),
+      vertex_function_(vertex_function),
       planes_(planes),
       limits_(limits),
       block_(std::max<std::size_t>(block, 1)),
@@ -115,13 +118,14 @@ std::size_t LatticeRelaxation::sweep_block(std::size_t begin, std::size_t end,
                         NewtonPoint p;
                         if (!target(static_cast<std::uint32_t>(v), p.position, p.plane)) continue;
                         p.expected_normal = as_vec3(normals_[v]);
+                        p.piece = vertex_function_.empty() ? 0 : vertex_function_[v];
                         // A relaxation move is a fraction of an edge: a landing further away than the move
                         // itself went somewhere else.
                         p.max_move = 2.0 * (p.position - mesh_.positions[v]).norm() + limits_.tolerance;
                         points.push_back(p);
                         ids.push_back(static_cast<std::uint32_t>(v));
                       }
-                      land_on_surface(f_, planes_, points, limits_);
+                      land_on_surface(functions_, planes_, points, limits_);
                       for (std::size_t i = 0; i < points.size(); ++i) {
                         if (points[i].landing != Landing::Ok) continue;
                         next_[ids[i] - begin] = points[i].position;
@@ -142,18 +146,24 @@ std::size_t LatticeRelaxation::sweep_block(std::size_t begin, std::size_t end,
   for (bool changed = true; changed;) {
     changed = false;
     invalid_.assign(mesh_.triangles.size(), 0);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh_.triangles.size(), kChunk),
-                      [&](const tbb::blocked_range<std::size_t>& r) {
-                        for (std::size_t t = r.begin(); t != r.end(); ++t) {
-                          const Triangle& tri = mesh_.triangles[t];
-                          if (!moved(tri[0]) && !moved(tri[1]) && !moved(tri[2])) continue;
-                          invalid_[t] =
-                              faces_the_surface(position(tri[0]), position(tri[1]), position(tri[2]),
-                                                {normal(tri[0]), normal(tri[1]), normal(tri[2])})
-                                  ? 0
-                                  : 1;
-                        }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, mesh_.triangles.size(), kChunk),
+        [&](const tbb::blocked_range<std::size_t>& r) {
+          for (std::size_t t = r.begin(); t != r.end(); ++t) {
+            const Triangle& tri = mesh_.triangles[t];
+            if (!moved(tri[0]) && !moved(tri[1]) && !moved(tri[2])) continue;
+            const Vec3 &a = position(tri[0]), &b = position(tri[1]), &c = position(tri[2]);
+            bool valid = faces_the_surface(a, b, c, {normal(tri[0]), normal(tri[1]), normal(tri[2])});
+            if (valid && angle_guard_ > 0.0) {
+              // A move may not close a triangle under the guard angle further.
+              const double now = smallest_angle(a, b, c);
+              valid = now >= angle_guard_ ||
+                      now >= smallest_angle(mesh_.positions[tri[0]], mesh_.positions[tri[1]],
+                                            mesh_.positions[tri[2]]);
+            }
+            invalid_[t] = valid ? 0 : 1;
+          }
+        });
     for (std::size_t t = 0; t < invalid_.size(); ++t) {
       if (!invalid_[t]) continue;
       for (std::uint32_t v : mesh_.triangles[t]) {

@@ -7,7 +7,8 @@
 // the result does not depend on the threads, and its buffers hold one block, not the whole mesh. A move is
 // undone when its projection fails or when it leaves a triangle turned away from the surface (the same
 // validity test as the clean-up: the triangle's normal within about 72 degrees of the surface normal at each
-// corner).
+// corner). On a mesh made of pieces (a composite surface) every vertex is put back on its own piece's
+// function.
 
 #include <isopatch/mesh.hpp>
 
@@ -15,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "refine/base_edges.hpp"
@@ -42,12 +44,19 @@ class LatticeRelaxation {
   /// \param normals     unit grad f at every vertex (kept up to date)
   /// \param motion      per vertex
   /// \param edge_plane  per base edge: the cut plane its points slide on (boundary edges), or -1
+  /// \param functions   the functions the vertices lie on (one, or one per piece); they outlive this
+  /// \param vertex_function  per vertex: its index into `functions` (empty: every vertex on the first)
   /// \param limits      the Newton limits of every re-projection
   /// \param block       vertices per block of a sweep (>= 1)
   LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& normals, const std::vector<Motion>& motion,
                     const LatticeLayout& layout, const BaseEdges& edges, const std::vector<int>& edge_plane,
-                    const Sampler& f, const BoundaryPlanes& planes, const NewtonLimits& limits,
-                    std::size_t block = kSweepBlock);
+                    std::span<const Sampler* const> functions,
+                    const std::vector<std::uint32_t>& vertex_function, const BoundaryPlanes& planes,
+                    const NewtonLimits& limits, std::size_t block = kSweepBlock);
+
+  /// From now on, undo a move that leaves a triangle with a smallest angle under `degrees` and smaller
+  /// than before the move (0: no such guard).
+  void set_angle_guard(double degrees) { angle_guard_ = degrees; }
 
   /// One sweep over every vertex that may move, or only over those with (*subset)[v] set.
   /// Returns the moves undone.
@@ -65,10 +74,12 @@ class LatticeRelaxation {
   const LatticeLayout& layout_;
   const BaseEdges& edges_;
   const std::vector<int>& edge_plane_;
-  const Sampler& f_;
+  std::span<const Sampler* const> functions_;
+  const std::vector<std::uint32_t>& vertex_function_;
   const BoundaryPlanes& planes_;
   NewtonLimits limits_;
   std::size_t block_;
+  double angle_guard_ = 0.0;
   VertexRings rings_;
   // One block's results (indexed from the block's first vertex), kept between blocks and sweeps so
   // that each does not allocate them again; invalid_ flags triangles.

@@ -9,14 +9,17 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "refine/angle_repair.hpp"
 #include "refine/base_edges.hpp"
 #include "refine/batched_newton.hpp"
 #include "refine/boundary_planes.hpp"
 #include "refine/lattice_layout.hpp"
 #include "refine/lattice_relaxation.hpp"
+#include "refine/piece_map.hpp"
 #include "refine/start_points.hpp"
 #include "surface/sampler.hpp"
 
@@ -31,6 +34,8 @@ constexpr std::size_t kTrianglesPerTask = 128;
 constexpr double kMaxMoveShare = 0.5;
 /// The role value of a vertex made by the refinement (0-5 are the projection mesher's and the clean-up's).
 constexpr float kRefinementRole = 6.0f;
+/// Passes of the angle repair at most (angle_repair.hpp); a pass that moves nothing ends it.
+constexpr int kRepairRounds = 10;
 /// Landing tolerance relative to the base's bounding-box diagonal (the clean-up's own).
 constexpr double kRelativeTolerance = 1e-13;
 
@@ -82,11 +87,34 @@ std::vector<std::uint8_t> near_small_angles(const Mesh& mesh, double angle) {
   return marked;
 }
 
+/// \throw InputError unless `pieces` names at least one function, none null, and one piece below their
+///        count per base triangle (or none).
+void check_pieces(const Mesh& base, const RefinePieces& pieces) {
+  if (pieces.functions.empty()) throw InputError("refine: no function to refine on");
+  for (const Surface* s : pieces.functions)
+    if (!s) throw InputError("refine: a piece has no function");
+  if (pieces.triangle_piece.empty()) return;
+  if (pieces.triangle_piece.size() != base.triangle_count())
+    throw InputError("refine: " + std::to_string(pieces.triangle_piece.size()) + " triangle pieces for " +
+                     std::to_string(base.triangle_count()) + " base triangles");
+  for (const std::uint32_t p : pieces.triangle_piece)
+    if (p >= pieces.functions.size())
+      throw InputError("refine: a base triangle names piece " + std::to_string(p) + " of " +
+                       std::to_string(pieces.functions.size()));
+}
+
 }  // namespace
 
 RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineParams& params) {
+  RefinePieces one;
+  one.functions = {&surface};
+  return refine_pieces(base, one, params);
+}
+
+RefineResult refine_pieces(const Mesh& base, const RefinePieces& pieces, const RefineParams& params) {
   if (params.level < 1 || params.level > kMaxLevel)
     throw SettingError("refine", "the refinement level must be 1.." + std::to_string(kMaxLevel));
+  check_pieces(base, pieces);
   const BaseEdges edges = base_edges(base);
   const LatticeLayout layout(base, edges, params.level);
   if (params.max_vertices > 0 && layout.vertex_count() > params.max_vertices)
@@ -94,7 +122,19 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
                          " vertices, more than the vertex budget of " + std::to_string(params.max_vertices),
                      "max_vertices");
   const int k = params.level;
-  const Sampler f(surface);
+  const bool several = pieces.functions.size() > 1;
+  const bool with_pieces =
+      several || !pieces.triangle_piece.empty() || static_cast<bool>(pieces.curve_points);
+  const PieceMap map = map_pieces(base, edges, pieces, k);
+  std::vector<std::unique_ptr<Sampler>> samplers;
+  std::vector<const Sampler*> functions;
+  for (const Surface* s : pieces.functions) {
+    samplers.push_back(std::make_unique<Sampler>(*s));
+    functions.push_back(samplers.back().get());
+  }
+  const auto triangle_piece = [&](std::size_t t) {
+    return pieces.triangle_piece.empty() ? 0u : pieces.triangle_piece[t];
+  };
   const double tolerance = kRelativeTolerance * std::max(bounding_box(base).diagonal(), 1e-300);
   const NewtonLimits limits{tolerance, 12, 0.5};
   const BoundaryPlanes planes(params.box, params.region,
@@ -107,21 +147,35 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
   mesh.positions.resize(layout.vertex_count());
   std::vector<Eigen::Vector3f> normals(layout.vertex_count());
   std::vector<Motion> motion(layout.vertex_count(), Motion::Free);
+  // Per output vertex, the function it lies on (only with several pieces).
+  std::vector<std::uint32_t> vertex_function;
+  if (several) {
+    vertex_function.resize(layout.vertex_count());
+    std::copy(map.vertex_piece.begin(), map.vertex_piece.end(), vertex_function.begin());
+    for (std::uint32_t e = 0; e < edges.size(); ++e)
+      for (int j = 1; j < k; ++j) vertex_function[layout.edge_point(e, j)] = map.edge_piece[e];
+    for (std::size_t t = 0; t < base.triangle_count(); ++t)
+      std::fill_n(vertex_function.begin() + static_cast<std::ptrdiff_t>(layout.inner_start(t)),
+                  layout.inner_per_triangle(), triangle_piece(t));
+  }
 
-  // Base vertices: their unit normals (one batch) and whether the cut holds them.
+  // Base vertices: their unit normals (a batch per function) and whether the cut or a curve holds them.
   std::vector<Vec3> base_normal(base.vertex_count());
   {
     std::vector<ValueGradient> vg(base.vertex_count());
-    f.value_gradients(base.positions, vg);
+    value_gradients(functions, base.positions, several ? map.vertex_piece : std::vector<std::uint32_t>{}, vg);
     for (std::size_t v = 0; v < base.vertex_count(); ++v) {
       base_normal[v] = unit_or_zero(vg[v].gradient);
       mesh.positions[v] = base.positions[v];
       normals[v] = base_normal[v].cast<float>();
+      if (map.on_curve[v]) motion[v] = Motion::Locked;
     }
   }
   std::vector<int> edge_plane(edges.size(), -1);
   for (std::uint32_t e = 0; e < edges.size(); ++e) {
-    if (!edges.boundary(e)) continue;
+    if (map.on_curve_edge(e))
+      for (int j = 1; j < k; ++j) motion[layout.edge_point(e, j)] = Motion::Locked;
+    if (!edges.boundary(e) || map.on_curve_edge(e)) continue;
     const auto [a, b] = edges.ends[e];
     motion[a] = motion[b] = Motion::Locked;
     edge_plane[e] = planes.common(base.positions[a], base.positions[b]);
@@ -129,7 +183,8 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
     for (int j = 1; j < k; ++j) motion[layout.edge_point(e, j)] = points;
   }
 
-  // Points on base edges, then inside base triangles; each lands on its own (batched_newton.hpp).
+  // Points on base edges (a curve's own points, or landed), then inside base triangles; each lands on
+  // its own (batched_newton.hpp).
   tbb::combinable<std::size_t> failures([] { return std::size_t{0}; });
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, k > 1 ? edges.size() : 0, kEdgesPerTask),
                     [&](const tbb::blocked_range<std::size_t>& r) {
@@ -143,22 +198,37 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
                         for (int j = 1; j < k; ++j) {
                           const double s = static_cast<double>(j) / k;
                           NewtonPoint p;
-                          p.position = phong_edge_point(pa, base_normal[a], pb, base_normal[b], s);
+                          p.position = map.on_curve_edge(static_cast<std::uint32_t>(e))
+                                           ? map.curve_points[static_cast<std::size_t>(map.curve_first[e]) +
+                                                              static_cast<std::size_t>(j - 1)]
+                                           : phong_edge_point(pa, base_normal[a], pb, base_normal[b], s);
                           p.expected_normal = unit_or_zero((1.0 - s) * base_normal[a] + s * base_normal[b]);
                           p.max_move = kMaxMoveShare * length;
                           p.plane = edge_plane[e];
+                          p.piece = map.edge_piece[e];
                           points.push_back(p);
                         }
                       }
-                      land_on_surface(f, planes, points, limits);
+                      land_on_surface(functions, planes, points, limits);
                       std::size_t i = 0;
-                      for (std::size_t e = r.begin(); e != r.end(); ++e)
+                      for (std::size_t e = r.begin(); e != r.end(); ++e) {
+                        const bool curve = map.on_curve_edge(static_cast<std::uint32_t>(e));
+                        if (map.joins_pieces[e]) ++failures.local();
                         for (int j = 1; j < k; ++j, ++i) {
                           const std::uint32_t v = layout.edge_point(static_cast<std::uint32_t>(e), j);
-                          mesh.positions[v] = points[i].position;
                           normals[v] = points[i].normal.cast<float>();
-                          if (points[i].landing != Landing::Ok) ++failures.local();
+                          if (curve) {
+                            // The curve's own point, where it is (its landing only gives the normal there):
+                            // the curve lies on both pieces' functions to rounding.
+                            mesh.positions[v] =
+                                map.curve_points[static_cast<std::size_t>(map.curve_first[e]) +
+                                                 static_cast<std::size_t>(j - 1)];
+                          } else {
+                            mesh.positions[v] = points[i].position;
+                            if (points[i].landing != Landing::Ok) ++failures.local();
+                          }
                         }
+                      }
                     });
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, layout.inner_per_triangle() > 0 ? base.triangle_count() : 0,
@@ -181,10 +251,11 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
               p.position = phong_point(corner, normal, w);
               p.expected_normal = unit_or_zero(w[0] * normal[0] + w[1] * normal[1] + w[2] * normal[2]);
               p.max_move = kMaxMoveShare * longest;
+              p.piece = triangle_piece(t);
               points.push_back(p);
             }
         }
-        land_on_surface(f, planes, points, limits);
+        land_on_surface(functions, planes, points, limits);
         std::size_t i = 0;
         for (std::size_t t = r.begin(); t != r.end(); ++t)
           for (std::size_t m = 0; m < layout.inner_per_triangle(); ++m, ++i) {
@@ -195,22 +266,29 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
           }
       });
   result.failed_points = failures.combine(std::plus<>());
+  if (k == 1) result.failed_points += map.joining_edges;
   mesh.triangles.resize(layout.triangle_count());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, base.triangle_count(), kTrianglesPerTask),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t t = r.begin(); t != r.end(); ++t)
                         layout.emit_triangles(t, mesh.triangles.data() + t * static_cast<std::size_t>(k * k));
                     });
+  const auto evaluations = [&] {
+    std::uint64_t n = 0;
+    for (const auto& s : samplers) n += s->gradient_count();
+    return n;
+  };
   if (result.failed_points == 0) result.failed_points = turned_triangles(mesh, normals);
   if (result.failed_points > 0) {
-    result.gradient_evaluations = f.gradient_count();
+    result.gradient_evaluations = evaluations();
     result.mesh = Mesh{};
     return result;
   }
   report(params, layout.vertex_count(), total_work);
 
-  LatticeRelaxation relaxation(mesh, normals, motion, layout, edges, edge_plane, f, planes, limits,
-                               params.sweep_block);
+  LatticeRelaxation relaxation(mesh, normals, motion, layout, edges, edge_plane, functions, vertex_function,
+                               planes, limits, params.sweep_block);
+  if (params.guard_angles) relaxation.set_angle_guard(params.angle_target);
   for (int s = 0; s < params.sweeps; ++s) {
     check_cancel(params);
     result.rejected_moves += relaxation.sweep();
@@ -224,13 +302,32 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
       result.rejected_moves += relaxation.sweep(&near);
     }
   }
+  if (params.repair_angle > 0.0)
+    result.repaired_vertices = repair_small_angles(
+        mesh, normals, AngleRepairInput{motion, functions, vertex_function, planes, limits},
+        params.repair_angle, kRepairRounds);
   result.smallest_angle = smallest_angle(mesh);
   if (const std::vector<float>* role = base.find_attribute("role")) {
     std::vector<float> roles(mesh.vertex_count(), kRefinementRole);
     std::copy(role->begin(), role->end(), roles.begin());
     mesh.set_attribute("role", std::move(roles));
   }
-  result.gradient_evaluations = f.gradient_count();
+  if (with_pieces) {
+    result.triangle_piece.resize(mesh.triangle_count());
+    for (std::size_t t = 0; t < base.triangle_count(); ++t)
+      std::fill_n(
+          result.triangle_piece.begin() + static_cast<std::ptrdiff_t>(t * static_cast<std::size_t>(k * k)),
+          k * k, triangle_piece(t));
+    result.vertex_piece.resize(mesh.vertex_count());
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+      result.vertex_piece[v] = static_cast<std::int32_t>(vertex_function.empty() ? 0 : vertex_function[v]);
+    for (std::size_t v = 0; v < base.vertex_count(); ++v)
+      if (map.on_curve[v]) result.vertex_piece[v] = -1;
+    for (std::uint32_t e = 0; e < edges.size(); ++e)
+      if (map.on_curve_edge(e))
+        for (int j = 1; j < k; ++j) result.vertex_piece[layout.edge_point(e, j)] = -1;
+  }
+  result.gradient_evaluations = evaluations();
   return result;
 }
 

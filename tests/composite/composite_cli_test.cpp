@@ -44,6 +44,14 @@ TEST(CompositeCli, MeshesAFileByProjectionAndByMarchingCubes) {
           .exit_code,
       0);
   EXPECT_EQ(test::read_text(one), test::read_text(two));
+  // --refine K refines the composite K times; its statistics say so.
+  const auto refined = dir / "refined.ply", stats = dir / "refined.json";
+  const auto r = test::run_command(kCli + " mesh " + kExamples + "cube.ipatch --refine 3 -q -o " +
+                                       refined.string() + " --stats-json " + stats.string(),
+                                   dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(test::read_text(stats).find("\"level\": 3,"), std::string::npos);
+  EXPECT_TRUE(analyze_topology(read_mesh(refined.string())).watertight());
 }
 
 TEST(CompositeCli, WarnsOfPatchesThatFoldAndRefusesTooShortSetbacks) {

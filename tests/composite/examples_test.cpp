@@ -16,21 +16,13 @@
 
 #include "composite/composite_mesher.hpp"
 #include "composite/composite_quality.hpp"
+#include "example_files.hpp"
 #include "ipatch/ipatch_file.hpp"
 #include "ipatch/patch_validity.hpp"
 #include "self_intersection.hpp"
 
 namespace isopatch {
 namespace {
-
-std::vector<std::string> example_files() {
-  std::vector<std::string> files;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(ISOPATCH_SOURCE_DIR) + "/examples"))
-    if (entry.path().extension() == ".ipatch") files.push_back(entry.path().filename().string());
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 /// The genus of the composite's own cell complex (corners, curves, patches), and its boundary curves.
 std::pair<int, std::size_t> composite_genus(const Composite& c) {
@@ -51,7 +43,7 @@ std::pair<int, std::size_t> composite_genus(const Composite& c) {
 class Examples : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Examples, MeshesClosedOnEveryPatchWithSmoothSeams) {
-  const Composite c = read_ipatch(std::string(ISOPATCH_SOURCE_DIR) + "/examples/" + GetParam());
+  const Composite c = read_ipatch(test::example_path(GetParam()));
   Settings s;
   s.edge_length = c.box.diagonal() / 90.0;
   MeshStats stats;
@@ -89,7 +81,7 @@ TEST_P(Examples, MeshesClosedOnEveryPatchWithSmoothSeams) {
   EXPECT_GE(q.patch_min_angle, 20.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Composite, Examples, ::testing::ValuesIn(example_files()),
+INSTANTIATE_TEST_SUITE_P(Composite, Examples, ::testing::ValuesIn(test::example_files()),
                          [](const auto& param_info) {
                            std::string name = param_info.param.substr(0, param_info.param.size() - 7);
                            std::replace(name.begin(), name.end(), '-', '_');
