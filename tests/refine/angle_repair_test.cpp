@@ -31,17 +31,22 @@ Mesh octahedron() {
 TEST(AngleRepair, RaisesTheSmallestAngleToTheFloorOnTheSurface) {
   const SurfacePtr s = test::sphere();
   RefineParams p;
-  p.level = 6;
+  p.level = 8;
   p.repair_angle = 0.0;
   const RefineResult r = refine_mesh(octahedron(), *s, p);
   ASSERT_EQ(r.failed_points, 0u);
   ASSERT_GT(r.smallest_angle, 30.0);
   // Three vertices pushed along the sphere most of the way to a neighbour: triangles of a few degrees.
   Mesh mesh = r.mesh;
-  for (const std::uint32_t v : {100u, 200u, 300u}) {
-    const Triangle& t = *std::find_if(mesh.triangles.begin(), mesh.triangles.end(),
-                                      [&](const Triangle& tri) { return tri[0] == v; });
-    mesh.positions[v] = (0.2 * mesh.positions[v] + 0.8 * mesh.positions[t[1]]).normalized();
+  const std::size_t n = mesh.vertex_count();
+  for (const std::size_t v : {n / 4, n / 2, 3 * n / 4}) {
+    const auto t = std::find_if(mesh.triangles.begin(), mesh.triangles.end(), [&](const Triangle& tri) {
+      return std::find(tri.begin(), tri.end(), v) != tri.end();
+    });
+    ASSERT_NE(t, mesh.triangles.end());
+    const auto corner = static_cast<std::size_t>(std::find(t->begin(), t->end(), v) - t->begin());
+    const std::uint32_t next = (*t)[(corner + 1) % 3];
+    mesh.positions[v] = (0.2 * mesh.positions[v] + 0.8 * mesh.positions[next]).normalized();
   }
   std::vector<Eigen::Vector3f> normals;
   for (const Vec3& q : mesh.positions) normals.push_back(q.normalized().cast<float>());
