@@ -6,6 +6,11 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <utility>
+
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
 
 #include "remesh/triangle_angle.hpp"
 
@@ -44,16 +49,43 @@ double fan_angle(const Mesh& mesh, const std::vector<Eigen::Vector3f>& normals, 
 
 std::size_t repair_small_angles(Mesh& mesh, std::vector<Eigen::Vector3f>& normals, const AngleRepairInput& in,
                                 double floor, int rounds) {
-  // The free vertices of the triangles under the floor, with their fans (one scan of the triangles).
+  // The free vertices of the triangles under the floor, with their fans: two parallel scans of the
+  // triangles, each thread collecting its own list; the lists sorted, so the fans are the same for any
+  // thread count.
+  constexpr std::size_t kGrain = 8192;
+  tbb::combinable<std::vector<std::uint32_t>> seeds;
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), kGrain),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        auto& local = seeds.local();
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          const Triangle& tri = mesh.triangles[t];
+          if (smallest_angle(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]) < floor)
+            for (const std::uint32_t v : tri)
+              if (in.motion[v] == Motion::Free) local.push_back(v);
+        }
+      });
+  std::vector<std::uint32_t> vertices;
+  seeds.combine_each(
+      [&](const std::vector<std::uint32_t>& l) { vertices.insert(vertices.end(), l.begin(), l.end()); });
+  if (vertices.empty()) return 0;
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  std::vector<std::uint8_t> wanted(mesh.vertex_count(), 0);
+  for (const std::uint32_t v : vertices) wanted[v] = 1;
+  tbb::combinable<std::vector<std::pair<std::uint32_t, std::uint32_t>>> corners;  // (vertex, triangle)
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      auto& local = corners.local();
+                      for (std::size_t t = r.begin(); t != r.end(); ++t)
+                        for (const std::uint32_t v : mesh.triangles[t])
+                          if (wanted[v]) local.emplace_back(v, static_cast<std::uint32_t>(t));
+                    });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> incident;
+  corners.combine_each([&](const auto& l) { incident.insert(incident.end(), l.begin(), l.end()); });
+  std::sort(incident.begin(), incident.end());
   std::map<std::uint32_t, Fan> fans;
-  for (const Triangle& t : mesh.triangles)
-    if (smallest_angle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]) < floor)
-      for (const std::uint32_t v : t)
-        if (in.motion[v] == Motion::Free) fans.try_emplace(v);
-  if (fans.empty()) return 0;
-  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-    for (const std::uint32_t v : mesh.triangles[t])
-      if (const auto it = fans.find(v); it != fans.end()) it->second.triangles.push_back(t);
+  for (const auto& [v, t] : incident) fans[v].triangles.push_back(t);
 
   std::size_t moves = 0;
   std::vector<NewtonPoint> candidates;

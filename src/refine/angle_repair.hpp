@@ -4,10 +4,10 @@
 // moves even out a lattice but do not aim at its worst angle (more of them lowered it on the
 // tanglecube, docs/algorithms.md 8.5); this is a pattern search on the smallest angle of a vertex's fan
 // itself: candidate points around the vertex in its tangent plane, each put on f = 0, the best kept when
-// it raises that angle and leaves every triangle of the fan facing the surface. Vertices are visited in
-// ascending order, one after the other, each seeing the moves before it, so the result does not depend
-// on threads; the work is a few dozen landings per vertex of a triangle under the floor, a small share
-// of the mesh.
+// it raises that angle and leaves every triangle of the fan facing the surface. The vertices are found
+// by two parallel scans of the triangles and then visited in ascending order, one after the other,
+// each seeing the moves before it, so the result does not depend on threads; the work is a few dozen
+// landings per vertex of a triangle under the floor, a small share of the mesh.
 
 #include <isopatch/mesh.hpp>
 

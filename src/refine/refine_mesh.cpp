@@ -302,7 +302,8 @@ RefineResult refine_pieces(const Mesh& base, const RefinePieces& pieces, const R
       result.rejected_moves += relaxation.sweep(&near);
     }
   }
-  if (params.repair_angle > 0.0)
+  result.smallest_angle = smallest_angle(mesh);
+  if (params.repair_angle > 0.0 && result.smallest_angle < params.repair_angle)
     result.repaired_vertices = repair_small_angles(
         mesh, normals, AngleRepairInput{motion, functions, vertex_function, planes, limits},
         params.repair_angle, kRepairRounds);
