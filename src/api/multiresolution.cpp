@@ -8,9 +8,9 @@
 
 #include <isopatch/error.hpp>
 
+#include "refine/lattice_relaxation.hpp"
 #include "refine/refine_mesh.hpp"
 #include "refine/refinement_level.hpp"
-#include "remesh/triangle_angle.hpp"
 
 namespace isopatch {
 namespace {
@@ -70,15 +70,6 @@ constexpr double kAngleFloor = 20.0;
 /// least the clean-up's floor or no more than kBaseAngleSlack below the base's own (degrees).
 constexpr double kCleanupFloor = 25.0;
 constexpr double kBaseAngleSlack = 0.5;
-
-/// The smallest angle of any triangle of `mesh`, degrees (180 without triangles).
-double smallest_angle(const Mesh& mesh) {
-  double least = 180.0;
-  for (const Triangle& t : mesh.triangles)
-    least = std::min(
-        least, isopatch::smallest_angle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
-  return least;
-}
 
 /// The settings of a base at `level` times the target sizes.
 Settings base_settings(const Settings& settings, double edge, int level) {
@@ -205,7 +196,8 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
         (!automatic ||
          (refined.smallest_angle >= kAngleFloor &&
           (!bases.keep_base_angles ||
-           refined.smallest_angle >= std::min(kCleanupFloor, smallest_angle(base) - kBaseAngleSlack))));
+           refined.smallest_angle >=
+               std::min(kCleanupFloor, refine::smallest_angle_degrees(base) - kBaseAngleSlack))));
     if (kept) {
       info.level = level;
       info.base_vertices = base.vertex_count();

@@ -5,6 +5,7 @@
 #include <isopatch/error.hpp>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <string>
 #include <utility>
@@ -102,18 +103,18 @@ refine::RefineResult refine_composite(const Composite& composite, const Composit
     // A refined curve's vertices: its base samples with the points of each segment's edge between.
     const refine::BaseEdges edges = refine::base_edges(base.mesh);
     const refine::LatticeLayout layout(base.mesh, edges, k);
-    std::map<EdgeKey, std::uint32_t> edge_number;
-    for (std::uint32_t e = 0; e < edges.size(); ++e) edge_number[{edges.ends[e][0], edges.ends[e][1]}] = e;
     refined->curve_vertices.assign(base.curve_vertices.size(), {});
     for (std::size_t c = 0; c < base.curve_vertices.size(); ++c) {
       const auto& ids = base.curve_vertices[c];
       auto& out = refined->curve_vertices[c];
       for (std::size_t i = 0; i + 1 < ids.size(); ++i) {
         const std::uint32_t a = ids[i], b = ids[i + 1];
-        const auto found = edge_number.find({std::min(a, b), std::max(a, b)});
-        if (found == edge_number.end())
+        // base_edges() numbers the edges in ascending (lower, higher) order.
+        const std::array<std::uint32_t, 2> key = {std::min(a, b), std::max(a, b)};
+        const auto found = std::lower_bound(edges.ends.begin(), edges.ends.end(), key);
+        if (found == edges.ends.end() || *found != key)
           throw Error(ErrorKind::Internal, "refine: a curve segment is not an edge of the composite mesh");
-        const std::uint32_t e = found->second;
+        const auto e = static_cast<std::uint32_t>(found - edges.ends.begin());
         out.push_back(a);
         for (int j = 1; j < k; ++j) out.push_back(layout.edge_point(e, a < b ? j : k - j));
       }

@@ -6,6 +6,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include "remesh/remesh_thresholds.hpp"
 #include "remesh/triangle_angle.hpp"
@@ -40,6 +41,17 @@ bool faces_the_surface(const std::vector<Vec3>& positions, const std::vector<Eig
 
 double smallest_angle_degrees(const Mesh& mesh, const Triangle& t) {
   return smallest_angle(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+}
+
+double smallest_angle_degrees(const Mesh& mesh) {
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), kChunk), 180.0,
+      [&](const tbb::blocked_range<std::size_t>& r, double least) {
+        for (std::size_t t = r.begin(); t != r.end(); ++t)
+          least = std::min(least, smallest_angle_degrees(mesh, mesh.triangles[t]));
+        return least;
+      },
+      [](double a, double b) { return std::min(a, b); });
 }
 
 LatticeRelaxation::LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& normals,

@@ -101,4 +101,8 @@ bool faces_the_surface(const Vec3& a, const Vec3& b, const Vec3& c,
 /// Smallest angle of triangle t of `mesh`, in degrees (0 for a degenerate triangle).
 double smallest_angle_degrees(const Mesh& mesh, const Triangle& t);
 
+/// Smallest angle of any triangle of `mesh`, in degrees (180 without triangles). Parallel; the same
+/// value for any thread count (a minimum).
+double smallest_angle_degrees(const Mesh& mesh);
+
 }  // namespace isopatch::refine

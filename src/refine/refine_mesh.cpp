@@ -64,17 +64,6 @@ std::size_t turned_triangles(const Mesh& mesh, const std::vector<Eigen::Vector3f
       std::plus<>());
 }
 
-double smallest_angle(const Mesh& mesh) {
-  return tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), 4096), 180.0,
-      [&](const tbb::blocked_range<std::size_t>& r, double least) {
-        for (std::size_t t = r.begin(); t != r.end(); ++t)
-          least = std::min(least, smallest_angle_degrees(mesh, mesh.triangles[t]));
-        return least;
-      },
-      [](double a, double b) { return std::min(a, b); });
-}
-
 /// The vertices of the triangles under `angle` degrees and of every triangle touching one of them.
 std::vector<std::uint8_t> near_small_angles(const Mesh& mesh, double angle) {
   std::vector<std::uint8_t> seed(mesh.vertex_count(), 0), marked(mesh.vertex_count(), 0);
@@ -302,12 +291,12 @@ RefineResult refine_pieces(const Mesh& base, const RefinePieces& pieces, const R
       result.rejected_moves += relaxation.sweep(&near);
     }
   }
-  result.smallest_angle = smallest_angle(mesh);
+  result.smallest_angle = smallest_angle_degrees(mesh);
   if (params.repair_angle > 0.0 && result.smallest_angle < params.repair_angle)
     result.repaired_vertices = repair_small_angles(
         mesh, normals, AngleRepairInput{motion, functions, vertex_function, planes, limits},
         params.repair_angle, kRepairRounds);
-  result.smallest_angle = smallest_angle(mesh);
+  if (result.repaired_vertices > 0) result.smallest_angle = smallest_angle_degrees(mesh);
   if (const std::vector<float>* role = base.find_attribute("role")) {
     std::vector<float> roles(mesh.vertex_count(), kRefinementRole);
     std::copy(role->begin(), role->end(), roles.begin());
