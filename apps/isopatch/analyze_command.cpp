@@ -19,11 +19,16 @@
 
 #include "cli_support.hpp"
 #include "commands.hpp"
+#include "singular_report.hpp"
 
 namespace isopatch::cli {
 namespace {
 
 using nlohmann::json;
+
+/// The element shape is also measured outside balls of this many mean edge lengths about the singular
+/// points of f = 0.
+constexpr double kSingularBallEdges = 2.0;
 
 struct AnalyzeOptions {
   std::string mesh;
@@ -109,6 +114,18 @@ json to_json(const SelfIntersectionReport& r) {
   return j;
 }
 
+json to_json(const ShapeAwayReport& a) {
+  return {{"radius", a.radius},
+          {"radius_in_mean_edge_lengths", kSingularBallEdges},
+          {"balls", a.centres},
+          {"triangles", a.triangles},
+          {"triangles_left_out", a.triangles_near},
+          {"min_angle_degrees", a.triangles > 0 ? json(a.smallest_angle) : json(nullptr)},
+          {"share_below_20_degrees", a.share_below_20},
+          {"interior_vertices", a.interior_vertices},
+          {"valence_share_6", a.share_6}};
+}
+
 // ---- text -----------------------------------------------------------------------------------------
 
 std::string yes_no(bool b) {
@@ -189,6 +206,26 @@ void print_accuracy(const std::string& surface, const AccuracyReport& a) {
   print_curvature("K", a.gaussian_curvature);
 }
 
+/// The singular points found and the element shape away from them.
+void print_singular(const SingularRun& run, const std::optional<ShapeAwayReport>& away) {
+  const SingularPoints& f = run.found;
+  if (f.isolated_points() + f.curves() > 0) {
+    std::printf("singular   %s\n", describe_singular_points(f, run.box).c_str());
+  } else if (f.status == SingularSearchStatus::BudgetExhausted) {
+    std::printf("singular   none found; the search stopped at its budget (%s)\n", f.reason.c_str());
+  }
+  if (!away) return;
+  std::printf(
+      "away       outside balls of radius %.4g (%g mean edge lengths) about them: %s of %s triangles\n",
+      away->radius, kSingularBallEdges, group_digits(away->triangles).c_str(),
+      group_digits(away->triangles + away->triangles_near).c_str());
+  std::printf(
+      "           min angle %.2f degrees, %.2f%% under 20 degrees; %.2f%% of valence 6 (%s interior "
+      "vertices)\n",
+      away->smallest_angle, 100.0 * away->share_below_20, 100.0 * away->share_6,
+      group_digits(away->interior_vertices).c_str());
+}
+
 bool has_ply_extension(const std::string& path) {
   if (path.size() < 4) return false;
   std::string ext = path.substr(path.size() - 4);
@@ -211,6 +248,16 @@ int run_analyze(const AnalyzeOptions& o) {
   if (!o.surface.empty()) surface = resolve_surface_for_mesh(o.surface, o.box, o.params, mesh);
 
   const QualityReport report = analyze_quality(mesh, surface.get());
+  // Singular points of f = 0, and the element shape outside balls about them (where the surface itself
+  // is not smooth, no mesh is well shaped).
+  std::optional<SingularRun> singular;
+  std::optional<ShapeAwayReport> away;
+  if (surface && mesh.triangle_count() > 0) {
+    const double edge = report.shape.edge_length.mean;
+    singular = search_singular_points(*surface, surface->box(), edge);
+    const std::vector<Vec3> centres = singular->found.singular_samples();
+    if (!centres.empty()) away = analyze_shape_away(mesh, centres, kSingularBallEdges * edge);
+  }
 
   if (o.json) {
     json j = {
@@ -223,6 +270,8 @@ int run_analyze(const AnalyzeOptions& o) {
       j["accuracy"] = to_json(*report.accuracy);
       j["accuracy"]["surface"] = surface->name();
     }
+    if (singular) j["singular_points"] = singular_json(*singular);
+    if (away) j["away_from_singular_points"] = to_json(*away);
     std::cout << j.dump(2) << "\n";
   } else {
     std::printf("mesh       %s: %s vertices, %s triangles\n", o.mesh.c_str(),
@@ -232,6 +281,7 @@ int run_analyze(const AnalyzeOptions& o) {
     print_shape(report.shape);
     print_valence(report.valence);
     if (report.accuracy) print_accuracy(surface->name(), *report.accuracy);
+    if (singular) print_singular(*singular, away);
   }
 
   if (!o.write.empty()) {

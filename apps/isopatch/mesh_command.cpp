@@ -22,6 +22,7 @@
 #include "glb_colours.hpp"
 #include "mesh_warnings.hpp"
 #include "progress_line.hpp"
+#include "singular_report.hpp"
 #include "stats_output.hpp"
 #include "volume_input.hpp"
 
@@ -66,6 +67,7 @@ struct MeshOptions {
   std::uint64_t max_evaluations = 0;
   double time_limit = 0.0;
   std::optional<double> max_error;
+  bool uniform = false;
   std::string quality = "default";
   int threads = 0;
   VolumeOptions volume;
@@ -111,6 +113,7 @@ int run_mesh(const MeshOptions& o) {
   settings.max_ray_angle = o.max_ray_angle;
   settings.remesh_iterations = o.remesh;
   settings.refine = o.refine;
+  settings.uniform = o.uniform;
   settings.valence_search = o.valence_search;
   settings.curvature_sweeps = o.curvature_sweeps;
   settings.max_evaluations = o.max_evaluations;
@@ -151,6 +154,14 @@ int run_mesh(const MeshOptions& o) {
                              : is_volume_path(o.surface)
                                  ? volume_input(o.surface, o.volume)
                                  : surface_in_region(o.surface, settings, parse_params(o.params));
+  // The singular points of f = 0 in the box, before meshing: the mesh is refined around them
+  // (SizeSettings::refine_around), and they are listed in a warning and the statistics
+  // (singular_report.hpp). The search and the checks behind the warnings run on the meshing's threads.
+  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  const SingularRun singular =
+      arena.execute([&] { return search_singular_points(*surface, settings, is_volume_path(o.surface)); });
+  if (!composite && settings.method == Method::Projection && !settings.uniform)
+    settings.refine_around = singular.found.singular_samples();
   MeshStats stats;
   std::optional<ProgressLine> line;  // ended (newline) before anything else is printed, also on errors
   if (progress_wanted(o.progress, o.quiet)) {
@@ -164,10 +175,10 @@ int run_mesh(const MeshOptions& o) {
   if (o.fields) attach_fields(mesh, *surface);
   const bool glb = format_from_path(o.output) == MeshFormat::Glb;
   write_mesh(mesh, o.output, glb ? glb_colours(mesh, surface.get(), o.colour) : std::vector<Vec3>{});
-  if (!o.stats_json.empty()) write_stats_json(o.stats_json, surface->name(), settings, stats, o.output);
+  if (!o.stats_json.empty())
+    write_stats_json(o.stats_json, surface->name(), settings, stats, o.output, &singular);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
-  // The checks behind the warnings run in parallel too, on as many threads as the meshing.
-  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  print_singular_warning(singular, stderr);
   arena.execute([&] { print_mesh_warnings(stats, mesh, stderr); });
   return 0;
 }
@@ -252,6 +263,9 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--max-error", o->max_error,
                   "Curvature-adapted sizes: triangle centroids stay within this distance of f = 0 "
                   "(edges at most --edge-length)");
+  cmd->add_flag("--uniform", o->uniform,
+                "Projection: one edge length everywhere (default: smaller, graded sizes where the box or a "
+                "region plane cuts f = 0 in a feature narrower than an edge, reported in a warning)");
   cmd->add_option("--quality", o->quality,
                   "preview (the paper's method with a local repair: fastest, valence 6 >= 90%, angles >= "
                   "20 degrees) | default | fine (lowest curvature error)")

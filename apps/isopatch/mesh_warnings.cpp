@@ -4,6 +4,8 @@
 #include <isopatch/metrics.hpp>
 #include <isopatch/self_intersection.hpp>
 
+#include <string>
+
 namespace isopatch::cli {
 
 void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out) {
@@ -22,6 +24,20 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
         "are closed by fans over their boundaries (%zu fan centres off the surface): their functions "
         "leave their regions or fold there\n",
         w.fan_patches, w.unprojected_fan_centres);
+  if (const auto& l = stats.local_sizes) {
+    std::string where;
+    if (l->sources > 0)
+      where = std::to_string(l->sources) +
+              " points where the box or region cuts f = 0 in features narrower than an edge";
+    if (l->around > 0)
+      where += (where.empty() ? "" : " and ") + std::to_string(l->around) + " singular points";
+    std::fprintf(
+        out,
+        "warning: sizes refined around %s, in %.4g,%.4g,%.4g,%.4g,%.4g,%.4g, down to %.3g: about %zu "
+        "vertices added (--uniform keeps one size)\n",
+        where.c_str(), l->extent.lo.x(), l->extent.lo.y(), l->extent.lo.z(), l->extent.hi.x(),
+        l->extent.hi.y(), l->extent.hi.z(), l->smallest_size, l->added_vertices);
+  }
   if (w.error_bound_violations.value_or(0) > 0)
     std::fprintf(out, "warning: %zu triangles have their centroid farther than --max-error from f = 0\n",
                  *w.error_bound_violations);

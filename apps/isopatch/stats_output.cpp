@@ -31,7 +31,7 @@ void print_summary(const std::string& surface_name, const Settings& settings, co
 }
 
 void write_stats_json(const std::string& path, const std::string& surface_name, const Settings& settings,
-                      const MeshStats& stats, const std::string& output) {
+                      const MeshStats& stats, const std::string& output, const SingularRun* singular) {
   nlohmann::ordered_json j = {
       {"surface", surface_name}, {"method", method_name(settings.method)}, {"output", output}};
   visit_stats(stats, [&j](std::string_view stage, std::string_view name, double value) {
@@ -42,6 +42,7 @@ void write_stats_json(const std::string& path, const std::string& surface_name, 
     else
       entry = value;
   });
+  if (singular) j["singular_points"] = singular_json(*singular);
   std::ofstream out(path, std::ios::binary);
   if (out) out << j.dump(2) << "\n";
   if (!out) throw IoError("cannot write '" + path + "'");

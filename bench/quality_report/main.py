@@ -11,6 +11,8 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # bench/
+import hard_shapes  # noqa: E402
 import machine
 import markdown
 import matching
@@ -146,11 +148,18 @@ def main() -> int:
         if adapted_runs:
             adapted.append((spec, adapted_runs, cgal_runs))
 
+    hard = ""
+    if not args.quick and not wanted:
+        log("--- shapes that break the floor most easily (bench/hard_shapes.py)")
+        hard = hard_shapes.section(hard_shapes.run_all(args.tool, os.path.join(args.work, "hard_shapes")),
+                                   "/usr/bin/python3 bench/hard_shapes.py")
     seconds = runs.now() - start
     header = machine.header(args.repo, args.command, seconds, bool(args.peer), args.quick)
     cgal_note = "" if args.peer else "CGAL was not built, so the checks against CGAL are n/a."
     with open(args.out, "w", encoding="utf-8") as f:
         f.write(markdown.document(header, results, adapted, cgal_note))
+        if hard:
+            f.write("\n" + hard)
     with open(os.path.join(args.work, "results.json"), "w", encoding="utf-8") as f:
         json.dump([{"surface": spec.name, "args": surface,
                     "groups": [{"size": label, "runs": {k: vars(r) for k, r in by.items()}} for label, by in groups],

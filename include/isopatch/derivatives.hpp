@@ -31,4 +31,13 @@ struct IntervalGradient {
   std::array<Interval, 3> gradient;
 };
 
+/// Interval bounds of f, its gradient and its Hessian over a box. The Hessian's six entries are
+/// xx, xy, xz, yy, yz, zz; an entry is the whole line where it is unbounded or where the gradient may
+/// jump inside the box (a kink of min, max or abs).
+struct IntervalHessian {
+  Interval value;
+  std::array<Interval, 3> gradient;
+  std::array<Interval, 6> hessian;
+};
+
 }  // namespace isopatch

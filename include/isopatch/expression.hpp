@@ -71,6 +71,9 @@ class Expression {
   Interval bound(const Box& box) const;
   /// Sound enclosures of f and of its gradient over the box (forward mode on intervals).
   IntervalGradient gradient_bound(const Box& box) const;
+  /// Sound enclosures of f, its gradient and its Hessian over the box (second-order forward mode on
+  /// intervals; see IntervalHessian for the entries that are the whole line).
+  IntervalHessian hessian_bound(const Box& box) const;
 
   /// Instructions plus constants of the compiled program (shared subexpressions count once).
   std::size_t tape_size() const;

@@ -4,6 +4,8 @@
 /// clean-up) and one for what the mesh written may get wrong (warnings). A stage that did not run
 /// leaves its part empty. visit_stats() lists every number by a stable name, for printing and JSON.
 
+#include <isopatch/geometry.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -154,6 +156,16 @@ struct RefineStats {
   std::uint64_t gradient_evaluations = 0;  ///< of the refinement alone
 };
 
+/// Sizes refined locally where the box or a region plane cuts f = 0 in features smaller than an edge
+/// (SizeSettings::uniform, docs/algorithms.md 4.11).
+struct LocalSizes {
+  std::size_t sources = 0;         ///< points of the cut curves that asked for a smaller size
+  std::size_t around = 0;          ///< points of SizeSettings::refine_around in the box
+  double smallest_size = 0.0;      ///< the smallest size they asked for
+  Box extent;                      ///< the bounding box of those points
+  std::size_t added_vertices = 0;  ///< about how many vertices the smaller sizes added to the output
+};
+
 struct MeshStats {
   double seconds = 0.0;
   int threads = 1;                         ///< worker threads the run used
@@ -165,7 +177,8 @@ struct MeshStats {
   std::optional<MarchingCubesStats> marching_cubes;
   std::optional<FairingSummary> fairing;
   std::optional<RemeshStats> cleanup;
-  std::optional<RefineStats> refine;  ///< multiresolution meshing, when it ran
+  std::optional<RefineStats> refine;      ///< multiresolution meshing, when it ran
+  std::optional<LocalSizes> local_sizes;  ///< when sizes were refined at small features of the cut
   MeshWarnings warnings;
   StageTimes times;  ///< wall time per stage
 };
@@ -173,8 +186,8 @@ struct MeshStats {
 /// Calls `visit(stage, name, value)` for every number of `stats` whose stage ran, in a fixed order:
 /// stage "mesh" (seconds, threads, evaluations, evaluations per output vertex, vertices, triangles),
 /// then "seconds" (StageTimes), "projection" (with "defect_<kind>_<what>" from RawDefects),
-/// "marching_cubes", "fairing", "cleanup", "refine", "warnings". Names are stable (scripts read them):
-/// per-count families are spelled "patches_N", "leaves_depth_N", "doubtful_REASON".
+/// "marching_cubes", "fairing", "cleanup", "refine", "local_sizes", "warnings". Names are stable (scripts
+/// read them): per-count families are spelled "patches_N", "leaves_depth_N", "doubtful_REASON".
 void visit_stats(
     const MeshStats& stats,
     const std::function<void(std::string_view stage, std::string_view name, double value)>& visit);

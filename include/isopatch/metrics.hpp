@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace isopatch {
@@ -102,5 +103,26 @@ struct SmallAngleCount {
 /// figures in one pass and no memory beyond the mesh (for meshes of millions of triangles).
 /// \throw InputError as analyze_shape.
 SmallAngleCount count_small_angles(const Mesh& mesh, double degrees);
+
+/// Element shape and valence away from given points: the figures that matter for the rest of a mesh
+/// of a surface with singular points (singular_points.hpp), near which no element shape is promised.
+struct ShapeAwayReport {
+  double radius = 0.0;                ///< of the balls left out
+  std::size_t centres = 0;            ///< balls left out
+  std::size_t triangles = 0;          ///< triangles with no vertex in a ball (measured)
+  std::size_t triangles_near = 0;     ///< triangles with a vertex in a ball (left out)
+  double smallest_angle = 180.0;      ///< degrees, over the measured triangles (180 when there is none)
+  double share_below_20 = 0.0;        ///< fraction of the measured triangles with an angle under 20 degrees
+  std::size_t interior_vertices = 0;  ///< interior vertices (as ValenceReport) outside every ball
+  double share_6 = 0.0;               ///< fraction of those of valence 6 (valence in the whole mesh)
+};
+/// Measures the triangles of `mesh` none of whose vertices lies in a closed ball of `radius` about a
+/// point of `centres`, and the interior vertices outside every ball (their valence counted in the whole
+/// mesh), with analyze_shape's smallest angle and analyze_valence's interior vertices. With no centre,
+/// every triangle and interior vertex is measured. O(V + F log F), the centres hashed into cubes of
+/// side `radius` (samples along a curve of singular points at a spacing under `radius` leave out a tube).
+/// \throw InputError as analyze_shape, and for a radius that is not a positive number or a centre that
+/// is not finite.
+ShapeAwayReport analyze_shape_away(const Mesh& mesh, std::span<const Vec3> centres, double radius);
 
 }  // namespace isopatch

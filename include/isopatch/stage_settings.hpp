@@ -13,6 +13,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace isopatch {
 
@@ -31,6 +32,16 @@ struct SizeSettings {
   /// it, and 1/2048 of the longest side is the floor); the projection octree refines where it asks for
   /// smaller cells, and the clean-up grades and follows it. Combined with max_error, the smaller wins.
   std::function<double(const Vec3&)> size_field;
+  /// Projection: one size everywhere. By default (false) sizes shrink, graded, where the box or a
+  /// region plane cuts f = 0 in a feature smaller than an edge (a cut curve turning within an edge, a
+  /// strip or slit narrower than one), so that no triangle must span it (MeshStats::local_sizes).
+  bool uniform = false;
+  /// Projection: points around which sizes shrink to the edge length / 2^refine_around_depth, graded
+  /// as the clean-up grades (0.3 per unit distance); ignored with `uniform`. The command line passes the
+  /// singular points of f = 0 it found (singular_points.hpp), so the mesh around a cusp or a crossing
+  /// of sheets is finer. In the user's coordinates (a frame rotates them with the surface).
+  std::vector<Vec3> refine_around;
+  int refine_around_depth = 2;  ///< 0..6
 
   /// \throw SettingError for a bound out of range.
   void validate() const;

@@ -45,6 +45,9 @@ class Surface {
   virtual std::optional<Interval> bound(const Box& box) const;
   /// Sound enclosures of f and of its gradient over `box`, or nullopt.
   virtual std::optional<IntervalGradient> gradient_bound(const Box& box) const;
+  /// Sound enclosures of f, its gradient and its Hessian over `box`, or nullopt (the default: only the
+  /// singular-point search uses them, singular_points.hpp).
+  virtual std::optional<IntervalHessian> hessian_bound(const Box& box) const;
 
   const std::string& name() const { return name_; }
   const Box& box() const { return box_; }

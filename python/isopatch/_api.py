@@ -68,6 +68,7 @@ def mesh(
     max_vertices: int = 0,
     max_evaluations: int = 0,
     time_limit: float = 0.0,
+    uniform: bool = False,
     samples: Optional[int] = None,
     batch: int = 1 << 18,
 ) -> Mesh:
@@ -83,8 +84,9 @@ def mesh(
     params: values overriding a formula's definitions (``{'r': 0.3}``).
     edge_length, max_error, quality ('preview' | 'default' | 'fine'), threads (0: every core), method
         ('projection' | 'mc'), remesh, refine (0: automatic multiresolution level, 1: off, 2..16: that
-        level), resolution, grid, max_vertices, max_evaluations, time_limit: the library's settings, as
-        the command line's flags of the same names.
+        level), resolution, grid, max_vertices, max_evaluations, time_limit, uniform (one edge length
+        even where the box cuts the surface in features narrower than an edge): the library's
+        settings, as the command line's flags of the same names.
     samples, batch: Python functions only. The function is called in batches of at most ``batch``
         points: first on a grid of ``samples`` cells along the box's longest side (default: two per
         target edge, 64..256), whose tricubic B-spline interpolant is meshed, then for a few batched
@@ -94,7 +96,7 @@ def mesh(
     Ctrl-C stops it with KeyboardInterrupt. Raises the isopatch exceptions (isopatch.Error and its
     subclasses) with the library's messages; an exception raised by the function propagates unchanged.
     """
-    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations"))
+    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations", "uniform"))
     if isinstance(surface, str):
         if gradient is not None or samples is not None:
             raise InputError("gradient and samples are for Python functions, not formulas", "gradient")

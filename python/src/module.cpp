@@ -62,6 +62,8 @@ void set_option(Settings& s, const std::string& key, const py::handle& value) {
     s.max_evaluations = value.cast<std::uint64_t>();
   else if (key == "time_limit")
     s.time_limit = value.cast<double>();
+  else if (key == "uniform")
+    s.uniform = value.cast<bool>();
   else
     throw InputError("unknown setting '" + key + "'", key);
 }

@@ -85,3 +85,18 @@ def test_an_absurd_size_is_refused_before_any_work():
         assert e.setting == "max_vertices" and "about" in str(e)
     else:
         raise AssertionError("no LimitError")
+
+
+def test_sizes_refined_at_a_narrow_cut_unless_uniform():
+    # Schwarz P passes 0.003 from the box edge x = 1.937, z = 2.271 without crossing it: a strip of
+    # surface that narrow between two box faces. By default sizes shrink there (and the statistics say
+    # where and how many vertices it added); uniform=True keeps one size and leaves a sliver.
+    box = ((-2.128, -1.742, -1.814), (1.937, 2.097, 2.271))
+    local = isopatch.mesh("cos(x)+cos(y)+cos(z)", box=box)
+    sizes = local.stats["local_sizes"]
+    assert sizes["sources"] > 0 and sizes["added_vertices"] > 0
+    assert sizes["smallest_size"] < 0.5 * 4.085 / 64
+    assert local.analyze()["shape"]["min_angle_degrees"]["min"] >= 20.0
+    uniform = isopatch.mesh("cos(x)+cos(y)+cos(z)", box=box, uniform=True)
+    assert "local_sizes" not in uniform.stats
+    assert uniform.analyze()["shape"]["min_angle_degrees"]["min"] < 10.0

@@ -43,6 +43,7 @@ Mesh mesh_in_frame(const Surface& surface, const Settings& settings, MeshStats* 
   s.cells.clear();
   for (const ConvexRegion& c : settings.cells) s.cells.push_back(rotated(c, r));
   s.box = frame_bounds(user, r);
+  for (Vec3& p : s.refine_around) p = r.transpose() * p;
   const RotatedSurface framed(surface, r, frame_bounds(surface.box(), r));
   Mesh mesh = mesher(framed, s, stats);
   if (settings.cells.empty()) {

@@ -10,10 +10,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "api/budgeted_surface.hpp"
+#include "api/cut_feature_sizes.hpp"
 #include "api/frame_meshing.hpp"
 #include "api/multiresolution.hpp"
 #include "api/size_estimate.hpp"
@@ -73,6 +76,56 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
   if (settings.max_error) stats->warnings.error_bound_violations = r.error_bound_violations;
 }
 
+/// Sizes that shrink where the box or a region plane cuts f = 0 in features smaller than an edge
+/// (cut_feature_sizes.hpp) and around SizeSettings::refine_around: the settings with that size field (and the
+/// edge length made explicit, so the rest of the mesh keeps it), or nullopt when there are no such features,
+/// or when one size was asked for (uniform, a fixed resolution, the paper's method alone, marching cubes).
+struct LocalRefinement {
+  Settings settings;
+  std::shared_ptr<const CutFeatureSizes> sizes;
+  double edge = 0.0;
+  std::size_t cut_sources = 0;  ///< of the sizes' sources, those from the cut (the rest: refine_around)
+};
+std::optional<LocalRefinement> local_refinement(const Surface& surface, const Settings& settings,
+                                                const Box& box) {
+  if (settings.uniform || settings.method != Method::Projection || settings.resolution != 0 ||
+      settings.remesh_iterations.value_or(1) == 0)
+    return std::nullopt;
+  const double edge = default_edge_length(settings, box);
+  const double smallest = std::min(target_sizes(settings, box).smallest, edge);
+  std::vector<SizeSource> sources = cut_feature_sources(surface, box, settings.region, edge, smallest);
+  const std::size_t cut_sources = sources.size();
+  const double around = std::max(smallest, std::ldexp(edge, -settings.refine_around_depth));
+  for (const Vec3& p : settings.refine_around)
+    if (box.contains(p, 1e-9 * box.diagonal()) && around < edge) sources.push_back({p, around});
+  if (sources.empty()) return std::nullopt;
+  auto cut = std::make_shared<const CutFeatureSizes>(std::move(sources), edge, CutFeatureParams{}.grading);
+  LocalRefinement r{settings, cut, edge, cut_sources};
+  r.settings.edge_length = edge;
+  r.settings.uniform = true;  // the cut's sizes are in size_field now: not searched again
+  r.settings.size_field = [cut, user = settings.size_field](const Vec3& p) {
+    return user ? std::min(cut->at(p), user(p)) : cut->at(p);
+  };
+  return r;
+}
+
+/// What the local sizes did to `mesh`: about how many vertices they added (a vertex of size s takes the
+/// area of (s / edge)^2 vertices of the edge length, so it adds 1 - (s / edge)^2), where, and how small.
+LocalSizes local_sizes_report(const LocalRefinement& r, const Mesh& mesh) {
+  LocalSizes l;
+  l.sources = r.cut_sources;
+  l.around = r.sizes->source_count() - r.cut_sources;
+  l.smallest_size = r.sizes->smallest();
+  l.extent = r.sizes->extent();
+  double added = 0.0;
+  for (const Vec3& p : mesh.positions) {
+    const double s = std::min(r.sizes->at(p), r.edge) / r.edge;
+    added += 1.0 - s * s;
+  }
+  l.added_vertices = static_cast<std::size_t>(std::llround(added));
+  return l;
+}
+
 /// Meshes with the method of `settings`, then cleans up (remesh.hpp) when asked.
 Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats* stats);
 
@@ -113,6 +166,11 @@ Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats
       return mesh;
     }
     case Method::Projection: {
+      if (const std::optional<LocalRefinement> local = local_refinement(surface, settings, box)) {
+        Mesh mesh = dispatch_in_box(surface, local->settings, stats);
+        if (stats) stats->local_sizes = local_sizes_report(*local, mesh);
+        return mesh;
+      }
       // The automatic level leaves the paper's method alone (remesh_iterations = 0) unrefined.
       const bool refine =
           settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0);

@@ -107,6 +107,15 @@ void visit_stats(
     v("smallest_angle", r->smallest_angle);
     v("gradient_evaluations", count(r->gradient_evaluations));
   }
+  if (const auto& l = stats.local_sizes) {
+    const auto v = [&](std::string_view name, double value) { visit("local_sizes", name, value); };
+    v("sources", count(l->sources));
+    v("around", count(l->around));
+    v("smallest_size", l->smallest_size);
+    v("added_vertices", count(l->added_vertices));
+    for (int a = 0; a < 3; ++a) v(std::string("extent_lo_") + "xyz"[a], l -> extent.lo[a]);
+    for (int a = 0; a < 3; ++a) v(std::string("extent_hi_") + "xyz"[a], l -> extent.hi[a]);
+  }
   const MeshWarnings& w = stats.warnings;
   const auto v = [&](std::string_view name, double value) { visit("warnings", name, value); };
   if (stats.projection) {

@@ -29,6 +29,10 @@ bool open_angle(double degrees) {
 void SizeSettings::validate() const {
   if (!positive(edge_length)) throw SettingError("edge_length", "the edge length must be a positive number");
   if (!positive(max_error)) throw SettingError("max_error", "the maximum error must be a positive number");
+  if (refine_around_depth < 0 || refine_around_depth > 6)
+    throw SettingError("refine_around_depth", "the depth of refinement around points must be 0..6");
+  for (const Vec3& p : refine_around)
+    if (!p.allFinite()) throw SettingError("refine_around", "a point to refine around is not finite");
 }
 
 const Box& valid_box(const Box& box) {

@@ -27,5 +27,6 @@ void evaluate_batch(const Tape& tape, std::span<const Vec3> points, std::span<do
 
 Interval evaluate_interval(const Tape& tape, const Box& box);
 IntervalGradient evaluate_interval_gradient(const Tape& tape, const Box& box);
+IntervalHessian evaluate_interval_hessian(const Tape& tape, const Box& box);
 
 }  // namespace isopatch::expr

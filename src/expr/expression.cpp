@@ -62,6 +62,10 @@ IntervalGradient Expression::gradient_bound(const Box& box) const {
   return expr::evaluate_interval_gradient(*tape_, box);
 }
 
+IntervalHessian Expression::hessian_bound(const Box& box) const {
+  return expr::evaluate_interval_hessian(*tape_, box);
+}
+
 std::size_t Expression::tape_size() const {
   return tape_->size();
 }

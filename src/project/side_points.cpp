@@ -20,8 +20,11 @@ SidePoints sample_side(const Sampler& f, const CellCorner& from, const CellCorne
     const double t = static_cast<double>(j) / r;
     // Both corner directions are cell-edge directions of this face: the sum lies in its plane and is
     // never zero (adjacent edges are perpendicular, opposite ones point the same way).
-    rays.push_back(
-        {(1.0 - t) * from.position + t * to.position, 0.0, (1.0 - t) * from.direction + t * to.direction});
+    // The start is put into the face plane through a corner: (1 - t) a + t b rounds off a plane both
+    // corners lie on exactly, and a side on a box face must stay on it (the clean-up slides and merges
+    // only vertices exactly on one box face).
+    rays.push_back({onto_plane(face, (1.0 - t) * from.position + t * to.position, from.position), 0.0,
+                    (1.0 - t) * from.direction + t * to.direction});
   }
   evaluate_starts(f, rays);
   std::vector<std::optional<RayHit>> hits;

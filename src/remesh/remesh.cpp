@@ -24,6 +24,7 @@
 #include "remesh/size_field.hpp"
 #include "remesh/slot_renumbering.hpp"
 #include "remesh/triangle_angle.hpp"
+#include "remesh/triangle_measures.hpp"
 #include "remesh/valence_flips.hpp"
 
 #include <tbb/blocked_range.h>
@@ -307,11 +308,16 @@ class Remesher {
   bool try_collapse_boundary(std::uint32_t a, std::uint32_t b, double max_length) {
     if (slide_axis(a) < 0 && slide_plane(a) < 0) std::swap(a, b);
     const int axis = slide_axis(a), plane = slide_plane(a);
-    if (axis >= 0 ? mesh_.positions[b][axis] != mesh_.positions[a][axis]
-                  : !on_cut_plane(planes_, plane, mesh_.positions[b], plane_margin()))
-      return false;
+    const auto on_same_cut = [&](std::uint32_t v) {
+      return axis >= 0 ? mesh_.positions[v][axis] == mesh_.positions[a][axis]
+                       : on_cut_plane(planes_, plane, mesh_.positions[v], plane_margin());
+    };
+    if (!on_same_cut(b)) return false;
     const auto e = mesh_.boundary_edge(a, b);
-    if (!e || mesh_.incident[a].size() < 2 || mesh_.valence(e->c) <= 3) return false;
+    // An ear (a in one triangle) goes with its triangle when all three corners lie on the same cut: the
+    // boundary then runs b - c, still along it (the raw mesh leaves such ears where several crossings
+    // of lattice segments fall within rounding of one lattice point on a box face).
+    if (!e || (mesh_.incident[a].size() < 2 && !on_same_cut(e->c)) || mesh_.valence(e->c) <= 3) return false;
     if (mesh_.common_neighbours(a, b) != std::vector<std::uint32_t>{e->c}) return false;
     const Vec3& p = mesh_.positions[b];
     for (std::uint32_t x : mesh_.neighbours(a))
@@ -344,7 +350,14 @@ class Remesher {
   /// rather than angles: this is the inner loop of the flips).
   template <class Accept>
   bool try_flip(const EditableMesh::Edge& e, Accept accept) {
-    if (mesh_.valence(e.a) <= 3 || mesh_.valence(e.b) <= 3) return false;
+    // A flip takes one neighbour from e.a and e.b: a vertex keeps at least 3, but a corner of the cut
+    // (on two box faces or planes, never moved) at least 2: one triangle, where the wedge between the
+    // two cut curves is too narrow for two good ones. A sliding cut vertex keeps two triangles: with one,
+    // all three corners would lie on one nearly straight cut curve.
+    const auto fewest = [this](std::uint32_t v) {
+      return mesh_.locked[v] && slide_axis(v) < 0 && slide_plane(v) < 0 ? 2u : 3u;
+    };
+    if (mesh_.valence(e.a) <= fewest(e.a) || mesh_.valence(e.b) <= fewest(e.b)) return false;
     if (mesh_.adjacent(e.c, e.d)) return false;
     const Triangle t1{e.a, e.d, e.c}, t2{e.b, e.c, e.d};
     if (!triangle_ok(t1) || !triangle_ok(t2)) return false;
@@ -513,26 +526,6 @@ class Remesher {
     return changes;
   }
 
-  /// |f| / |grad f| at the centroid of triangle t: its first-order distance from f = 0 (what `analyze`
-  /// reports as the centroid distance).
-  double centroid_distance(const Triangle& t) const {
-    const Vec3 c = (mesh_.positions[t[0]] + mesh_.positions[t[1]] + mesh_.positions[t[2]]) / 3.0;
-    const auto vg = f_.value_gradient_unchecked(c);
-    const double g = vg.gradient.norm();
-    return g > 0.0 && std::isfinite(vg.value) ? std::abs(vg.value) / g
-                                              : std::numeric_limits<double>::infinity();
-  }
-
-  /// The longest edge (lower index first) of a triangle.
-  std::pair<std::uint32_t, std::uint32_t> longest_edge(const Triangle& tri) const {
-    std::pair<std::uint32_t, std::uint32_t> longest{tri[0], tri[1]};
-    for (std::size_t i = 1; i < 3; ++i)
-      if (length(tri[i], tri[(i + 1) % 3]) > length(longest.first, longest.second))
-        longest = {tri[i], tri[(i + 1) % 3]};
-    if (longest.first > longest.second) std::swap(longest.first, longest.second);
-    return longest;
-  }
-
   /// The size law takes the curvature of one point and the edges' spread from the grading, so where the
   /// curvature changes within an edge (the rounded edges of x^16 + y^16 + z^16 = 1) a triangle's centroid
   /// can end up beyond the bound. Splits the longest edge of each triangle beyond kBoundMargin * EPS
@@ -550,10 +543,10 @@ class Remesher {
       std::vector<std::pair<double, std::pair<std::uint32_t, std::uint32_t>>> work;
       for (std::uint32_t t = 0; t < mesh_.triangles.size(); ++t) {
         if (!mesh_.triangle_alive[t]) continue;
-        const double distance = centroid_distance(mesh_.triangles[t]);
+        const double distance = centroid_distance(f_, mesh_.positions, mesh_.triangles[t]);
         beyond += distance > eps;
         if (!(distance > kBoundMargin * eps)) continue;
-        const auto edge = longest_edge(mesh_.triangles[t]);
+        const auto edge = longest_edge(mesh_.positions, mesh_.triangles[t]);
         work.push_back({-length(edge.first, edge.second), edge});
       }
       if (work.empty() || round == kBoundRounds) return beyond;

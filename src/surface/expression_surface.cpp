@@ -24,6 +24,9 @@ class ExpressionSurface final : public Surface {
   std::optional<IntervalGradient> gradient_bound(const Box& box) const override {
     return expression_.gradient_bound(box);
   }
+  std::optional<IntervalHessian> hessian_bound(const Box& box) const override {
+    return expression_.hessian_bound(box);
+  }
 
  private:
   Expression expression_;

@@ -23,4 +23,8 @@ std::optional<IntervalGradient> Surface::gradient_bound(const Box&) const {
   return std::nullopt;
 }
 
+std::optional<IntervalHessian> Surface::hessian_bound(const Box&) const {
+  return std::nullopt;
+}
+
 }  // namespace isopatch

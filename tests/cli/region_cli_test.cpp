@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <string>
 
 #include "error_report.hpp"
 #include "run_command.hpp"
@@ -107,6 +108,25 @@ TEST(RegionCli, BadRegionsAndFramesGiveOneLineAndTheirExitCode) {
     EXPECT_EQ(r.err.rfind("isopatch: ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << "\n" << r.err;
   }
+}
+
+// A plane nearly tangent to the sphere cuts a hole of radius 0.014, under half an edge (issue 35): the
+// sizes shrink there and a warning line says where and how many vertices it added (also with -q);
+// --uniform keeps one size and says nothing of it.
+TEST(RegionCli, NarrowCutRefinedWithAWarningUnlessUniform) {
+  const auto dir = test::scratch_dir("cli_cut_features");
+  const auto out = dir / "hole.ply";
+  const std::string mesh =
+      kRegionCli + " mesh sphere --box -1.2,-1.2,-1.2,1.2,1.2,1.2 --region 0,0,1,-0.9999 -q -o ";
+  auto r = test::run_command(mesh + out.string() + " --stats-json " + (dir / "s.json").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: sizes refined around "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("vertices added"), std::string::npos) << r.err;
+  const std::string stats = test::read_text(dir / "s.json");
+  EXPECT_NE(stats.find("\"local_sizes\""), std::string::npos);
+  r = test::run_command(mesh + out.string() + " --uniform", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("features narrower than an edge"), std::string::npos) << r.err;
 }
 
 }  // namespace

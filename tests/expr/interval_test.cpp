@@ -13,24 +13,12 @@
 #include <numbers>
 #include <random>
 
+#include "random_box.hpp"
+
 namespace isopatch {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// A random box around a random centre, sizes from 1e-4 to 4; every third one straddles 0 on each axis.
-Box random_box(const Box& region, std::mt19937_64& rng, int index) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  Box b;
-  for (int k = 0; k < 3; ++k) {
-    const double half = std::pow(10.0, -4.0 + 4.6 * u(rng)) / 2.0;
-    double c = region.lo[k] + u(rng) * (region.hi[k] - region.lo[k]);
-    if (index % 3 == 0) c = (u(rng) - 0.5) * half;  // straddles zero
-    b.lo[k] = c - half;
-    b.hi[k] = c + half;
-  }
-  return b;
-}
 
 /// Corners, face centres and random inner points of a box.
 std::vector<Vec3> sample(const Box& b, std::mt19937_64& rng) {
@@ -55,7 +43,7 @@ void check_containment(const std::string& formula, const Box& region, int boxes,
   const Expression f = parse_expression(formula);
   std::mt19937_64 rng(seed);
   for (int i = 0; i < boxes; ++i) {
-    const Box box = random_box(region, rng, i);
+    const Box box = test::random_box(region, rng, i);
     const Interval bound = f.bound(box);
     const IntervalGradient gb = f.gradient_bound(box);
     for (const Vec3& p : sample(box, rng)) {
