@@ -42,7 +42,8 @@ def _triple(value: Sequence[float], name: str) -> Point:
 
 # The library settings both entry points take (the command line's flags of the same names).
 _SETTINGS = (
-    "method", "edge_length", "max_error", "quality", "threads", "remesh", "refine", "max_vertices", "time_limit")
+    "method", "edge_length", "max_error", "quality", "threads", "remesh", "refine", "max_vertices", "time_limit",
+    "uniform")
 
 
 def _options(arguments: Dict[str, object], names: Sequence[str]) -> Dict[str, object]:
@@ -96,7 +97,7 @@ def mesh(
     Ctrl-C stops it with KeyboardInterrupt. Raises the isopatch exceptions (isopatch.Error and its
     subclasses) with the library's messages; an exception raised by the function propagates unchanged.
     """
-    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations", "uniform"))
+    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations"))
     if isinstance(surface, str):
         if gradient is not None or samples is not None:
             raise InputError("gradient and samples are for Python functions, not formulas", "gradient")
@@ -129,6 +130,7 @@ def mesh_volume(
     refine: int = 0,
     max_vertices: int = 0,
     time_limit: float = 0.0,
+    uniform: bool = False,
 ) -> Mesh:
     """Meshes the level set ``volume == level`` of a 3D array of samples.
 

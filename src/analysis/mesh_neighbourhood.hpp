@@ -6,8 +6,10 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -45,6 +47,14 @@ std::vector<Vec3> area_weighted_normals(const Mesh& mesh);
 /// 0 when either vector is zero.
 inline double angle_between(const Vec3& u, const Vec3& v) {
   return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+/// The smallest angle of triangle p0 p1 p2 in degrees; 0 for a triangle of zero area.
+inline double smallest_angle_degrees(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  if (!((p1 - p0).cross(p2 - p0).norm() > 0.0)) return 0.0;
+  const double smallest = std::min(
+      {angle_between(p1 - p0, p2 - p0), angle_between(p2 - p1, p0 - p1), angle_between(p0 - p2, p1 - p2)});
+  return smallest * 180.0 / std::numbers::pi;
 }
 
 }  // namespace isopatch::analysis

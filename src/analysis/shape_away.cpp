@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <numbers>
 
 #include "core/point_grid.hpp"
 #include "mesh_neighbourhood.hpp"
@@ -32,14 +31,6 @@ class BallSet {
   PointGrid grid_;
 };
 
-double smallest_angle_degrees(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-  if (!((p1 - p0).cross(p2 - p0).norm() > 0.0)) return 0.0;  // zero area: angle 0 (as analyze_shape)
-  const double smallest =
-      std::min({analysis::angle_between(p1 - p0, p2 - p0), analysis::angle_between(p2 - p1, p0 - p1),
-                analysis::angle_between(p0 - p2, p1 - p2)});
-  return smallest * 180.0 / std::numbers::pi;
-}
-
 }  // namespace
 
 ShapeAwayReport analyze_shape_away(const Mesh& mesh, std::span<const Vec3> centres, double radius) {
@@ -62,7 +53,7 @@ ShapeAwayReport analyze_shape_away(const Mesh& mesh, std::span<const Vec3> centr
     }
     ++report.triangles;
     const double angle =
-        smallest_angle_degrees(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+        analysis::smallest_angle_degrees(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
     report.smallest_angle = std::min(report.smallest_angle, angle);
     if (angle < 20.0) ++below_20;
   }

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 
 #include "mesh_neighbourhood.hpp"
 
@@ -25,10 +24,7 @@ TriangleShape triangle_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
   TriangleShape s;
   // A zero-area triangle keeps the limits: angle 0, aspect ratio +inf, quality 0.
   if (!(area > 0.0)) return s;
-  const double smallest =
-      std::min({analysis::angle_between(p1 - p0, p2 - p0), analysis::angle_between(p2 - p1, p0 - p1),
-                analysis::angle_between(p0 - p2, p1 - p2)});
-  s.min_angle = smallest * 180.0 / std::numbers::pi;
+  s.min_angle = analysis::smallest_angle_degrees(p0, p1, p2);
   const double semiperimeter = 0.5 * (a + b + c);
   // R / (2 r) with R = abc / (4 A) and r = A / p.
   s.aspect_ratio = a * b * c * semiperimeter / (8.0 * area * area);
@@ -84,8 +80,8 @@ SmallAngleCount count_small_angles(const Mesh& mesh, double degrees) {
   analysis::check_mesh(mesh, "count_small_angles");
   SmallAngleCount count;
   for (const Triangle& tri : mesh.triangles) {
-    const double angle =
-        triangle_shape(mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]).min_angle;
+    const double angle = analysis::smallest_angle_degrees(mesh.positions[tri[0]], mesh.positions[tri[1]],
+                                                          mesh.positions[tri[2]]);
     if (angle < degrees) ++count.triangles;
     count.smallest = std::min(count.smallest, angle);
   }

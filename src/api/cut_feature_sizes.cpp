@@ -1,16 +1,13 @@
 // Sizes at small features of the cut (see cut_feature_sizes.hpp, docs/algorithms.md 4.11).
 #include "api/cut_feature_sizes.hpp"
 
-#include <isopatch/error.hpp>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
+#include <cstddef>
 #include <limits>
-#include <numeric>
 #include <optional>
-#include <span>
-#include <string>
+
+#include "remesh/box_boundary.hpp"
 
 namespace isopatch {
 
@@ -29,15 +26,13 @@ struct CuttingFace {
 /// Everything a point of a face must satisfy: inside the box and the region's planes.
 struct Domain {
   Box box;
-  std::vector<Vec3> normals;  ///< unit normals of the region's planes
-  std::vector<double> offsets;
+  std::vector<CutPlane> planes;  ///< the region's, with unit normals (box_boundary.hpp)
   double tolerance = 0.0;
 
   bool contains(const Vec3& p, const CuttingFace& face) const {
     if (!box.contains(p, tolerance)) return false;
-    for (std::size_t j = 0; j < normals.size(); ++j)
-      if (static_cast<int>(j) != face.region_plane && normals[j].dot(p) + offsets[j] > tolerance)
-        return false;
+    for (std::size_t j = 0; j < planes.size(); ++j)
+      if (static_cast<int>(j) != face.region_plane && planes[j].distance(p) > tolerance) return false;
     return true;
   }
 
@@ -57,9 +52,9 @@ struct Domain {
       if (box.lo[a] - p[a] > worst) worst = box.lo[a] - p[a], n = -Vec3::Unit(a);
       if (p[a] - box.hi[a] > worst) worst = p[a] - box.hi[a], n = Vec3::Unit(a);
     }
-    for (std::size_t j = 0; j < normals.size(); ++j) {
-      const double d = normals[j].dot(p) + offsets[j];
-      if (static_cast<int>(j) != face.region_plane && d > worst) worst = d, n = normals[j];
+    for (std::size_t j = 0; j < planes.size(); ++j) {
+      const double d = planes[j].distance(p);
+      if (static_cast<int>(j) != face.region_plane && d > worst) worst = d, n = planes[j].normal;
     }
     return n;
   }
@@ -82,11 +77,11 @@ std::vector<CuttingFace> cutting_faces(const Box& box, const Domain& domain) {
       faces.push_back(f);
     }
   const double radius = half.norm();
-  for (std::size_t j = 0; j < domain.normals.size(); ++j) {
+  for (std::size_t j = 0; j < domain.planes.size(); ++j) {
     CuttingFace f;
     f.region_plane = static_cast<int>(j);
-    f.normal = domain.normals[j];
-    f.origin = centre - (f.normal.dot(centre) + domain.offsets[j]) * f.normal;
+    f.normal = domain.planes[j].normal;
+    f.origin = centre - domain.planes[j].distance(centre) * f.normal;
     const Vec3 helper = std::abs(f.normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
     f.u = f.normal.cross(helper).normalized();
     f.v = f.normal.cross(f.u);
@@ -96,7 +91,7 @@ std::vector<CuttingFace> cutting_faces(const Box& box, const Domain& domain) {
   return faces;
 }
 
-/// f at every point, in one batch; NaN where `valid` is 0.
+/// f at every point, in one batch.
 std::vector<double> values_at(const Surface& surface, const std::vector<Vec3>& points) {
   std::vector<double> out(points.size());
   if (!points.empty()) surface.values(points, out);
@@ -110,11 +105,12 @@ struct CurvePoint {
   double curvature = 0.0;
 };
 
-/// The sources of one face.
-void face_sources(const Surface& surface, const CuttingFace& face, const Domain& domain, double edge,
-                  double smallest, const CutFeatureParams& params, std::vector<SizeSource>& sources) {
-  // Blocks of the grid whose interval enclosure of f excludes 0 are not sampled: a closed surface far
-  // from its box costs a few enclosures per face.
+/// The points where f changes sign along the lines of a grid of spacing edge/4 on the face (at most
+/// max_samples per side), by linear interpolation, in the box. Blocks of grid cells whose interval
+/// enclosure of f excludes 0 are not sampled: a closed surface far from its box costs a few enclosures
+/// per face.
+std::vector<CurvePoint> cut_curve_points(const Surface& surface, const CuttingFace& face,
+                                         const Domain& domain, double edge, const CutFeatureParams& params) {
   const double spacing = std::max(edge / 4.0, 2.0 * std::max(face.half_u, face.half_v) / params.max_samples);
   const int nu = std::max(2, static_cast<int>(std::ceil(2.0 * face.half_u / spacing)) + 1);
   const int nv = std::max(2, static_cast<int>(std::ceil(2.0 * face.half_v / spacing)) + 1);
@@ -179,6 +175,36 @@ void face_sources(const Surface& surface, const CuttingFace& face, const Domain&
       if (i + 1 < nu) crossing(k, k + 1);
       if (j + 1 < nv) crossing(k, k + static_cast<std::size_t>(nu));
     }
+  return curve;
+}
+
+/// Whether the cut curve reaches the face's border near `exit`, a point just beyond the border whose
+/// outward normal is `border_normal`: f changes sign (or vanishes, a curve ending in a box corner) along
+/// the border within `reach` of it.
+bool curve_ends_near(const Surface& surface, const CuttingFace& face, const Domain& domain, const Vec3& exit,
+                     const Vec3& border_normal, double reach) {
+  Vec3 w = face.normal.cross(border_normal);
+  if (!(w.norm() > 1e-9)) return true;
+  w.normalize();
+  const Vec3 e = exit.cwiseMax(domain.box.lo).cwiseMin(domain.box.hi);
+  const double f0 = surface.value(e);
+  const int n = 8;
+  for (int s = 1; s <= n; ++s)
+    for (double sign : {1.0, -1.0}) {
+      const Vec3 q = (e + sign * reach * s / n * w).cwiseMax(domain.box.lo).cwiseMin(domain.box.hi);
+      const ValueGradient vg = surface.value_gradient(q);
+      if (std::isfinite(vg.value) &&
+          ((vg.value < 0.0) != (f0 < 0.0) || std::abs(vg.value) <= 1e-6 * reach * vg.gradient.norm()))
+        return true;
+    }
+  return false;
+}
+
+/// The sources of one face: at every point of its cut curves, min(turn / curvature, width), kept when
+/// under `relevant` edges.
+void face_sources(const Surface& surface, const CuttingFace& face, const Domain& domain, double edge,
+                  double smallest, const CutFeatureParams& params, std::vector<SizeSource>& sources) {
+  std::vector<CurvePoint> curve = cut_curve_points(surface, face, domain, edge, params);
   if (curve.empty()) return;
   // Curvature of the curve within the plane and the direction across it, from the exact derivatives.
   std::vector<char> usable(curve.size(), 0);
@@ -218,25 +244,6 @@ void face_sources(const Surface& surface, const CuttingFace& face, const Domain&
   std::vector<double> along(march.size(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t k = 0, m = 0; k < march.size(); ++k)
     if (march_inside[k]) along[k] = march_values[m++];
-  // Whether the curve reaches the border near `exit` (f changes sign along the border within `reach`).
-  auto curve_ends_near = [&](const Vec3& exit, const Vec3& border_normal, double reach) {
-    Vec3 w = face.normal.cross(border_normal);
-    if (!(w.norm() > 1e-9)) return true;
-    w.normalize();
-    const Vec3 e = exit.cwiseMax(domain.box.lo).cwiseMin(domain.box.hi);
-    const double f0 = surface.value(e);
-    const int n = 8;
-    for (int s = 1; s <= n; ++s)
-      for (double sign : {1.0, -1.0}) {
-        const Vec3 q = (e + sign * reach * s / n * w).cwiseMax(domain.box.lo).cwiseMin(domain.box.hi);
-        const ValueGradient vg = surface.value_gradient(q);
-        // A root at q itself (a curve ending in a box corner) counts as well as a change of sign.
-        if (std::isfinite(vg.value) &&
-            ((vg.value < 0.0) != (f0 < 0.0) || std::abs(vg.value) <= 1e-6 * reach * vg.gradient.norm()))
-          return true;
-      }
-    return false;
-  };
   for (std::size_t c = 0; c < curve.size(); ++c) {
     if (!usable[c]) continue;
     double width = std::numeric_limits<double>::infinity();
@@ -248,7 +255,7 @@ void face_sources(const Surface& surface, const CuttingFace& face, const Domain&
         if (!march_inside[k]) {
           // Left the face: a feature only when the curve does not end on that border nearby.
           const auto border = domain.violated(march[k], face);
-          if (border && !curve_ends_near(march[k], *border, 3.0 * distance))
+          if (border && !curve_ends_near(surface, face, domain, march[k], *border, 3.0 * distance))
             width = std::min(width, distance);
           break;
         }
@@ -312,14 +319,7 @@ std::vector<SizeSource> cut_feature_sources(const Surface& surface, const Box& b
   // Without interval enclosures (a C++ callable) every face would cost (side / (edge / 4))^2 values of f
   // even where the surface is far away: such surfaces are not searched.
   if (!surface.bound(box)) return {};
-  Domain domain;
-  domain.box = box;
-  domain.tolerance = 1e-9 * box.diagonal();
-  for (const HalfSpace& h : region) {
-    const Vec3 n(h.a, h.b, h.c);
-    domain.normals.push_back(n / n.norm());
-    domain.offsets.push_back(h.d / n.norm());
-  }
+  const Domain domain{box, cut_planes(region), 1e-9 * box.diagonal()};
   std::vector<SizeSource> sources;
   for (const CuttingFace& face : cutting_faces(box, domain))
     face_sources(surface, face, domain, edge, smallest, params, sources);

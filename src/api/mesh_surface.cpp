@@ -102,7 +102,6 @@ std::optional<LocalRefinement> local_refinement(const Surface& surface, const Se
   auto cut = std::make_shared<const CutFeatureSizes>(std::move(sources), edge, CutFeatureParams{}.grading);
   LocalRefinement r{settings, cut, edge, cut_sources};
   r.settings.edge_length = edge;
-  r.settings.uniform = true;  // the cut's sizes are in size_field now: not searched again
   r.settings.size_field = [cut, user = settings.size_field](const Vec3& p) {
     return user ? std::min(cut->at(p), user(p)) : cut->at(p);
   };
@@ -128,6 +127,9 @@ LocalSizes local_sizes_report(const LocalRefinement& r, const Mesh& mesh) {
 
 /// Meshes with the method of `settings`, then cleans up (remesh.hpp) when asked.
 Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats* stats);
+
+/// The projection mesher and its clean-up, multiresolution by default (multiresolution.hpp), in `box`.
+Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const Box& box, MeshStats* stats);
 
 /// Meshes in the frame of the settings, or in the coordinate axes.
 Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats) {
@@ -166,37 +168,39 @@ Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats
       return mesh;
     }
     case Method::Projection: {
-      if (const std::optional<LocalRefinement> local = local_refinement(surface, settings, box)) {
-        Mesh mesh = dispatch_in_box(surface, local->settings, stats);
-        if (stats) stats->local_sizes = local_sizes_report(*local, mesh);
-        return mesh;
-      }
-      // The automatic level leaves the paper's method alone (remesh_iterations = 0) unrefined.
-      const bool refine =
-          settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0);
-      // The automatic level's first guess, from the coarse grid's curvature.
-      const bool first_guess = refine && level_from_curvature(settings);
-      SizeEstimate estimate;
-      if (settings.max_vertices > 0 || first_guess) {
-        estimate = estimate_size(surface, settings, box, first_guess);
-        check_estimated_size(estimate, settings, box);
-      }
-      const auto one_level = [&surface](const Settings& s, MeshStats* st) {
-        Mesh level = mesh_projection(surface, s, st);
-        clean_up(level, surface, s, st);
-        return level;
-      };
-      Mesh mesh = refine ? mesh_multiresolution(surface, settings, stats, one_level,
-                                                first_guess ? &estimate : nullptr)
-                         : one_level(settings, stats);
-      if (stats) {
-        stats->value_evaluations += estimate.value_evaluations;
-        stats->gradient_evaluations += estimate.gradient_evaluations;
-      }
+      const std::optional<LocalRefinement> local = local_refinement(surface, settings, box);
+      Mesh mesh = mesh_by_projection(surface, local ? local->settings : settings, box, stats);
+      if (stats && local) stats->local_sizes = local_sizes_report(*local, mesh);
       return mesh;
     }
   }
   throw Error(ErrorKind::Internal, "unknown method");
+}
+
+Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const Box& box, MeshStats* stats) {
+  // The automatic level leaves the paper's method alone (remesh_iterations = 0) unrefined.
+  const bool refine =
+      settings.refine > 1 || (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0);
+  // The automatic level's first guess, from the coarse grid's curvature.
+  const bool first_guess = refine && level_from_curvature(settings);
+  SizeEstimate estimate;
+  if (settings.max_vertices > 0 || first_guess) {
+    estimate = estimate_size(surface, settings, box, first_guess);
+    check_estimated_size(estimate, settings, box);
+  }
+  const auto one_level = [&surface](const Settings& s, MeshStats* st) {
+    Mesh level = mesh_projection(surface, s, st);
+    clean_up(level, surface, s, st);
+    return level;
+  };
+  Mesh mesh =
+      refine ? mesh_multiresolution(surface, settings, stats, one_level, first_guess ? &estimate : nullptr)
+             : one_level(settings, stats);
+  if (stats) {
+    stats->value_evaluations += estimate.value_evaluations;
+    stats->gradient_evaluations += estimate.gradient_evaluations;
+  }
+  return mesh;
 }
 
 }  // namespace

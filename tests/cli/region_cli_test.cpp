@@ -5,6 +5,7 @@
 #include <isopatch/topology.hpp>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -122,8 +123,16 @@ TEST(RegionCli, NarrowCutRefinedWithAWarningUnlessUniform) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("warning: sizes refined around "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("vertices added"), std::string::npos) << r.err;
-  const std::string stats = test::read_text(dir / "s.json");
-  EXPECT_NE(stats.find("\"local_sizes\""), std::string::npos);
+  const auto stats = nlohmann::json::parse(test::read_text(dir / "s.json"));
+  ASSERT_TRUE(stats.contains("local_sizes"));
+  const auto& sizes = stats["local_sizes"];
+  EXPECT_GT(sizes["sources"].get<double>(), 0.0);
+  EXPECT_GT(sizes["added_vertices"].get<double>(), 0.0);
+  EXPECT_LT(sizes["smallest_size"].get<double>(), 0.5 * 2.4 / 64);  // under half the default edge
+  for (const char* z : {"extent_lo_z", "extent_hi_z"})
+    EXPECT_NEAR(sizes[z].get<double>(), 0.9999, 1e-9);  // on the cutting plane
+  EXPECT_LE(sizes["extent_hi_x"].get<double>(),
+            std::sqrt(1.0 - 0.9999 * 0.9999) + 1e-9);  // the hole's circle
   r = test::run_command(mesh + out.string() + " --uniform", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.find("features narrower than an edge"), std::string::npos) << r.err;
