@@ -265,7 +265,8 @@ Runner add_mesh_command(CLI::App& app) {
                   "(edges at most --edge-length)");
   cmd->add_flag("--uniform", o->uniform,
                 "Projection: one edge length everywhere (default: smaller, graded sizes where the box or a "
-                "region plane cuts f = 0 in a feature narrower than an edge, reported in a warning)");
+                "region plane cuts f = 0 in a feature narrower than an edge, or where f = 0 turns within an "
+                "edge, as at a thin rim; reported in a warning)");
   cmd->add_option("--quality", o->quality,
                   "preview (the paper's method with a local repair: fastest, valence 6 >= 90%, angles >= "
                   "20 degrees) | default | fine (lowest curvature error)")

@@ -29,6 +29,9 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
     if (l->sources > 0)
       where = std::to_string(l->sources) +
               " points where the box or region cuts f = 0 in features narrower than an edge";
+    if (l->curvature_sources > 0)
+      where += (where.empty() ? "" : " and ") + std::to_string(l->curvature_sources) +
+               " points where f = 0 turns within an edge";
     if (l->around > 0)
       where += (where.empty() ? "" : " and ") + std::to_string(l->around) + " singular points";
     std::fprintf(

@@ -156,14 +156,15 @@ struct RefineStats {
   std::uint64_t gradient_evaluations = 0;  ///< of the refinement alone
 };
 
-/// Sizes refined locally where the box or a region plane cuts f = 0 in features smaller than an edge
-/// (SizeSettings::uniform, docs/algorithms.md 4.11).
+/// Sizes refined locally where the box or a region plane cuts f = 0 in features smaller than an edge, or
+/// where f = 0 turns within an edge (SizeSettings::uniform, docs/algorithms.md 4.11 and 4.12).
 struct LocalSizes {
-  std::size_t sources = 0;         ///< points of the cut curves that asked for a smaller size
-  std::size_t around = 0;          ///< points of SizeSettings::refine_around in the box
-  double smallest_size = 0.0;      ///< the smallest size they asked for
-  Box extent;                      ///< the bounding box of those points
-  std::size_t added_vertices = 0;  ///< about how many vertices the smaller sizes added to the output
+  std::size_t sources = 0;            ///< points of the cut curves that asked for a smaller size
+  std::size_t curvature_sources = 0;  ///< points where f = 0 turns within an edge (a thin rim, a tube)
+  std::size_t around = 0;             ///< points of SizeSettings::refine_around in the box
+  double smallest_size = 0.0;         ///< the smallest size they asked for
+  Box extent;                         ///< the bounding box of those points
+  std::size_t added_vertices = 0;     ///< about how many vertices the smaller sizes added to the output
 };
 
 struct MeshStats {
@@ -178,7 +179,7 @@ struct MeshStats {
   std::optional<FairingSummary> fairing;
   std::optional<RemeshStats> cleanup;
   std::optional<RefineStats> refine;      ///< multiresolution meshing, when it ran
-  std::optional<LocalSizes> local_sizes;  ///< when sizes were refined at small features of the cut
+  std::optional<LocalSizes> local_sizes;  ///< when sizes were refined at small features (cut, rims)
   MeshWarnings warnings;
   StageTimes times;  ///< wall time per stage
 };

@@ -32,12 +32,19 @@ struct SizeSettings {
   /// it, and 1/2048 of the longest side is the floor); the projection octree refines where it asks for
   /// smaller cells, and the clean-up grades and follows it. Combined with max_error, the smaller wins.
   std::function<double(const Vec3&)> size_field;
+  /// With size_field: the smallest size it asks for. The floor of the target sizes becomes the smaller
+  /// of it and 1/2048 of the longest box side, and the projection octree's refinement limit deepens
+  /// until its cells are at most two such sizes (depth 15 at most: 1/32768 of the box). Set by the
+  /// automatic local sizes (cut features, rims thinner than an edge); > 0 when given.
+  std::optional<double> smallest_size;
   /// Projection: one size everywhere. By default (false) sizes shrink, graded, where the box or a
   /// region plane cuts f = 0 in a feature smaller than an edge (a cut curve turning within an edge, a
-  /// strip or slit narrower than one), so that no triangle must span it (MeshStats::local_sizes).
+  /// strip or slit narrower than one), and where f = 0 itself turns by more than 0.4 radians within a
+  /// quarter edge (a rim or tube thinner than an edge: docs/algorithms.md 4.12), so that no triangle
+  /// must span it (MeshStats::local_sizes).
   bool uniform = false;
   /// Projection: points around which sizes shrink to the edge length / 2^refine_around_depth, graded
-  /// as the clean-up grades (0.3 per unit distance); ignored with `uniform`. The command line passes the
+  /// at 0.2 per unit distance; ignored with `uniform`. The command line passes the
   /// singular points of f = 0 it found (singular_points.hpp), so the mesh around a cusp or a crossing
   /// of sheets is finer. In the user's coordinates (a frame rotates them with the surface).
   std::vector<Vec3> refine_around;

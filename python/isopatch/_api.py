@@ -86,7 +86,8 @@ def mesh(
     edge_length, max_error, quality ('preview' | 'default' | 'fine'), threads (0: every core), method
         ('projection' | 'mc'), remesh, refine (0: automatic multiresolution level, 1: off, 2..16: that
         level), resolution, grid, max_vertices, max_evaluations, time_limit, uniform (one edge length
-        even where the box cuts the surface in features narrower than an edge): the library's
+        even where the box cuts the surface in features narrower than an edge, or where the surface
+        turns within an edge, as at a thin rim): the library's
         settings, as the command line's flags of the same names.
     samples, batch: Python functions only. The function is called in batches of at most ``batch``
         points: first on a grid of ``samples`` cells along the box's longest side (default: two per

@@ -100,3 +100,21 @@ def test_sizes_refined_at_a_narrow_cut_unless_uniform():
     uniform = isopatch.mesh("cos(x)+cos(y)+cos(z)", box=box, uniform=True)
     assert "local_sizes" not in uniform.stats
     assert uniform.analyze()["shape"]["min_angle_degrees"]["min"] < 10.0
+
+
+def test_sizes_follow_a_rim_thinner_than_an_edge_unless_uniform():
+    # An ellipsoid with semi-axes 4, 1, 0.2: its rim turns with radius 0.01, a thirteenth of the default
+    # edge. By default sizes shrink along the rim (the statistics count those points and where they are)
+    # and the mean curvature there is resolved; with uniform=True one row of triangles spans the rim.
+    f = "x^2/16+y^2+z^2/0.04-1"
+    box = ((-4.2, -4.2, -4.2), (4.2, 4.2, 4.2))
+    local = isopatch.mesh(f, box=box)
+    sizes = local.stats["local_sizes"]
+    assert sizes["curvature_sources"] > 0 and sizes["sources"] == 0
+    assert sizes["extent_hi_z"] < 0.2 and sizes["extent_hi_x"] <= 4.0 + 1e-9
+    report = local.analyze()
+    assert report["shape"]["min_angle_degrees"]["min"] >= 20.0
+    assert report["accuracy"]["mean_curvature"]["nrms"] <= 0.1
+    uniform = isopatch.mesh(f, box=box, uniform=True)
+    assert "local_sizes" not in uniform.stats
+    assert uniform.analyze()["accuracy"]["mean_curvature"]["nrms"] > 3 * report["accuracy"]["mean_curvature"]["nrms"]

@@ -275,42 +275,9 @@ void face_sources(const Surface& surface, const CuttingFace& face, const Domain&
 
 }  // namespace
 
-CutFeatureSizes::CutFeatureSizes(std::vector<SizeSource> sources, double largest, double grading)
-    : grid_(largest / grading), largest_(largest), grading_(grading) {
-  std::erase_if(sources, [&](const SizeSource& s) { return !(s.size < largest); });
-  sources_ = std::move(sources);
-  for (std::size_t i = 0; i < sources_.size(); ++i) grid_.insert(sources_[i].point, i);
-}
-
-double CutFeatureSizes::at(const Vec3& p) const {
-  // The smallest over the sources near p: the same value in any visiting order.
-  double size = largest_;
-  grid_.near(p, [&](std::size_t i) {
-    size = std::min(size, sources_[i].size + grading_ * (p - sources_[i].point).norm());
-  });
-  return size;
-}
-
-double CutFeatureSizes::smallest() const {
-  double s = largest_;
-  for (const SizeSource& source : sources_) s = std::min(s, source.size);
-  return s;
-}
-
-Box CutFeatureSizes::extent() const {
-  Box b{Vec3::Constant(std::numeric_limits<double>::infinity()),
-        Vec3::Constant(-std::numeric_limits<double>::infinity())};
-  for (const SizeSource& s : sources_) {
-    b.lo = b.lo.cwiseMin(s.point);
-    b.hi = b.hi.cwiseMax(s.point);
-  }
-  return b;
-}
-
-CutFeatureSizes cut_feature_sizes(const Surface& surface, const Box& box, const ConvexRegion& region,
-                                  double edge, double smallest, const CutFeatureParams& params) {
-  return CutFeatureSizes(cut_feature_sources(surface, box, region, edge, smallest, params), edge,
-                         params.grading);
+GradedSizes cut_feature_sizes(const Surface& surface, const Box& box, const ConvexRegion& region, double edge,
+                              double smallest, const CutFeatureParams& params) {
+  return GradedSizes(cut_feature_sources(surface, box, region, edge, smallest, params), edge, params.grading);
 }
 
 std::vector<SizeSource> cut_feature_sources(const Surface& surface, const Box& box,

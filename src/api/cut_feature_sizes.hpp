@@ -14,45 +14,15 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/point_grid.hpp"
+#include "api/graded_sizes.hpp"
 
 namespace isopatch {
-
-/// One point of a cut curve that asks for a size below the edge length.
-struct SizeSource {
-  Vec3 point = Vec3::Zero();
-  double size = 0.0;
-};
-
-/// A graded size field made of sources: at p, min(largest, min_i size_i + grading * |p - point_i|).
-class CutFeatureSizes {
- public:
-  CutFeatureSizes() = default;
-  /// \pre largest > 0, 0 < grading; sources with size >= largest are dropped.
-  CutFeatureSizes(std::vector<SizeSource> sources, double largest, double grading);
-
-  /// The size at p (largest when no source reaches p). Thread-safe (const, no caching).
-  double at(const Vec3& p) const;
-  bool empty() const { return sources_.empty(); }
-  std::size_t source_count() const { return sources_.size(); }
-  /// The smallest size asked for (largest when empty).
-  double smallest() const;
-  /// The bounding box of the sources (invalid when empty).
-  Box extent() const;
-
- private:
-  std::vector<SizeSource> sources_;
-  PointGrid grid_{
-      1.0};  ///< cubes as wide as a source's reach, (largest - size) / grading < largest / grading
-  double largest_ = 0.0;
-  double grading_ = 0.3;
-};
 
 /// Tuning of the search (the defaults are what docs/algorithms.md 4.11 measured).
 struct CutFeatureParams {
   double turn = 0.6;       ///< a cut curve turns at most this many radians per edge
   double width = 1.0;      ///< edges at most this many times the local width of a strip or slit
-  double grading = 0.3;    ///< sizes grow by at most this much per unit distance (as the clean-up's)
+  double grading = 0.2;    ///< sizes grow by at most this much per unit distance (the clean-up: 0.3)
   double relevant = 0.5;   ///< sources only where the size is below this share of the edge length
   int max_samples = 1024;  ///< grid points per side of a face at most
 };
@@ -70,8 +40,8 @@ struct CutFeatureParams {
 /// paper: it is the 2D analogue, on each cutting plane, of sizing by local feature size (Ruppert 1995). \pre
 /// box.valid(), edge > 0, 0 < smallest <= edge; every plane of region has a normal. \throw what the surface
 /// throws (a budget's LimitError); nothing else.
-CutFeatureSizes cut_feature_sizes(const Surface& surface, const Box& box, const ConvexRegion& region,
-                                  double edge, double smallest, const CutFeatureParams& params = {});
+GradedSizes cut_feature_sizes(const Surface& surface, const Box& box, const ConvexRegion& region, double edge,
+                              double smallest, const CutFeatureParams& params = {});
 
 /// The sources of cut_feature_sizes alone (to add others before making the field).
 std::vector<SizeSource> cut_feature_sources(const Surface& surface, const Box& box,

@@ -16,10 +16,12 @@
 #include <vector>
 
 #include "api/budgeted_surface.hpp"
+#include "api/curvature_feature_sizes.hpp"
 #include "api/cut_feature_sizes.hpp"
 #include "api/frame_meshing.hpp"
 #include "api/multiresolution.hpp"
 #include "api/size_estimate.hpp"
+#include "core/point_grid.hpp"
 #include "project/convex_meshing.hpp"
 #include "remesh/remesh_presets.hpp"
 #include "surface/singular_level_set.hpp"
@@ -77,14 +79,17 @@ void clean_up(Mesh& mesh, const Surface& surface, const Settings& settings, Mesh
 }
 
 /// Sizes that shrink where the box or a region plane cuts f = 0 in features smaller than an edge
-/// (cut_feature_sizes.hpp) and around SizeSettings::refine_around: the settings with that size field (and the
-/// edge length made explicit, so the rest of the mesh keeps it), or nullopt when there are no such features,
-/// or when one size was asked for (uniform, a fixed resolution, the paper's method alone, marching cubes).
+/// (cut_feature_sizes.hpp), where f = 0 turns within an edge (curvature_feature_sizes.hpp) and around
+/// SizeSettings::refine_around: the settings with that size field (the edge length made explicit, so the
+/// rest of the mesh keeps it, and its smallest size, so the octree can deepen), or nullopt when there are
+/// no such features or when one size was asked for (uniform, a fixed resolution, the paper's method alone,
+/// marching cubes).
 struct LocalRefinement {
   Settings settings;
-  std::shared_ptr<const CutFeatureSizes> sizes;
+  std::shared_ptr<const GradedSizes> sizes;
   double edge = 0.0;
-  std::size_t cut_sources = 0;  ///< of the sizes' sources, those from the cut (the rest: refine_around)
+  std::size_t cut_sources = 0;        ///< of the sizes' sources, those from the cut
+  std::size_t curvature_sources = 0;  ///< those where f = 0 turns within an edge (the rest: refine_around)
 };
 std::optional<LocalRefinement> local_refinement(const Surface& surface, const Settings& settings,
                                                 const Box& box) {
@@ -95,13 +100,33 @@ std::optional<LocalRefinement> local_refinement(const Surface& surface, const Se
   const double smallest = std::min(target_sizes(settings, box).smallest, edge);
   std::vector<SizeSource> sources = cut_feature_sources(surface, box, settings.region, edge, smallest);
   const std::size_t cut_sources = sources.size();
+  // Rims and tubes thinner than an edge may ask for sizes below the usual floor (1/2048 of the box),
+  // down to a share of the edge length: the octree then deepens to follow them.
+  const double rim_floor = std::min(smallest, edge * CurvatureFeatureParams{}.finest_share);
+  std::vector<SizeSource> rims = curvature_feature_sources(surface, box, edge, rim_floor).sources;
+  // Near a given singular point the curvature grows without bound: there the stated depth of
+  // refine_around decides, not the curvature (within two edge lengths of it).
+  if (!settings.refine_around.empty()) {
+    PointGrid near(2.0 * edge);
+    for (std::size_t i = 0; i < settings.refine_around.size(); ++i) near.insert(settings.refine_around[i], i);
+    std::erase_if(rims, [&](const SizeSource& s) {
+      bool close = false;
+      near.near(s.point, [&](std::size_t i) {
+        close = close || (s.point - settings.refine_around[i]).norm() < 2.0 * edge;
+      });
+      return close;
+    });
+  }
+  const std::size_t curvature_sources = rims.size();
+  sources.insert(sources.end(), rims.begin(), rims.end());
   const double around = std::max(smallest, std::ldexp(edge, -settings.refine_around_depth));
   for (const Vec3& p : settings.refine_around)
     if (box.contains(p, 1e-9 * box.diagonal()) && around < edge) sources.push_back({p, around});
   if (sources.empty()) return std::nullopt;
-  auto cut = std::make_shared<const CutFeatureSizes>(std::move(sources), edge, CutFeatureParams{}.grading);
-  LocalRefinement r{settings, cut, edge, cut_sources};
+  auto cut = std::make_shared<const GradedSizes>(std::move(sources), edge, CutFeatureParams{}.grading);
+  LocalRefinement r{settings, cut, edge, cut_sources, curvature_sources};
   r.settings.edge_length = edge;
+  r.settings.smallest_size = cut->smallest();
   r.settings.size_field = [cut, user = settings.size_field](const Vec3& p) {
     return user ? std::min(cut->at(p), user(p)) : cut->at(p);
   };
@@ -113,7 +138,8 @@ std::optional<LocalRefinement> local_refinement(const Surface& surface, const Se
 LocalSizes local_sizes_report(const LocalRefinement& r, const Mesh& mesh) {
   LocalSizes l;
   l.sources = r.cut_sources;
-  l.around = r.sizes->source_count() - r.cut_sources;
+  l.curvature_sources = r.curvature_sources;
+  l.around = r.sizes->source_count() - r.cut_sources - r.curvature_sources;
   l.smallest_size = r.sizes->smallest();
   l.extent = r.sizes->extent();
   double added = 0.0;

@@ -119,7 +119,7 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
   int level = !automatic ? settings.refine : graded ? kGradedLevel : preset.max_level;
   RefineStats info;
   info.target_edge = edge;
-  if (from_curvature && estimate) {
+  if (from_curvature && estimate && estimate->found) {
     info.estimated_curvature = estimate->largest_curvature;
     level = automatic_level(preset, estimate->largest_curvature, edge, estimate->vertices, level);
   }

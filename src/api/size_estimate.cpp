@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -28,8 +29,20 @@ SizeEstimate estimate_size(const Surface& surface, const Settings& settings, con
   grid.edge_root = EdgeRoot::Linear;
   grid.cancel = settings.cancel;
   MeshStats stats;
-  const Mesh mesh = marching_cubes(surface, grid, &stats);
   SizeEstimate estimate;
+  Mesh mesh;
+  try {
+    mesh = marching_cubes(surface, grid, &stats);
+  } catch (const NoSurfaceError&) {
+    // A surface thinner than the grid's cells (a flat ellipsoid in a flat box) crosses no grid edge
+    // with a sign change; the mesher decides whether there is a surface. Nothing is estimated.
+    estimate.found = false;
+    const McGrid lattice = marching_cubes_grid(box, grid);
+    estimate.value_evaluations = static_cast<std::uint64_t>(lattice.cells[0] + 1) *
+                                 static_cast<std::uint64_t>(lattice.cells[1] + 1) *
+                                 static_cast<std::uint64_t>(lattice.cells[2] + 1);
+    return estimate;
+  }
   estimate.value_evaluations = stats.value_evaluations;
   double area = 0.0;
   for (const Triangle& t : mesh.triangles)

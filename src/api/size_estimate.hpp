@@ -33,6 +33,9 @@ struct SizeEstimate {
   double largest_curvature = 0.0;
   std::uint64_t value_evaluations = 0;
   std::uint64_t gradient_evaluations = 0;  // the projections' and the curvature samples' (second order)
+  /// False when f changes sign at no grid edge (a surface thinner than a cell, or none): then nothing is
+  /// estimated (vertices and curvature 0) and the mesher, which looks deeper, decides.
+  bool found = true;
 };
 
 /// Estimates the mesh of `surface` in `box` with `settings`' target edge length, from a Marching Cubes

@@ -110,6 +110,7 @@ void visit_stats(
   if (const auto& l = stats.local_sizes) {
     const auto v = [&](std::string_view name, double value) { visit("local_sizes", name, value); };
     v("sources", count(l->sources));
+    v("curvature_sources", count(l->curvature_sources));
     v("around", count(l->around));
     v("smallest_size", l->smallest_size);
     v("added_vertices", count(l->added_vertices));

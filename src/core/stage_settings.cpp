@@ -29,6 +29,8 @@ bool open_angle(double degrees) {
 void SizeSettings::validate() const {
   if (!positive(edge_length)) throw SettingError("edge_length", "the edge length must be a positive number");
   if (!positive(max_error)) throw SettingError("max_error", "the maximum error must be a positive number");
+  if (!positive(smallest_size))
+    throw SettingError("smallest_size", "the smallest size must be a positive number");
   if (refine_around_depth < 0 || refine_around_depth > 6)
     throw SettingError("refine_around_depth", "the depth of refinement around points must be 0..6");
   for (const Vec3& p : refine_around)
@@ -44,6 +46,7 @@ TargetSizes target_sizes(const SizeSettings& s, const Box& box) {
   TargetSizes sizes;
   sizes.largest = default_edge_length(s, box);
   sizes.smallest = std::min(sizes.largest, box.size().maxCoeff() / 2048.0);
+  if (s.smallest_size) sizes.smallest = std::min(sizes.smallest, *s.smallest_size);
   sizes.max_error = s.max_error;
   sizes.user = s.size_field;
   return sizes;

@@ -1,5 +1,5 @@
-// Adaptive octree bookkeeping: the tree is a hash map of cells; locating a cell walks from the root
-// depth down, which is at most 21 lookups.
+// Adaptive octree bookkeeping: the tree is a hash map of cells; locating a cell looks up its ancestors
+// from its own depth upwards, at most 21 lookups.
 #include "partition/leaf_tree.hpp"
 
 #include "partition/cube.hpp"
@@ -45,17 +45,23 @@ const std::array<std::array<int, 3>, 18>& face_edge_offsets() {
 bool LeafTree::add_root(const LatticePoint& coords) {
   if (!in_root(min_depth_, coords) || locate(min_depth_, coords).where != Where::Outside) return false;
   nodes_.emplace(CellKey{min_depth_, coords}, true);
+  rooted_ = true;
   return true;
 }
 
 LeafTree::Found LeafTree::locate(int depth, const LatticePoint& coords) const {
   if (depth < min_depth_ || !in_root(depth, coords)) return {};
-  for (int d = min_depth_; d <= depth; ++d) {
+  // A node exists exactly when its parent is split, so the deepest node on the path from the root
+  // decides: a leaf covers the cell, a split node at the cell's own depth has finer leaves, and no node
+  // at all means outside. Searched from the cell's depth upwards: neighbours are mostly of about its
+  // size, so this is one or two lookups where the walk from the root took one per level.
+  for (int d = depth; d >= min_depth_; --d) {
     const auto it = nodes_.find(CellKey{d, ancestor(coords, depth - d)});
-    if (it == nodes_.end()) return {};
+    if (it == nodes_.end()) continue;
     if (it->second) return {Where::Leaf, d};
+    return d == depth ? Found{Where::Split, -1} : Found{};
   }
-  return {Where::Split, -1};
+  return {};
 }
 
 bool LeafTree::neighbour_split(const CellKey& cell, const std::array<int, 3>& offset) const {
@@ -68,17 +74,28 @@ void LeafTree::split(const CellKey& leaf) {
   const auto it = nodes_.find(leaf);
   if (it == nodes_.end() || !it->second || leaf.depth >= max_depth_) return;  // precondition violated
   nodes_[leaf] = false;
-  for (const auto& o : cube::kCorner)
-    nodes_.emplace(CellKey{leaf.depth + 1,
-                           {2 * leaf.coords[0] + static_cast<std::uint32_t>(o[0]),
-                            2 * leaf.coords[1] + static_cast<std::uint32_t>(o[1]),
-                            2 * leaf.coords[2] + static_cast<std::uint32_t>(o[2])}},
-                   true);
+  for (const auto& o : cube::kCorner) {
+    const CellKey child{leaf.depth + 1,
+                        {2 * leaf.coords[0] + static_cast<std::uint32_t>(o[0]),
+                         2 * leaf.coords[1] + static_cast<std::uint32_t>(o[1]),
+                         2 * leaf.coords[2] + static_cast<std::uint32_t>(o[2])}};
+    nodes_.emplace(child, true);
+    fresh_.push_back(child);
+  }
 }
 
 std::vector<CellKey> LeafTree::balance() {
   std::deque<CellKey> queue;
-  for (const CellKey& key : leaves())
+  std::vector<CellKey> candidates;
+  if (rooted_) {
+    candidates = leaves();
+  } else {
+    std::sort(fresh_.begin(), fresh_.end());
+    fresh_.erase(std::unique(fresh_.begin(), fresh_.end()), fresh_.end());
+    for (const CellKey& key : fresh_)
+      if (const auto it = nodes_.find(key); it != nodes_.end() && it->second) candidates.push_back(key);
+  }
+  for (const CellKey& key : candidates)
     if (key.depth >= min_depth_ + 2) queue.push_back(key);
   std::vector<CellKey> splits;
   while (!queue.empty()) {
@@ -102,6 +119,9 @@ std::vector<CellKey> LeafTree::balance() {
       }
     }
   }
+  // The children of the splits above were checked in the loop.
+  fresh_.clear();
+  rooted_ = false;
   return splits;
 }
 

@@ -42,7 +42,10 @@ class LeafTree {
 
   /// Splits leaves until every leaf's face and edge neighbours (same-size cells sharing a face or an
   /// edge, when covered) are covered by leaves at most one level coarser. Returns the cells split, in
-  /// the order they were split.
+  /// the order they were split. Splits only make cells finer, so after a balance only leaves made since
+  /// (children of splits) can break the rule; those alone are checked, unless a root was added (a new
+  /// coarse neighbour of old leaves), when every leaf is. The tree is the same either way: the coarsest
+  /// balanced refinement of what it was.
   std::vector<CellKey> balance();
 
   /// All leaves, sorted by (depth, coords).
@@ -55,6 +58,8 @@ class LeafTree {
   int min_depth_;
   int max_depth_;
   std::unordered_map<CellKey, bool, CellKeyHash> nodes_;  // true: leaf, false: split
+  std::vector<CellKey> fresh_;                            // leaves made by split() since the last balance()
+  bool rooted_ = true;                                    // a root was added since the last balance()
 };
 
 /// The 18 offsets of the face (6) and edge (12) neighbours of a cell.

@@ -41,6 +41,10 @@ OctreeDepths plan_octree_depths(const Box& box, const OctreeDepthRequest& r) {
   // in a box of side 2 at depth 8) no room to refine, and the fans that close rejected patches fold.
   if (r.raise_limit_by >= 0 && wanted >= r.max_depth)
     depths.limit = static_cast<int>(std::min<double>(kOctreeDepthLimit, wanted + r.raise_limit_by));
+  if (r.finest_cell > 0.0)
+    depths.limit =
+        std::max(depths.limit, static_cast<int>(std::min<double>(
+                                   kSizeFieldDepthLimit, std::ceil(std::log2(root.size / r.finest_cell)))));
   depths.start = static_cast<int>(
       std::clamp(wanted, static_cast<double>(r.min_depth), static_cast<double>(depths.limit)));
   return depths;

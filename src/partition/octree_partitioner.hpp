@@ -29,7 +29,15 @@ struct OctreeDepthRequest {
   /// raise_limit_by (at most kOctreeDepthLimit), so small features can still be refined. -1: keep
   /// max_depth.
   int raise_limit_by = -1;
+  /// When > 0: the limit is also at least the coarsest depth whose cells are at most this long (at most
+  /// kSizeFieldDepthLimit), for a size field that asks for small sizes somewhere (a thin rim).
+  double finest_cell = 0.0;
 };
+
+/// How deep a size field's smallest size may take the octree: cells of 1/32768 of the box, below the
+/// settings' limit (12), so that a rim 1/10000 of the box thin still gets cells smaller than its radius.
+/// Only the few cells the field asks for go there.
+inline constexpr int kSizeFieldDepthLimit = 15;
 
 struct OctreeDepths {
   int start = 0;  ///< the starting depth, within [min_depth, limit]

@@ -18,10 +18,14 @@
 namespace isopatch {
 namespace {
 
+/// The finest cells a size field may need, in its smallest sizes: two, so that where it asks for its
+/// smallest size (around a rim of radius about twice that) a cell can hold the rim's turn alone.
+constexpr double kFinestCellSizes = 2.0;
+
 /// With a fixed resolution r: the depth whose cells are closest (in log scale) to r edge lengths, and
 /// max_depth as the limit. With automatic resolution: the coarsest depth whose cells are at most
 /// kAutoSegments edges long; when that is max_depth or deeper, the limit is raised by
-/// refinement_levels.
+/// refinement_levels. A size field's smallest_size deepens the limit to cells of kFinestCellSizes of it.
 OctreeDepths octree_depths(const SizeSettings& sizes, const PatchSettings& patch, const OctreeSettings& s,
                            const Box& box) {
   const double edge = default_edge_length(sizes, box);
@@ -31,6 +35,7 @@ OctreeDepths octree_depths(const SizeSettings& sizes, const PatchSettings& patch
   request.min_depth = s.min_depth;
   request.max_depth = s.max_depth;
   request.raise_limit_by = patch.resolution != 0 ? -1 : s.refinement_levels;
+  if (sizes.size_field && sizes.smallest_size) request.finest_cell = kFinestCellSizes * *sizes.smallest_size;
   return plan_octree_depths(box, request);
 }
 

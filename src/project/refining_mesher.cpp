@@ -72,7 +72,11 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Octre
   const int max_level = partitioner.max_level();
   const std::function<double(const Vec3&)> size_at = size_function(surface, sizes);
   StageTimes* times = stats ? &stats->times : nullptr;
-  // Restarts at a finer level do not count as rounds: only refinements do.
+  // Restarts at a finer level do not count as rounds: only refinements do. Splits for a size field are
+  // counted apart (size_rounds): each deepens the finest cells that are too large by one level, so there
+  // are at most max_level of them, and a field that asks for cells many levels down (a thin rim) leaves
+  // the rounds for rejected patches untouched.
+  int size_rounds = 0;
   for (int round = 0;;) {
     budget.check_cancel();
     const CellPartition partition = [&] {
@@ -108,12 +112,12 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Octre
     // patches are refined at most refinement_levels below the start (a size field: to the finest level).
     const int patch_level =
         std::max(start, sizes.varies() ? max_level : std::min(max_level, start + octree.refinement_levels));
-    if (sizes.varies() && round < kMaxRounds) {
+    if (sizes.varies() && size_rounds <= max_level) {
       // The size field asks for cells of at most kAutoSegments local edge lengths.
       if (const std::vector<std::size_t> split = cells_too_large_for(partition, size_at, patch_level);
           !split.empty()) {
         partitioner.split(split);
-        ++round;
+        ++size_rounds;
         continue;
       }
     }
@@ -138,7 +142,7 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Octre
       stats->vertices = mesh.vertex_count();
       stats->triangles = mesh.triangle_count();
       stats->projection = projection_stats(partition, mesher, counters, settings.patch, max_level,
-                                           static_cast<std::size_t>(round), curvature_steps);
+                                           static_cast<std::size_t>(round + size_rounds), curvature_steps);
       record_doubts(doubtful, max_level, stats->warnings);
       const StageTimer timer(times, "defects");
       stats->projection->defects = raw_defects(mesh, mesher.roles(), sizes.largest);

@@ -68,17 +68,15 @@ class Remesher {
       timed("cleanup_flip", [&] { flip_valences(); });  // the repairs' collapses leave irregular vertices
       timed("cleanup_relax", [&] { relax(); });
     }
-    // One sweep of chains that may pass through one flip that costs energy: pulls apart the 5-7 pairs
-    // that neutral chains leave side by side (docs/whole-surface-quality.md).
+    // Chains that may pass one flip costing energy pull apart the 5-7 pairs neutral chains leave.
     if (settings_.valence_search > 0)
       timed("cleanup_valence_search",
             [&] { flip_valences(GlideLimits{.budget = settings_.valence_search, .max_debt = 2}); });
     // Connectivity is final: relaxation alone evens out the vertex spacing around the irregular vertices
     // (each flip, split or collapse of a round undoes part of what the relaxation of the round did).
     timed("cleanup_relax", [&] { relax(settings_.final_relaxation_rounds); });
-    // The rounds of splits and collapses left dead slots behind: the sweeps cache data per slot. The
-    // connectivity is final, so the vertices are renumbered along a space-filling curve: each sweep
-    // then reads the mesh mostly in memory order (on a 1M-vertex sphere the sweeps took half the time).
+    // Splits and collapses left dead slots; the connectivity is final, so the vertices are renumbered along
+    // a space-filling curve: each sweep reads the mesh in memory order (half the time on a 1M sphere).
     compact(true);
     report(steps - 2, steps);
     if (settings_.curvature_sweeps > 0) {
@@ -275,8 +273,9 @@ class Remesher {
 
   /// Collapses a into b (or b into a when a is locked); `max_length` bounds the new edges (callers count
   /// the collapses: this writes only the rings of a and b, so far-apart calls may run at once). Two locked
-  /// vertices: along their boundary edge (try_collapse_boundary).
-  bool try_collapse(std::uint32_t a, std::uint32_t b, double max_length) {
+  /// vertices: along their boundary edge (try_collapse_boundary). A `repair` may leave a corner of the cut
+  /// one triangle (fewest), a routine collapse never.
+  bool try_collapse(std::uint32_t a, std::uint32_t b, double max_length, bool repair = false) {
     if (mesh_.locked[a] && mesh_.locked[b]) return try_collapse_boundary(a, b, max_length);
     if (mesh_.locked[a]) std::swap(a, b);
     const auto e = mesh_.interior_edge(a, b);
@@ -284,7 +283,8 @@ class Remesher {
     // Link condition: a and b share exactly the neighbours c and d.
     const std::vector<std::uint32_t> na = mesh_.neighbours(a), nb = mesh_.neighbours(b);
     if (sorted_intersection(na, nb).size() != 2) return false;
-    if (mesh_.valence(e->c) <= 3 || mesh_.valence(e->d) <= 3) return false;
+    const auto least = [&](std::uint32_t v) { return repair ? fewest(v) : 3u; };
+    if (mesh_.valence(e->c) <= least(e->c) || mesh_.valence(e->d) <= least(e->d)) return false;
     if (na.size() + nb.size() - 4 > 9) return false;
     Vec3 p = mesh_.positions[b], n = mesh_.normals[b];
     if (!mesh_.locked[b]) {
@@ -303,16 +303,25 @@ class Remesher {
     return true;
   }
 
-  /// Merges a boundary vertex that may slide (a, else b) into its neighbour along their boundary edge,
-  /// on the same box face; the neighbour keeps its position, so the cut stays on the box.
+  /// The fewest neighbours v may keep after a flip or collapse takes one: 3, but 2 (one triangle) at a
+  /// corner of the cut (on two faces or planes, never moved), whose wedge may be too narrow for two good
+  /// triangles. A sliding cut vertex keeps two: with one, its corners would lie on one nearly straight cut.
+  unsigned fewest(std::uint32_t v) const {
+    return mesh_.locked[v] && slide_axis(v) < 0 && slide_plane(v) < 0 ? 2u : 3u;
+  }
+
+  /// Merges a boundary vertex that may slide (a, else b) into its neighbour along their boundary edge, on
+  /// the same box face; the neighbour keeps its position, so the cut stays on the box.
   bool try_collapse_boundary(std::uint32_t a, std::uint32_t b, double max_length) {
+    // Vertices within rounding of each other (crossings of segments at one lattice point) merge: none moves.
+    const bool same = length(a, b) <= 1e-9 * max_length;
     if (slide_axis(a) < 0 && slide_plane(a) < 0) std::swap(a, b);
     const int axis = slide_axis(a), plane = slide_plane(a);
     const auto on_same_cut = [&](std::uint32_t v) {
       return axis >= 0 ? mesh_.positions[v][axis] == mesh_.positions[a][axis]
                        : on_cut_plane(planes_, plane, mesh_.positions[v], plane_margin());
     };
-    if (!on_same_cut(b)) return false;
+    if (!same && !on_same_cut(b)) return false;
     const auto e = mesh_.boundary_edge(a, b);
     // An ear (a in one triangle) goes with its triangle when all three corners lie on the same cut: the
     // boundary then runs b - c, still along it (the raw mesh leaves such ears where several crossings
@@ -321,9 +330,9 @@ class Remesher {
     if (mesh_.common_neighbours(a, b) != std::vector<std::uint32_t>{e->c}) return false;
     const Vec3& p = mesh_.positions[b];
     for (std::uint32_t x : mesh_.neighbours(a))
-      if (x != b && (mesh_.positions[x] - p).norm() > max_length) return false;
+      if (!same && x != b && (mesh_.positions[x] - p).norm() > max_length) return false;
     for (std::uint32_t t : mesh_.incident[a])
-      if (t != e->t && !triangle_ok_with(t, a, p, mesh_.normals[b])) return false;
+      if (!same && t != e->t && !triangle_ok_with(t, a, p, mesh_.normals[b])) return false;
     mesh_.collapse_boundary(*e);
     return true;
   }
@@ -350,13 +359,6 @@ class Remesher {
   /// rather than angles: this is the inner loop of the flips).
   template <class Accept>
   bool try_flip(const EditableMesh::Edge& e, Accept accept) {
-    // A flip takes one neighbour from e.a and e.b: a vertex keeps at least 3, but a corner of the cut
-    // (on two box faces or planes, never moved) at least 2: one triangle, where the wedge between the
-    // two cut curves is too narrow for two good ones. A sliding cut vertex keeps two triangles: with one,
-    // all three corners would lie on one nearly straight cut curve.
-    const auto fewest = [this](std::uint32_t v) {
-      return mesh_.locked[v] && slide_axis(v) < 0 && slide_plane(v) < 0 ? 2u : 3u;
-    };
     if (mesh_.valence(e.a) <= fewest(e.a) || mesh_.valence(e.b) <= fewest(e.b)) return false;
     if (mesh_.adjacent(e.c, e.d)) return false;
     const Triangle t1{e.a, e.d, e.c}, t2{e.b, e.c, e.d};
@@ -509,13 +511,12 @@ class Remesher {
         ++changes;
         continue;
       }
-      // Else collapse an edge, the shortest first; the next one when the link condition, a fold or a
-      // fixed cut vertex refuses it.
+      // Else collapse the shortest edge, or the next when the link, a fold or a fixed vertex refuses it.
       const int middle = 3 - longest - shortest;
       for (int i : {shortest, middle}) {
         const std::uint32_t c = tri[static_cast<std::size_t>(i)];
         const std::uint32_t d = tri[static_cast<std::size_t>((i + 1) % 3)];
-        if (try_collapse(c, d, 2.0 * sizes_.edge(c, d))) {
+        if (try_collapse(c, d, 2.0 * sizes_.edge(c, d), true)) {
           ++changes;
           ++stats_.collapses;
           break;

@@ -50,6 +50,10 @@ TEST(Frame, ClosedCatalogueSurfacesInARotatedFrame) {
     const SurfacePtr f = resolve_surface(std::string(e.name), std::nullopt, {});
     Settings s;
     s.edge_length = e.box.size().maxCoeff() / 48.0;
+    // One size: the search for rims thinner than an edge runs on interval enclosures, which are looser
+    // over the rotated cubes of a frame, so the thin surfaces (genus2, double_torus) are refined in one
+    // frame and not in the other at this edge (docs/algorithms.md 4.12). The frame itself is tested here.
+    s.uniform = true;
     const Measured plain = check(*f, e, s);
     s.frame = Frame{30.0, 20.0, 10.0};
     const Measured rotated = check(*f, e, s);

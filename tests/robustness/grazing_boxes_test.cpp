@@ -124,7 +124,7 @@ TEST(CutFeatureSizes, NoneWhereTheCutIsWide) {
 TEST(CutFeatureSizes, SmallHoleOfANearlyTangentPlane) {
   // z <= 0.9999 cuts a hole of radius 0.014 into the unit sphere, under half the edge of 0.0375.
   const Box box{Vec3::Constant(-1.2), Vec3::Constant(1.2)};
-  const CutFeatureSizes sizes =
+  const GradedSizes sizes =
       cut_feature_sizes(*resolve_surface("x^2+y^2+z^2-1", box), box, below(0.9999), 0.0375, 0.001);
   ASSERT_FALSE(sizes.empty());
   const double r = std::sqrt(1.0 - 0.9999 * 0.9999);
