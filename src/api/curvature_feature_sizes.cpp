@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -45,7 +44,6 @@ std::optional<double> cone_opening(const std::array<Interval, 3>& g) {
 
 /// What one cube asks for: to be split, a source, or nothing.
 struct CubeOutcome {
-  bool crosses = false;
   bool split = false;
   std::optional<SizeSource> source;
 };
@@ -72,11 +70,11 @@ class Search {
   Search(const Surface& surface, double edge, double smallest, const CurvatureFeatureParams& p)
       : surface_(surface), f_(surface), edge_(edge), smallest_(smallest), p_(p) {}
 
-  CubeOutcome examine(const Box& cube) const {
+  /// What `cube` asks for; past the search's budget (may_split false) it is measured where it is.
+  CubeOutcome examine(const Box& cube, bool may_split = true) const {
     CubeOutcome out;
     const std::optional<IntervalGradient> g = surface_.gradient_bound(cube);
     if (!g || !g->value.contains_zero()) return out;
-    out.crosses = true;
     const double side = cube.size().maxCoeff();
     const std::optional<double> opening = cone_opening(g->gradient);
     if (!opening) return out;  // grad f may vanish: the singular-point search's business
@@ -85,7 +83,8 @@ class Search {
     const double allowed = p_.turn * std::clamp(side / (p_.relevant * edge_), 1.0, p_.coarse_turn);
     // The enclosure of grad f may be far wider than its range (high degrees, repeated variables): a
     // cube is split only when the gradients sampled at its corners and centre spread as widely too.
-    if (*opening > allowed && side > p_.finest_share * edge_ && sampled_opening(cube) > allowed) {
+    if (may_split && *opening > allowed && side > p_.finest_share * edge_ &&
+        sampled_opening(cube) > allowed) {
       out.split = true;
       return out;
     }
@@ -159,9 +158,6 @@ CurvatureFeatureSearch curvature_feature_sources(const Surface& surface, const B
   if (!surface.gradient_bound(box)) return result;
   result.searched = true;
   const Search search(surface, edge, smallest, params);
-  CurvatureFeatureParams unsplit = params;  // past the budget: cubes measured where they are
-  unsplit.finest_share = std::numeric_limits<double>::infinity();
-  const Search last_search(surface, edge, smallest, unsplit);
   // The starting cubes are at most max_cells, so a tiny edge in a large box stays bounded.
   const double side = std::max(params.start_edges * edge,
                                std::cbrt(box.size().prod() / static_cast<double>(params.max_cells)));
@@ -176,7 +172,6 @@ CurvatureFeatureSearch curvature_feature_sources(const Surface& surface, const B
     std::vector<Box> next;
     for (std::size_t i = 0; i < level.size(); ++i) {
       const CubeOutcome& o = outcomes[i];
-      if (o.crosses) ++result.cubes;
       if (o.source) result.sources.push_back(*o.source);
       if (o.split)
         for (const Box& c : octants(level[i])) next.push_back(c);
@@ -185,7 +180,7 @@ CurvatureFeatureSearch curvature_feature_sources(const Surface& surface, const B
     if (next.size() > params.max_cells) {
       for (std::size_t i = 0; i < level.size(); ++i) {
         if (!outcomes[i].split) continue;
-        if (const CubeOutcome o = last_search.examine(level[i]); o.source)
+        if (const CubeOutcome o = search.examine(level[i], false); o.source)
           result.sources.push_back(*o.source);
       }
       break;

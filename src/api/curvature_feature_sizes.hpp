@@ -32,7 +32,6 @@ struct CurvatureFeatureParams {
 /// What the search found and spent.
 struct CurvatureFeatureSearch {
   std::vector<SizeSource> sources;  ///< in a fixed order (octree level, then cube order)
-  std::size_t cubes = 0;            ///< cubes whose enclosure of f holds 0
   bool searched = false;            ///< false when the surface has no interval enclosures
 };
 
