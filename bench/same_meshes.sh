@@ -1,24 +1,30 @@
 #!/usr/bin/env bash
 # Whether two builds of isopatch make the same meshes: meshes every catalogue surface with both tools in
 # five configurations (default, --remesh 0, --base coons --remesh 0, --max-error 1e-3, --method mc) and
-# compares the files byte for byte; then prints vertices, valence-6 share and H nRMS of the default
+# every composite of examples/*.ipatch in three (default, --remesh 0, --method mc), and compares the
+# files byte for byte; then prints vertices, valence-6 share and H nRMS of the catalogue's default
 # meshes side by side. For refactors that must not change output.
 #   bench/same_meshes.sh OLD_ISOPATCH NEW_ISOPATCH [OUTDIR]
 set -euo pipefail
 old=$1 new=$2 out=${3:-$(mktemp -d)}
 surfaces=$("$new" surfaces | awk '/^[a-z_0-9]+ +(genus|open)/ {print $1}')
+composites=$(ls "$(dirname "$0")"/../examples/*.ipatch)
 configs=("default:" "raw:--remesh 0" "coons:--remesh 0 --base coons" "maxerr:--max-error 1e-3" "mc:--method mc")
+composite_configs=("default:" "raw:--remesh 0" "mc:--method mc")
 differ=0
-for s in $surfaces; do
-  for c in "${configs[@]}"; do
+compared=0
+for s in $surfaces $composites; do
+  if [[ $s == *.ipatch ]]; then set_configs=("${composite_configs[@]}"); else set_configs=("${configs[@]}"); fi
+  for c in "${set_configs[@]}"; do
+    compared=$((compared + 1))
     name=${c%%:*} args=${c#*:}
     for side in old new; do
       mkdir -p "$out/$side"
       tool=$old; [ "$side" = new ] && tool=$new
       # shellcheck disable=SC2086
-      "$tool" mesh "$s" -o "$out/$side/$s.$name.ply" --quiet $args || echo "exit $? for $side $s $name"
+      "$tool" mesh "$s" -o "$out/$side/$(basename "$s").$name.ply" --quiet $args || echo "exit $? for $side $s $name"
     done
-    if ! cmp -s "$out/old/$s.$name.ply" "$out/new/$s.$name.ply"; then
+    if ! cmp -s "$out/old/$(basename "$s").$name.ply" "$out/new/$(basename "$s").$name.ply"; then
       echo "DIFFERENT: $s $name"
       differ=$((differ + 1))
     fi
@@ -42,5 +48,5 @@ print({'vertices': j['mesh']['vertices'], 'share_6': round(100 * j['valence']['s
   done
   echo "$row |"
 done
-echo "$differ of $(( $(echo "$surfaces" | wc -w) * ${#configs[@]} )) meshes differ (files in $out)"
+echo "$differ of $compared meshes differ (files in $out)"
 [ "$differ" -eq 0 ]

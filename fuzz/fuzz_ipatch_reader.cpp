@@ -5,8 +5,8 @@
 // boundary curves.
 #include <isopatch/error.hpp>
 
-#include "ipatch/composite_checks.hpp"
-#include "ipatch/ipatch_file.hpp"
+#include "composite_model/composite_checks.hpp"
+#include "composite_model/ipatch_file.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -58,7 +58,7 @@ struct MeshOptions {
   int refinement_levels = defaults.refinement_levels;
   double max_cell_curvature = defaults.max_cell_curvature;
   std::string coordinates = "wachspress";
-  std::string base = "barycentric";
+  std::string base = "auto";
   double max_ray_angle = defaults.max_ray_angle;
   std::optional<int> remesh;
   int refine = defaults.refine;
@@ -128,12 +128,14 @@ int run_mesh(const MeshOptions& o) {
     settings.coordinates = Settings::Coordinates::MeanValue;
   else
     throw InputError("unknown --coordinates '" + o.coordinates + "' (want wachspress or mean-value)");
-  if (o.base == "barycentric")
+  if (o.base == "auto")
+    settings.base = Settings::Base::Automatic;
+  else if (o.base == "barycentric")
     settings.base = Settings::Base::Barycentric;
   else if (o.base == "coons")
     settings.base = Settings::Base::Coons;
   else
-    throw InputError("unknown --base '" + o.base + "' (want barycentric or coons)");
+    throw InputError("unknown --base '" + o.base + "' (want auto, barycentric or coons)");
 
   check_output_path(o.output);
   check_colour_field(o.colour);
@@ -228,7 +230,10 @@ Runner add_mesh_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--coordinates", o->coordinates, "Projection: wachspress | mean-value")
       ->capture_default_str();
-  cmd->add_option("--base", o->base, "Projection: barycentric | coons (exact face curves, C0 Coons base)")
+  cmd->add_option(
+         "--base", o->base,
+         "Projection: auto | barycentric | coons (exact face curves, C0 Coons base); auto: barycentric in "
+         "cells, coons on a composite's patches")
       ->capture_default_str();
   cmd->add_option("--max-ray-angle", o->max_ray_angle,
                   "Projection: acceptance angle between ray and gradient")

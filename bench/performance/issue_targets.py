@@ -79,7 +79,7 @@ EVERY_SIZE_CONDITIONS = [
      lambda v: v, lambda v: "differ" if v is False else "not measured"),
     (None, "evaluations of f and grad f per output vertex in the statistics (default)", (D,), _reported,
      lambda v: v, lambda v: "missing"),
-    (None, f"default: evaluations of grad f per output vertex <= {fig.TARGET_GRADIENTS:g} (the issue's aim) on "
+    (None, f"default: evaluations of grad f per output vertex <= {fig.TARGET_GRADIENTS:g} (the aim) on "
      "every surface", (D,), _per_vertex(D, "gradient_evaluations"), lambda v: v <= fig.TARGET_GRADIENTS,
      lambda v: _fmt(v, ".3g")),
 ]
@@ -174,7 +174,7 @@ def _large_rows(results, large, labels) -> list[list[str]]:
     missing = "not run (--large 0)" if large is None else ("" if ok else f"failed: {large.error}")
     reference = f"the {f['label']} case's" + (
         "" if f["label"] == fig.TARGET_SIZE else f" (no {fig.TARGET_SIZE} size in this run)" if fig.TARGET_SIZE
-        not in labels else f" (this run's reference; issue 34 compares with the {fig.TARGET_SIZE} case)")
+        not in labels else f" (this run's reference; the target compares with the {fig.TARGET_SIZE} case)")
     figures = [
         (f"{what}: as fast as VTK Flying Edges at the same vertex count (vertices/s ratio >= "
          f"{fig.TARGET_LARGE_FE:g})", f["fe"], lambda v: v >= fig.TARGET_LARGE_FE,

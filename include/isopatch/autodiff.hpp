@@ -5,7 +5,7 @@
 /// elementary functions propagate them exactly by the chain rule (no finite differences).
 ///
 /// Call math functions unqualified (`sin(x)`, not `std::sin(x)`) in code that must accept Jets;
-/// argument-dependent lookup then finds the overloads below, and <cmath> serves plain doubles.
+/// argument-dependent lookup then finds the overloads below, and `<cmath>` serves plain doubles.
 
 #include <algorithm>
 #include <array>

@@ -53,13 +53,22 @@ CompositeModel parse_composite(std::string_view text, std::string_view source_na
 /// Whether `path` names a composite file (it ends in ".ipatch").
 bool is_composite_path(std::string_view path);
 
+/// Whether mesh_composite() meshes with these settings through the partition (mesh_surface() on the
+/// piecewise function) instead of the construction's curves: when a region, a frame or given cells are
+/// set (they describe a partition, which the construction's curves do not have).
+bool meshed_through_partition(const Settings& settings);
+
 /// Meshes the composite with settings.method:
 ///   Projection: every curve sampled once (its length over the target edge length, 1..64 segments, or
-///     settings.resolution), a Coons patch per patch projected onto its function inside its region,
-///     rejected patches' curves refined (at most refinement_levels rounds; then a fan, counted in
-///     stats.projection.fallback_cells), then each patch cleaned up on its own function with its
-///     boundary fixed (remesh_iterations, quality; 0 iterations: the paper's method alone). Every
-///     vertex lies on the function of each patch it belongs to.
+///     settings.resolution), a base patch per patch (settings.base: Automatic and Coons, the Coons patch
+///     over its curves; Barycentric, the combination of its corners) projected onto its function
+///     inside its region, rejected patches' curves refined (at most refinement_levels rounds; then a
+///     fan, counted in stats.projection.fallback_cells), then each patch cleaned up on its own function
+///     with its boundary fixed (remesh_iterations, quality; 0 iterations: the paper's method alone).
+///     Every vertex lies on the function of each patch it belongs to. With a region, a frame or given
+///     cells (meshed_through_partition()): mesh_surface() on model.surface(), the piecewise function
+///     meshed through the octree or the convex cells, clipped by the region; every vertex then lies on
+///     the function of the patch whose region holds it most deeply, and seams are not held as curves.
 ///   MarchingCubes: mesh_surface() on model.surface() (grid, fairing and clean-up as for formulas).
 /// Budgets (max_evaluations, time_limit, max_vertices, cancel) and threads as in mesh_surface(); the
 /// same mesh for any thread count. Fills `stats` when given.

@@ -28,6 +28,8 @@ enum class ErrorKind {
 /// Base of all isopatch errors.
 class Error : public std::runtime_error {
  public:
+  /// \param kind     what kind of failure it is (the tool maps each kind to an exit code)
+  /// \param message  one line, returned by what()
   /// \param setting  the Settings field (or argument) the error is about, empty when none is
   Error(ErrorKind kind, const std::string& message, std::string setting = {})
       : std::runtime_error(message), kind_(kind), setting_(std::move(setting)) {}

@@ -41,7 +41,9 @@ struct Tape;
 /// excerpt() renders the offending line with a caret under the column, for a terminal.
 class ParseError : public Error {
  public:
-  /// \param line, column  1-based; `source_line` is the text of that line (without newline)
+  /// \param reason       what is wrong, without the place
+  /// \param source_line  the text of that line (without newline)
+  /// \param line,column  1-based
   ParseError(const std::string& reason, std::string source_line, int line, int column);
   int line() const noexcept { return line_; }
   int column() const noexcept { return column_; }

@@ -54,12 +54,12 @@ struct RemeshSettings {
   /// Flips tried per chain in the final sweep whose chains may borrow energy to pull apart the 5-7
   /// pairs left side by side (docs/whole-surface-quality.md), 0..10000; 0 skips that sweep (about
   /// half the clean-up time at 10-20k vertices, 1-3 points less valence 6).
-  int valence_search = 30;
+  int valence_search = kDefaultValenceSearch;
   /// Gauss-Seidel sweeps of tangential moves that make the cotangent Laplacian exact for quadratics
   /// at every vertex (laplacian_exactness.hpp; lower discrete-curvature error), 0..1000; 0 skips them.
-  int curvature_sweeps = 8;
+  int curvature_sweeps = kDefaultCurvatureSweeps;
   /// Rounds of split / collapse / flip / relax, 0..100; 0 leaves the mesh unchanged.
-  int iterations = 4;
+  int iterations = kDefaultRemeshIterations;
   /// The preview's local repair instead of the rounds (iterations > 0 still required): short edges
   /// collapsed, small angles repaired, valences flipped, and only the vertices within two rings of a
   /// defect relaxed, one sweep of borrowing chains with valence_search flips each; no

@@ -15,6 +15,7 @@ namespace isopatch {
 
 /// The surface f = 0 of a formula, with every Surface service: batch values, exact gradients and
 /// Hessians (forward mode), sound interval bounds of f and of its gradient.
+/// \param formula the formula text (definitions, `;` or new lines, `#` comments; README.md)
 /// \param box     its default box (must be valid())
 /// \param name    shown in summaries; when empty, the formula on one line (shortened to 60 characters)
 /// \param params  values overriding the formula's definitions (`--param r=0.3`)

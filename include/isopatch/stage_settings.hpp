@@ -119,12 +119,15 @@ struct PatchSettings {
   /// Generalized barycentric coordinates for the base patch and the projection directions.
   enum class Coordinates { Wachspress, MeanValue } coordinates = Coordinates::Wachspress;
   /// The base surface of each patch, from which interior vertices are projected (docs/algorithms.md 3.5).
-  ///   Barycentric (default): the paper's eq. (1), sum_k lambda_k Q_k; boundary vertices are chord
-  ///     points projected in the face plane; directions blend the cell-edge directions at the corners.
-  ///   Coons: the multi-sided C0 Coons patch (Salvi 2020, arXiv:2002.11347) over the face curves, traced
-  ///     as dense polylines; boundary vertices sit at equal arc length on them; directions blend the
-  ///     unit gradients at the corners.
-  enum class Base { Barycentric, Coons } base = Base::Barycentric;
+  ///   Automatic (default): Barycentric for a partition's cells, Coons for a composite's patches (whose
+  ///     curves are known from the construction).
+  ///   Barycentric: the paper's eq. (1), sum_k lambda_k Q_k; in a cell, boundary vertices are chord
+  ///     points projected in the face plane and directions blend the cell-edge directions at the
+  ///     corners; on a composite patch, the corners' combination under the curves' shared samples.
+  ///   Coons: the multi-sided C0 Coons patch (Salvi 2020, arXiv:2002.11347) over the face curves (in a
+  ///     cell traced as dense polylines, boundary vertices at equal arc length on them, directions
+  ///     blending the unit gradients at the corners) or over a composite patch's curves.
+  enum class Base { Automatic, Barycentric, Coons } base = Base::Automatic;
 
   /// \throw SettingError for a resolution out of range.
   void validate() const;
@@ -167,8 +170,13 @@ struct MarchingCubesSettings {
   void validate() const;
 };
 
-/// Rounds of remeshing applied to projection meshes when CleanupSettings::remesh_iterations is empty.
+/// Rounds of remeshing applied to projection meshes when CleanupSettings::remesh_iterations is empty
+/// (and RemeshSettings::iterations' default): the valence-6 share stops growing after about 6 rounds.
 inline constexpr int kDefaultRemeshIterations = 6;
+/// The clean-up's default flips per borrowing chain (CleanupSettings and RemeshSettings::valence_search).
+inline constexpr int kDefaultValenceSearch = 30;
+/// The clean-up's default exactness sweeps (CleanupSettings and RemeshSettings::curvature_sweeps).
+inline constexpr int kDefaultCurvatureSweeps = 8;
 /// Largest accepted valence_search and curvature_sweeps: bounds on the work a request may ask for.
 inline constexpr int kMaxValenceSearch = 10000;
 inline constexpr int kMaxCurvatureSweeps = 1000;
@@ -195,11 +203,11 @@ struct CleanupSettings {
   std::optional<int> remesh_iterations;
   /// Flips tried per chain in the final sweep that pulls apart stuck 5-7 vertex pairs, 0..10000; 0
   /// skips it: faster, 1-3 points less valence 6.
-  int valence_search = 30;
+  int valence_search = kDefaultValenceSearch;
   /// Sweeps of tangential vertex moves that make the cotangent Laplacian exact for quadratic functions
   /// at every vertex, 0..1000: discrete mean-curvature error 2-3 times lower on 10k-vertex meshes; 0
   /// skips them (faster).
-  int curvature_sweeps = 8;
+  int curvature_sweeps = kDefaultCurvatureSweeps;
 
   /// \throw SettingError for a count out of range.
   void validate() const;

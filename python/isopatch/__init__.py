@@ -19,6 +19,7 @@ from ._errors import (
     SingularSurfaceError,
     UnknownSurfaceError,
 )
+from ._isopatch import __version__  # the library's version: project(isopatch VERSION ...) in CMake
 from ._mesh import Mesh
 
 __all__ = [

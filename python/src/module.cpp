@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/resolve_surface.hpp>
+#include <isopatch/version.hpp>
 #include <isopatch/volume_io.hpp>
 #include <isopatch/volume_surface.hpp>
 
@@ -215,6 +216,8 @@ py::tuple read_volume_file(const std::string& path) {
 PYBIND11_MODULE(_isopatch, m) {
   using namespace isopatch::python;
   m.doc() = "The compiled part of isopatch; use the functions of the isopatch package instead.";
+  // The library's version (project() in the top CMakeLists.txt); the package re-exports it.
+  m.attr("__version__") = std::string(isopatch::kVersion);
   register_error_translator();
   bind_result(m);
   m.def("mesh_spec", &mesh_spec, py::arg("spec"), py::arg("box"), py::arg("params"), py::arg("options"));

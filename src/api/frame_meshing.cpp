@@ -3,7 +3,7 @@
 
 #include <isopatch/error.hpp>
 
-#include "api/rotated_surface.hpp"
+#include "surface/rotated_surface.hpp"
 
 namespace isopatch {
 namespace {

@@ -4,21 +4,19 @@
 #include <isopatch/error.hpp>
 #include <isopatch/isopatch.hpp>
 
-#include <tbb/info.h>
-#include <tbb/task_arena.h>
-
 #include <algorithm>
 #include <optional>
 #include <utility>
 #include <vector>
 
-#include "api/budgeted_composite.hpp"
 #include "api/multiresolution.hpp"
-#include "composite/composite_mesher.hpp"
-#include "composite/composite_refinement.hpp"
-#include "ipatch/composite_surface.hpp"
-#include "ipatch/ipatch_file.hpp"
-#include "ipatch/patch_validity.hpp"
+#include "api/task_arena_run.hpp"
+#include "composite_mesher/composite_mesher.hpp"
+#include "composite_mesher/composite_refinement.hpp"
+#include "composite_model/budgeted_composite.hpp"
+#include "composite_model/composite_surface.hpp"
+#include "composite_model/ipatch_file.hpp"
+#include "composite_model/patch_validity.hpp"
 #include "refine/refinement_level.hpp"
 
 namespace isopatch {
@@ -39,6 +37,10 @@ double patch_curvature(const Composite& c, const CompositeMesh& patches, const M
 }
 
 }  // namespace
+
+bool meshed_through_partition(const Settings& settings) {
+  return !settings.region.empty() || settings.frame.has_value() || !settings.cells.empty();
+}
 
 CompositeModel::CompositeModel(std::shared_ptr<const Composite> composite)
     : composite_(composite), surface_(std::make_shared<CompositeSurface>(std::move(composite))) {}
@@ -68,11 +70,12 @@ bool is_composite_path(std::string_view path) {
 
 Mesh mesh_composite(const CompositeModel& model, const Settings& settings, MeshStats* stats) {
   settings.validate();
-  if (settings.method == Method::MarchingCubes) return mesh_surface(*model.surface(), settings, stats);
-  const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
-  if (stats) stats->threads = threads;
-  tbb::task_arena arena(threads);
-  return arena.execute([&] {
+  // The construction's curves are not cut by region planes, nor is there a partition to rotate or
+  // replace: with a region, a frame or given cells the composite is meshed as its piecewise function
+  // through the partition, as a formula is (its seams then are not held as curves).
+  if (settings.method == Method::MarchingCubes || meshed_through_partition(settings))
+    return mesh_surface(*model.surface(), settings, stats);
+  return run_in_task_arena(settings, stats, [&] {
     std::optional<BudgetedComposite> budgeted;
     if (settings.max_evaluations > 0 || settings.time_limit > 0.0)
       budgeted.emplace(model.composite(), settings.max_evaluations, settings.time_limit);

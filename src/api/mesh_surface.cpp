@@ -4,8 +4,6 @@
 #include <isopatch/isopatch.hpp>
 #include <isopatch/remesh.hpp>
 
-#include <tbb/info.h>
-#include <tbb/task_arena.h>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,15 +13,16 @@
 #include <string>
 #include <vector>
 
-#include "api/budgeted_surface.hpp"
 #include "api/curvature_feature_sizes.hpp"
 #include "api/cut_feature_sizes.hpp"
 #include "api/frame_meshing.hpp"
 #include "api/multiresolution.hpp"
 #include "api/size_estimate.hpp"
+#include "api/task_arena_run.hpp"
 #include "core/point_grid.hpp"
-#include "project/convex_meshing.hpp"
+#include "projection/convex_meshing.hpp"
 #include "remesh/remesh_presets.hpp"
+#include "surface/budgeted_surface.hpp"
 #include "surface/singular_level_set.hpp"
 #include "surface/target_size.hpp"
 #include "surface/zero_function.hpp"
@@ -233,11 +232,7 @@ Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const 
 
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
   settings.validate();
-  // Every parallel loop of the pipeline runs in this arena: settings.threads workers, or every core.
-  const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
-  if (stats) stats->threads = threads;
-  tbb::task_arena arena(threads);
-  return arena.execute([&] {
+  return run_in_task_arena(settings, stats, [&] {
     if (settings.max_evaluations == 0 && settings.time_limit == 0.0)
       return dispatch(surface, settings, stats);
     const BudgetedSurface budgeted(surface, settings.max_evaluations, settings.time_limit);

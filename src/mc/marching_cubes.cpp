@@ -5,8 +5,8 @@
 // makes neighbouring cubes agree on every shared face. Vertices of the x- and y-edges of a lattice
 // layer are kept while the two slabs on either side of the layer are processed; z-edges belong to a
 // single slab. Values are compared with the same rule everywhere (f < 0 negative, f >= 0 positive).
-#include "mc/cube.hpp"
 #include "mc/edge_root.hpp"
+#include "mc/marching_cube.hpp"
 
 #include <isopatch/error.hpp>
 #include <isopatch/marching_cubes.hpp>

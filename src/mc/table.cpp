@@ -6,7 +6,7 @@
 // whichever cube looks at them, so two cubes sharing a face produce the same segments, traversed in
 // opposite directions (the outward normals of the face are opposite). Lorensen & Cline 1987 pasted a
 // table of 15 classes, whose ambiguous faces can disagree and leave holes; this rule cannot.
-#include "mc/cube.hpp"
+#include "mc/marching_cube.hpp"
 
 #include <isopatch/marching_cubes.hpp>
 

@@ -3,8 +3,8 @@
 #include <array>
 #include <utility>
 
+#include "partition/cell_cube.hpp"
 #include "partition/cell_tests.hpp"
-#include "partition/cube.hpp"
 #include "surface/bracketed_root.hpp"
 
 namespace isopatch {

@@ -7,8 +7,8 @@
 
 #include "core/cyclic.hpp"
 #include "partition/cell_checks.hpp"
+#include "partition/cell_cube.hpp"
 #include "partition/cell_tests.hpp"
-#include "partition/cube.hpp"
 #include "partition/face_links.hpp"
 #include "partition/octree_descent.hpp"
 #include "surface/sign_rule.hpp"

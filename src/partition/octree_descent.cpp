@@ -7,8 +7,8 @@
 #include <optional>
 #include <unordered_set>
 
+#include "partition/cell_cube.hpp"
 #include "partition/cell_tests.hpp"
-#include "partition/cube.hpp"
 #include "surface/sign_rule.hpp"
 
 namespace isopatch {

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "partition/cube.hpp"
+#include "partition/cell_cube.hpp"
 #include "partition/cube_cycles.hpp"
 
 namespace isopatch {

@@ -94,7 +94,7 @@ struct Leaf {
   Box box;
   LeafKind kind = LeafKind::Complex;
   ComplexReason reason = ComplexReason::None;
-  /// Corner-sign code, bit i set when corner i (cube.hpp) is negative. For a transition leaf
+  /// Corner-sign code, bit i set when corner i (cell_cube.hpp) is negative. For a transition leaf
   /// (adaptive mode) informative only: its loops and verdict come from the boundary graph.
   std::uint8_t config = 0;
   std::vector<Loop> loops;

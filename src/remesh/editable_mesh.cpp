@@ -10,6 +10,7 @@
 #include <span>
 #include <utility>
 
+#include "core/vertex_role.hpp"
 #include "remesh/slot_renumbering.hpp"
 #include "remesh/spatial_order.hpp"
 
@@ -256,7 +257,7 @@ void EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n, std::uint3
   normals[m] = n;
   incident.make_room(m, 8);  // four triangles now, about six once the clean-up is done with it
   for (std::size_t k = 0; k < attributes.size(); ++k)
-    attributes[k][m] = attribute_names[k] == "role" ? 5.0f : attributes[k][e.a];
+    attributes[k][m] = attribute_names[k] == "role" ? role_value(VertexRole::Remeshed) : attributes[k][e.a];
   // (a, b, c) -> (a, m, c) + (m, b, c); (b, a, d) -> (b, m, d) + (m, a, d).
   replace_vertex(e.t_ab, e.b, m);
   detach(e.b, e.t_ab);

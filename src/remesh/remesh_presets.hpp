@@ -2,7 +2,7 @@
 /// \file remesh_presets.hpp
 /// The clean-up's settings that a quality preset (CleanupSettings::quality) chooses, shared by every
 /// caller of the remesher (the whole-surface clean-up of src/api and the per-patch clean-up of
-/// src/composite), so that one preset means the same passes everywhere (docs/algorithms.md 5.3).
+/// src/composite_mesher), so that one preset means the same passes everywhere (docs/algorithms.md 5.3).
 
 #include <isopatch/remesh.hpp>
 #include <isopatch/settings.hpp>

@@ -1,9 +1,9 @@
 # The projection mesher sees partitions only through partition/cell_partition.hpp (and the statistics
-# it carries): no source of src/project/ includes another partition header, except mesh_projection.cpp,
+# it carries): no source of src/projection/ includes another partition header, except mesh_projection.cpp,
 # the one place that chooses the kind of partition (the octree, or convex cells). Run as
 #   cmake -DSOURCE_DIR=<repo> -P check_mesher_includes.cmake
 cmake_minimum_required(VERSION 3.25)
-file(GLOB sources ${SOURCE_DIR}/src/project/*.cpp ${SOURCE_DIR}/src/project/*.hpp)
+file(GLOB sources ${SOURCE_DIR}/src/projection/*.cpp ${SOURCE_DIR}/src/projection/*.hpp)
 set(allowed "partition/cell_partition.hpp" "partition/partition_stats.hpp")
 set(bad "")
 set(seen 0)
@@ -24,10 +24,10 @@ foreach(source IN LISTS sources)
   endforeach()
 endforeach()
 if(seen EQUAL 0)
-  message(FATAL_ERROR "no partition include found in src/project: the check looked in the wrong place")
+  message(FATAL_ERROR "no partition include found in src/projection: the check looked in the wrong place")
 endif()
 if(bad)
   list(JOIN bad "; " text)
   message(FATAL_ERROR "the mesher reaches past the partition interface: ${text}")
 endif()
-message(STATUS "src/project: ${seen} partition includes, all through the interface")
+message(STATUS "src/projection: ${seen} partition includes, all through the interface")

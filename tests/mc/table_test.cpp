@@ -1,6 +1,6 @@
 // The generated marching cubes table, checked case by case against the properties that make the
 // mesher watertight, manifold and outward oriented.
-#include "mc/cube.hpp"
+#include "mc/marching_cube.hpp"
 
 #include <isopatch/marching_cubes.hpp>
 

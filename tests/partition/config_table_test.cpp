@@ -1,6 +1,6 @@
 // The generated configuration table (docs/algorithms.md 2.5) and the face-by-face linking it rests on.
 #include "partition/config_table.hpp"
-#include "partition/cube.hpp"
+#include "partition/cell_cube.hpp"
 #include "partition/cube_cycles.hpp"
 
 #include <isopatch/geometry.hpp>

@@ -6,6 +6,7 @@
 #include "../mesh/mesh_fixtures.hpp"
 
 #include <isopatch/error.hpp>
+#include <isopatch/version.hpp>
 
 #include <gtest/gtest.h>
 #include <httplib.h>
@@ -121,6 +122,7 @@ TEST_F(ViewServerTest, ShowsAMeshFileAndDownloadsIt) {
   ASSERT_TRUE(r);
   const json state = json::parse(r->body);
   EXPECT_EQ(state["id"], 1);
+  EXPECT_EQ(state["version"], std::string(kVersion));
   EXPECT_EQ(state["summary"]["vertices"], 6);
   EXPECT_EQ(state["summary"]["triangles"], 8);
   EXPECT_EQ(state["summary"]["valence_6"], 0.0) << "every octahedron vertex has valence 4";

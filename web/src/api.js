@@ -1,4 +1,4 @@
-// The server's JSON API (apps/isopatch/view/view_server.hpp).
+// The server's JSON API (apps/isopatch/view/view_server.hpp). GET /api/state: {id, summary, version}.
 
 export async function fetchState() {
   const r = await fetch('/api/state', { cache: 'no-store' });

@@ -229,7 +229,9 @@ $('range-auto').addEventListener('click', () => updateLook(true));
 async function start() {
   resize();
   try {
-    const { id, summary } = await fetchState();
+    const { id, summary, version } = await fetchState();
+    // The library's version (project() in the top CMakeLists.txt), as the server was built with it.
+    if (version) $('version').textContent = version;
     if (id > 0) {
       fillForm(summary);
       await loadMesh(id, summary);

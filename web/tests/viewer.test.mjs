@@ -66,6 +66,8 @@ async function waitForMesh(previousId) {
 
 test('the page loads and shows the torus with its mean curvature', async () => {
   assert.equal(await page.locator('#status').getAttribute('data-state'), 'ready');
+  // The library's version, from GET /api/state (one version: project() in the top CMakeLists.txt).
+  assert.match(await page.locator('#version').textContent(), /^\d+\.\d+\.\d+$/);
   assert.equal(await page.inputValue('#mode'), 'mean_curvature');
   const p = await pixels();
   assert.ok(p.foreground > 0.05 * p.total, `only ${p.foreground} of ${p.total} pixels show the mesh`);

@@ -4,6 +4,7 @@
 
 #include <isopatch/error.hpp>
 #include <isopatch/mesh_io.hpp>
+#include <isopatch/version.hpp>
 
 #include <httplib.h>
 
@@ -162,7 +163,11 @@ struct ViewServer::Impl {
     server.set_write_timeout(30, 0);
     server.Get("/api/state", [this](const httplib::Request&, httplib::Response& res) {
       const auto [id, mesh] = current();
-      send_json(res, 200, {{"id", id}, {"summary", mesh ? mesh->summary : json::object()}});
+      // The library's version: the page shows it, one version for the library, the package and the page.
+      send_json(res, 200,
+                {{"id", id},
+                 {"summary", mesh ? mesh->summary : json::object()},
+                 {"version", std::string(kVersion)}});
     });
     server.Post("/api/mesh",
                 [this](const httplib::Request& req, httplib::Response& res) { handle_mesh(req, res); });

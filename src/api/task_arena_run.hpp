@@ -1,0 +1,26 @@
+#pragma once
+/// \file task_arena_run.hpp
+/// The set-up every entry point shares (mesh_surface(), mesh_composite()): the run in a TBB task arena
+/// of Settings::threads workers, so that every parallel loop of the pipeline uses that many.
+
+#include <isopatch/mesh_stats.hpp>
+#include <isopatch/settings.hpp>
+
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <utility>
+
+namespace isopatch {
+
+/// Runs `run()` in an arena of settings.threads workers (every core when 0), recording the count in
+/// stats->threads when stats is given; returns what run() returns. Throws what run() throws.
+template <class Run>
+auto run_in_task_arena(const Settings& settings, MeshStats* stats, Run&& run) {
+  const int threads = settings.threads > 0 ? settings.threads : tbb::info::default_concurrency();
+  if (stats) stats->threads = threads;
+  tbb::task_arena arena(threads);
+  return arena.execute(std::forward<Run>(run));
+}
+
+}  // namespace isopatch
