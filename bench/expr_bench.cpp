@@ -1,6 +1,7 @@
 // Speed of the expression evaluators against the same functions compiled as C++ lambdas, on the
 // torus and the tanglecube: batch values, single-point values, value with gradient (forward mode)
 // and interval bounds. Prints points (or boxes) per second and the ratio tape / lambda at the end.
+#include <isopatch/autodiff.hpp>
 #include <isopatch/catalogue.hpp>
 #include <isopatch/expression.hpp>
 #include <isopatch/interval_math.hpp>
@@ -20,19 +21,9 @@ namespace {
 
 // ---- number types the lambdas are instantiated with ------------------------------------------
 
-struct Dual {  // value and gradient, the compiled counterpart of Expression::value_gradient
-  double v;
-  std::array<double, 3> g;
-};
-inline Dual operator+(const Dual& a, const Dual& b) {
-  return {a.v + b.v, {a.g[0] + b.g[0], a.g[1] + b.g[1], a.g[2] + b.g[2]}};
-}
-inline Dual operator-(const Dual& a, const Dual& b) {
-  return {a.v - b.v, {a.g[0] - b.g[0], a.g[1] - b.g[1], a.g[2] - b.g[2]}};
-}
-inline Dual operator*(const Dual& a, const Dual& b) {
-  return {a.v * b.v, {a.v * b.g[0] + b.v * a.g[0], a.v * b.g[1] + b.v * a.g[1], a.v * b.g[2] + b.v * a.g[2]}};
-}
+// Value and gradient: the library's first-order jet (autodiff.hpp), the compiled counterpart of
+// Expression::value_gradient.
+using Dual = GradientJet;
 
 inline double sq(double a) {
   return a * a;
@@ -52,7 +43,7 @@ double constant<double>(double c) {
 }
 template <>
 Dual constant<Dual>(double c) {
-  return {c, {0.0, 0.0, 0.0}};
+  return Dual(c);
 }
 template <>
 Interval constant<Interval>(double c) {
@@ -148,8 +139,8 @@ void register_pair(const std::string& group, const Workload& w, F lambda_f) {
         double sum = 0.0;
         for (auto _ : s) {
           for (const Vec3& p : wp->points) {
-            const Dual d = lambda_f(Dual{p.x(), {1.0, 0.0, 0.0}}, Dual{p.y(), {0.0, 1.0, 0.0}},
-                                    Dual{p.z(), {0.0, 0.0, 1.0}});
+            const Dual d =
+                lambda_f(Dual::variable(0, p.x()), Dual::variable(1, p.y()), Dual::variable(2, p.z()));
             sum += d.v + d.g[0] + d.g[1] + d.g[2];
           }
           benchmark::DoNotOptimize(sum);

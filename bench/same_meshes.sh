@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
 # Whether two builds of isopatch make the same meshes: meshes every catalogue surface with both tools in
-# five configurations (default, --remesh 0, --base coons --remesh 0, --max-error 1e-3, --method mc) and
-# every composite of examples/*.ipatch in three (default, --remesh 0, --method mc), and compares the
-# files byte for byte; then prints vertices, valence-6 share and H nRMS of the catalogue's default
+# six configurations (default, --remesh 0, --base coons --remesh 0, --max-error 1e-3, --quality preview,
+# --method mc) and every composite of examples/*.ipatch in three (default, --remesh 0, --method mc), and
+# compares the files byte for byte; then prints vertices, valence-6 share and H nRMS of the catalogue's default
 # meshes side by side. For refactors that must not change output.
 #   bench/same_meshes.sh OLD_ISOPATCH NEW_ISOPATCH [OUTDIR]
 set -euo pipefail
 old=$1 new=$2 out=${3:-$(mktemp -d)}
 surfaces=$("$new" surfaces | awk '/^[a-z_0-9]+ +(genus|open)/ {print $1}')
 composites=$(ls "$(dirname "$0")"/../examples/*.ipatch)
-configs=("default:" "raw:--remesh 0" "coons:--remesh 0 --base coons" "maxerr:--max-error 1e-3" "mc:--method mc")
+configs=("default:" "raw:--remesh 0" "coons:--remesh 0 --base coons" "maxerr:--max-error 1e-3" "preview:--quality preview" "mc:--method mc")
 composite_configs=("default:" "raw:--remesh 0" "mc:--method mc")
 differ=0
 compared=0

@@ -19,16 +19,11 @@
 #include "commands.hpp"
 #include "error_report.hpp"
 
-int main(int argc, char** argv) {
+namespace {
+
+/// Parses the command line and runs the chosen command; returns the exit code (error_report.hpp).
+int run(int argc, char** argv) {
   using namespace isopatch;
-#if defined(__GLIBC__)
-  // Large arrays (the clean-up's per-vertex and per-triangle arrays) straight from the system, so that
-  // freeing one returns its pages: glibc otherwise raises this threshold after the first such free and
-  // serves later large arrays from its heap, whose freed holes stay resident. A sphere of 1M vertices
-  // peaked at 365 MB resident without this and 274 MB with it, in about the same time (docs/algorithms.md,
-  // "Memory layout").
-  mallopt(M_MMAP_THRESHOLD, 1 << 20);
-#endif
   CLI::App app{"isopatch: good-quality triangle meshes of smooth implicit surfaces f(x,y,z) = 0"};
   app.set_version_flag("--version", "isopatch " + std::string(kVersion));
   app.require_subcommand(1);
@@ -46,8 +41,8 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   try {
-    for (const auto& [name, run] : runners)
-      if (app.got_subcommand(name)) return run();
+    for (const auto& [name, runner] : runners)
+      if (app.got_subcommand(name)) return runner();
     return 2;
   } catch (const Error& e) {
     std::fprintf(stderr, "isopatch: %s\n", cli::describe(e).c_str());
@@ -57,6 +52,25 @@ int main(int argc, char** argv) {
     return cli::exit_code(ErrorKind::Limit);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "isopatch: internal error: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+#if defined(__GLIBC__)
+  // Large arrays (the clean-up's per-vertex and per-triangle arrays) straight from the system, so that
+  // freeing one returns its pages: glibc otherwise raises this threshold after the first such free and
+  // serves later large arrays from its heap, whose freed holes stay resident. A sphere of 1M vertices
+  // peaked at 365 MB resident without this and 274 MB with it, in about the same time (docs/algorithms.md,
+  // "Memory layout").
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
+#endif
+  try {
+    return run(argc, argv);
+  } catch (...) {  // setting up the commands failed (out of memory): nothing else can throw out of run
+    std::fprintf(stderr, "isopatch: internal error while setting up the command line\n");
     return 1;
   }
 }

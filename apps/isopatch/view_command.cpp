@@ -3,8 +3,8 @@
 #include <isopatch/mesh_io.hpp>
 
 #include <pthread.h>
-#include <signal.h>
 
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -81,7 +81,7 @@ int run_view(const ViewOptions& o) {
     server.stop();
   });
   server.wait();
-  pthread_kill(waiter.native_handle(), SIGTERM);  // wakes the waiter when the server ended on its own
+  pthread_kill(waiter.native_handle(), SIGINT);  // wakes the waiter when the server ended on its own
   waiter.join();
   return 0;
 }

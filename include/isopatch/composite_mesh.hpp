@@ -69,10 +69,14 @@ bool meshed_through_partition(const Settings& settings);
 ///     cells (meshed_through_partition()): mesh_surface() on model.surface(), the piecewise function
 ///     meshed through the octree or the convex cells, clipped by the region; every vertex then lies on
 ///     the function of the patch whose region holds it most deeply, and seams are not held as curves.
+///     The octree's settings (min_depth, max_depth, max_cell_curvature, refine_around) have no meaning
+///     along the curves: set to other than their defaults without a region, frame or cells, they are
+///     refused (SettingError naming the field), never ignored.
 ///   MarchingCubes: mesh_surface() on model.surface() (grid, fairing and clean-up as for formulas).
 /// Budgets (max_evaluations, time_limit, max_vertices, cancel) and threads as in mesh_surface(); the
 /// same mesh for any thread count. Fills `stats` when given.
-/// \throw InputError for invalid settings or an inconsistent composite (sides that do not close, a
+/// \throw SettingError for settings out of range or octree settings on the curve path; InputError for an
+///        inconsistent composite (sides that do not close, a
 ///        curve used twice the same way); EvaluationError; LimitError.
 Mesh mesh_composite(const CompositeModel& model, const Settings& settings, MeshStats* stats = nullptr);
 

@@ -52,9 +52,10 @@ struct McGrid {
 /// \throw SettingError unless 1 <= settings.grid <= 4096, 0 <= settings.grid_offset < 1, box.valid().
 McGrid marching_cubes_grid(const Box& box, const MarchingCubesSettings& settings);
 
-/// One case of the generated table: triangles as triples of cube-edge indices.
+/// One case of the generated table: triangles as triples of cube-edge indices, in the cube numbering
+/// the octree partition uses too (docs/algorithms.md 2.3).
 /// Cube corners: 0:(0,0,0) 1:(1,0,0) 2:(1,1,0) 3:(0,1,0) 4:(0,0,1) 5:(1,0,1) 6:(1,1,1) 7:(0,1,1).
-/// Edges: (0,1)(1,2)(2,3)(3,0)(4,5)(5,6)(6,7)(7,4)(0,4)(1,5)(2,6)(3,7).
+/// Edges: (0,1)(1,2)(2,3)(3,0)(4,5)(5,6)(6,7)(7,4)(1,5)(6,2)(0,4)(7,3).
 /// Bit i of a case index is set when corner i is negative.
 struct McCase {
   std::vector<std::array<int, 3>> triangles;

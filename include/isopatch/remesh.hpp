@@ -34,9 +34,6 @@
 
 namespace isopatch {
 
-// kMaxValenceSearch and kMaxCurvatureSweeps (stage_settings.hpp) bound RemeshSettings::valence_search
-// and RemeshSettings::curvature_sweeps as they bound CleanupSettings'.
-
 struct RemeshSettings {
   /// The target sizes, the same description the projection mesher follows (stage_settings.hpp):
   ///   sizes.largest: the target edge length h (uniform sizes), or the largest size when sizes vary;
@@ -51,24 +48,23 @@ struct RemeshSettings {
   /// Largest ratio between the sizes at the two ends of an edge, relative to the edge length:
   /// h(v) <= h(u) + grading * |u - v|. In (0, 1].
   double grading = 0.3;
-  /// Flips tried per chain in the final sweep whose chains may borrow energy to pull apart the 5-7
-  /// pairs left side by side (docs/whole-surface-quality.md), 0..10000; 0 skips that sweep (about
-  /// half the clean-up time at 10-20k vertices, 1-3 points less valence 6).
-  int valence_search = kDefaultValenceSearch;
-  /// Gauss-Seidel sweeps of tangential moves that make the cotangent Laplacian exact for quadratics
-  /// at every vertex (laplacian_exactness.hpp; lower discrete-curvature error), 0..1000; 0 skips them.
-  int curvature_sweeps = kDefaultCurvatureSweeps;
-  /// Rounds of split / collapse / flip / relax, 0..100; 0 leaves the mesh unchanged.
-  int iterations = kDefaultRemeshIterations;
-  /// The preview's local repair instead of the rounds (iterations > 0 still required): short edges
-  /// collapsed, small angles repaired, valences flipped, and only the vertices within two rings of a
-  /// defect relaxed, one sweep of borrowing chains with valence_search flips each; no
-  /// curvature sweeps. Cost in proportion to the defects.
-  bool local_only = false;
-  /// Relaxation-only rounds over the whole mesh once connectivity is final (not with local_only), 0..100
-  /// (docs/whole-surface-quality.md: 8 lower the mean-curvature error by 10-45% for about a fifth more
-  /// time).
-  int final_relaxation_rounds = 8;
+  /// What the clean-up does: the same settings a whole meshing run takes (stage_settings.hpp), so a
+  /// preset means the same passes everywhere (docs/algorithms.md 5.3):
+  ///   cleanup.remesh_iterations: rounds of split / collapse / flip / relax, 0..100; empty:
+  ///     kDefaultRemeshIterations; 0 leaves the mesh unchanged;
+  ///   cleanup.quality: Default, the rounds, then the repairs, the valence search, 8 rounds of final
+  ///     relaxation (docs/whole-surface-quality.md: they lower the mean-curvature error by 10-45% for
+  ///     about a fifth more time) and the curvature sweeps; Preview, the local repair instead (short
+  ///     edges collapsed, small angles repaired, valences flipped, only the vertices within two rings of
+  ///     a defect relaxed, one sweep of borrowing chains; no curvature sweeps; cost in proportion to the
+  ///     defects); Fine, Default with twice the valence search and curvature sweeps (within their
+  ///     bounds) and 12 final relaxation rounds;
+  ///   cleanup.valence_search: flips tried per chain in the final sweep whose chains may borrow energy
+  ///     to pull apart the 5-7 pairs left side by side, 0..kMaxValenceSearch; 0 skips that sweep;
+  ///   cleanup.curvature_sweeps: Gauss-Seidel sweeps of tangential moves that make the cotangent
+  ///     Laplacian exact for quadratics at every vertex (lower discrete-curvature error),
+  ///     0..kMaxCurvatureSweeps; 0 skips them.
+  CleanupSettings cleanup;
   /// Vertices never leave this box (moves that would are skipped). Empty: no constraint.
   std::optional<Box> box;
   /// The planes of a region that cut the surface open (Settings::region): vertices stay inside them; a
@@ -85,7 +81,9 @@ struct RemeshSettings {
 /// Remeshes `mesh`, a mesh of `surface` (vertices on f = 0, triangles oriented along grad f), in place.
 /// Per-vertex attributes are carried over for surviving vertices; vertices created by splits take the
 /// value of the first edge end, except for an attribute named "role", where they get 5.
-/// \throw InputError for invalid settings; EvaluationError if f or its derivatives are not finite at a
+/// The passes run are those of the plan for these settings (src/remesh/cleanup_plan.hpp).
+/// \throw InputError for invalid settings (SettingError naming the field); EvaluationError if f or its
+/// derivatives are not finite at a
 ///        vertex; LimitError("cancelled"). After an exception from the remeshing itself (not from the
 ///        checks of the settings and the mesh), `mesh` is left empty: it is held once, not twice.
 RemeshStats remesh_on_surface(Mesh& mesh, const Surface& surface, const RemeshSettings& settings);

@@ -170,12 +170,12 @@ struct MarchingCubesSettings {
   void validate() const;
 };
 
-/// Rounds of remeshing applied to projection meshes when CleanupSettings::remesh_iterations is empty
-/// (and RemeshSettings::iterations' default): the valence-6 share stops growing after about 6 rounds.
+/// Rounds of remeshing applied to projection meshes (and by remesh_on_surface) when
+/// CleanupSettings::remesh_iterations is empty: the valence-6 share stops growing after about 6 rounds.
 inline constexpr int kDefaultRemeshIterations = 6;
-/// The clean-up's default flips per borrowing chain (CleanupSettings and RemeshSettings::valence_search).
+/// The clean-up's default flips per borrowing chain (CleanupSettings::valence_search).
 inline constexpr int kDefaultValenceSearch = 30;
-/// The clean-up's default exactness sweeps (CleanupSettings and RemeshSettings::curvature_sweeps).
+/// The clean-up's default exactness sweeps (CleanupSettings::curvature_sweeps).
 inline constexpr int kDefaultCurvatureSweeps = 8;
 /// Largest accepted valence_search and curvature_sweeps: bounds on the work a request may ask for.
 inline constexpr int kMaxValenceSearch = 10000;

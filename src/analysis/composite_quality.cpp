@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/triangle_angle.hpp"
 #include "surface/sampler.hpp"
 
 namespace isopatch {
@@ -22,10 +23,6 @@ using EdgeTriangles = std::map<std::pair<std::uint32_t, std::uint32_t>, std::vec
 double angle_degrees(const Vec3& a, const Vec3& b) {
   const double c = a.normalized().dot(b.normalized());
   return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / std::numbers::pi;
-}
-
-double smallest_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  return std::min({angle_degrees(b - a, c - a), angle_degrees(a - b, c - b), angle_degrees(a - c, b - c)});
 }
 
 /// The worst seam ratio (CompositeQuality::worst_seam_ratio) with triangle normals from `normal`;

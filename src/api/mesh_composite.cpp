@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -34,6 +35,23 @@ double patch_curvature(const Composite& c, const CompositeMesh& patches, const M
   for (std::size_t p = 0; p < c.patches.size(); ++p)
     largest = std::max(largest, refine::largest_curvature(inside[p], *c.patches[p].surface, true));
   return largest;
+}
+
+/// Settings that describe the octree, which the construction's curves replace: refused rather than
+/// ignored when set to other than their defaults. \throw SettingError naming the first such field.
+void refuse_octree_settings(const Settings& settings) {
+  const Settings defaults;
+  const auto refuse = [](const char* field) {
+    throw SettingError(field,
+                       std::string(field) +
+                           " shapes the octree, and a composite is meshed along its own curves: leave it "
+                           "at its default, or give a region, a frame or cells to mesh the composite "
+                           "through the partition");
+  };
+  if (settings.min_depth != defaults.min_depth) refuse("min_depth");
+  if (settings.max_depth != defaults.max_depth) refuse("max_depth");
+  if (settings.max_cell_curvature != defaults.max_cell_curvature) refuse("max_cell_curvature");
+  if (!settings.refine_around.empty()) refuse("refine_around");
 }
 
 }  // namespace
@@ -75,6 +93,7 @@ Mesh mesh_composite(const CompositeModel& model, const Settings& settings, MeshS
   // through the partition, as a formula is (its seams then are not held as curves).
   if (settings.method == Method::MarchingCubes || meshed_through_partition(settings))
     return mesh_surface(*model.surface(), settings, stats);
+  refuse_octree_settings(settings);
   return run_in_task_arena(settings, stats, [&] {
     std::optional<BudgetedComposite> budgeted;
     if (settings.max_evaluations > 0 || settings.time_limit > 0.0)

@@ -205,8 +205,8 @@ Parsed parse_lines(std::string_view text, const Reader& r, std::string source) {
       p.mesh.faces.emplace_back();
       p.face_lines.push_back(l.number);
       deferred.push_back({&l});
-    } else if (key == "vn" || key == "edge" || key == "face") {
-      deferred.push_back({&l});
+    } else if (key == "vn" || key == "edge" || key == "face" || key == "vertex") {
+      deferred.push_back({&l});  // read once every vertex and face is known
     } else if (key == "name") {
       if (l.tokens.size() < 2) r.token(l, 1, "name");
       p.name.clear();
@@ -237,8 +237,6 @@ Parsed parse_lines(std::string_view text, const Reader& r, std::string source) {
         r.expect_count(l, 7);
       }
       p.blend_line = l.number;
-    } else if (key == "vertex") {
-      deferred.push_back({&l});
     } else {
       r.fail(l.number, l.tokens[0].column,
              "unknown keyword '" + std::string(key) +

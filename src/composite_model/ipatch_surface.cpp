@@ -1,10 +1,13 @@
 /// \file ipatch_surface.cpp
-/// The I-patch function, its weights and its exact derivatives (ipatch_surface.hpp).
+/// The I-patch function, its weights and its exact derivatives (ipatch_surface.hpp), in the library's
+/// jets (autodiff.hpp).
 #include "composite_model/ipatch_surface.hpp"
 
+#include <isopatch/autodiff.hpp>
 #include <isopatch/error.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <type_traits>
@@ -14,71 +17,35 @@ namespace isopatch {
 
 namespace {
 
-/// A value with its gradient; the arithmetic is the chain rule, written out.
-struct Jet1 {
-  double v = 0.0;
-  Vec3 g = Vec3::Zero();
-};
-
-/// A value with its gradient and Hessian.
-struct Jet2 {
-  double v = 0.0;
-  Vec3 g = Vec3::Zero();
-  Mat3 h = Mat3::Zero();
-};
-
-Jet1 operator+(const Jet1& a, const Jet1& b) {
-  return {a.v + b.v, a.g + b.g};
+/// The Hessian of a jet as a matrix, and the upper triangle of a matrix as a jet's Hessian.
+Mat3 hessian_matrix(const std::array<double, 6>& h) {
+  Mat3 m;
+  m << h[0], h[1], h[2], h[1], h[3], h[4], h[2], h[4], h[5];
+  return m;
 }
-Jet1 operator*(double s, const Jet1& a) {
-  return {s * a.v, s * a.g};
-}
-Jet1 operator*(const Jet1& a, const Jet1& b) {
-  return {a.v * b.v, a.v * b.g + b.v * a.g};
-}
-Jet1 operator/(const Jet1& n, const Jet1& d) {
-  const double q = n.v / d.v;
-  return {q, (n.g - q * d.g) / d.v};
+std::array<double, 6> upper_triangle(const Mat3& m) {
+  return {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
 }
 
-Jet2 operator+(const Jet2& a, const Jet2& b) {
-  return {a.v + b.v, a.g + b.g, a.h + b.h};
-}
-Jet2 operator*(double s, const Jet2& a) {
-  return {s * a.v, s * a.g, s * a.h};
-}
-Jet2 operator*(const Jet2& a, const Jet2& b) {
-  const Mat3 cross = a.g * b.g.transpose();
-  return {a.v * b.v, a.v * b.g + b.v * a.g, a.v * b.h + b.v * a.h + cross + cross.transpose()};
-}
-Jet2 operator/(const Jet2& n, const Jet2& d) {
-  const double q = n.v / d.v;
-  const Vec3 gq = (n.g - q * d.g) / d.v;
-  const Mat3 cross = gq * d.g.transpose();
-  return {q, gq, (n.h - q * d.h - cross - cross.transpose()) / d.v};
+Vec3 vec(const std::array<double, 3>& g) {
+  return {g[0], g[1], g[2]};
 }
 
 template <typename T>
 T load(const Surface& s, const Vec3& p) {
   if constexpr (std::is_same_v<T, double>) {
     return s.value(p);
-  } else if constexpr (std::is_same_v<T, Jet1>) {
+  } else if constexpr (std::is_same_v<T, GradientJet>) {
     const ValueGradient o = s.value_gradient(p);
-    return {o.value, o.gradient};
+    GradientJet j(o.value);
+    j.g = {o.gradient.x(), o.gradient.y(), o.gradient.z()};
+    return j;
   } else {
     const SecondOrder o = s.second_order(p);
-    return {o.value, o.gradient, o.hessian};
-  }
-}
-
-template <typename T>
-T constant(double v) {
-  if constexpr (std::is_same_v<T, double>) {
-    return v;
-  } else {
-    T t;
-    t.v = v;
-    return t;
+    Jet j(o.value);
+    j.g = {o.gradient.x(), o.gradient.y(), o.gradient.z()};
+    j.h = upper_triangle(o.hessian);
+    return j;
   }
 }
 
@@ -95,10 +62,8 @@ template <typename T>
 bool finite(const T& x) {
   if constexpr (std::is_same_v<T, double>) {
     return std::isfinite(x);
-  } else if constexpr (std::is_same_v<T, Jet1>) {
-    return std::isfinite(x.v) && x.g.allFinite();
   } else {
-    return std::isfinite(x.v) && x.g.allFinite() && x.h.allFinite();
+    return x.finite();
   }
 }
 
@@ -163,7 +128,7 @@ T IPatchSurface::evaluate(const Vec3& p) const {
   // One pass, no storage: with P = prod_{k<j} B_k^2, A = sum_{i<j} w_i R_i prod_{k<j, k!=i} B_k^2 and D
   // likewise without R_i, adding side j multiplies A and D by B_j^2 and adds w_j R_j P and w_j P.
   const std::size_t n = ribbons_.size();
-  T product = constant<T>(1.0), numerator = constant<T>(0.0), denominator = constant<T>(0.0);
+  T product = T(1.0), numerator = T(0.0), denominator = T(0.0);
   for (std::size_t j = 0; j < n; ++j) {
     const T r = load<T>(*ribbons_[j], p);
     const T b = load<T>(*bounds_[j], p);
@@ -205,13 +170,13 @@ double IPatchSurface::value(const Vec3& p) const {
 }
 
 ValueGradient IPatchSurface::value_gradient(const Vec3& p) const {
-  const Jet1 j = evaluate<Jet1>(p);
-  return {j.v, j.g};
+  const GradientJet j = evaluate<GradientJet>(p);
+  return {j.v, vec(j.g)};
 }
 
 SecondOrder IPatchSurface::second_order(const Vec3& p) const {
-  const Jet2 j = evaluate<Jet2>(p);
-  return {j.v, j.g, j.h};
+  const Jet j = evaluate<Jet>(p);
+  return {j.v, vec(j.g), hessian_matrix(j.h)};
 }
 
 double IPatchSurface::plain_value(const Vec3& p) const {

@@ -59,13 +59,13 @@ struct BoundaryBend {
   int missing = 0;           ///< samples where no point of the patch lies within reach of the ribbon
 };
 
-/// Beside each side i, at the points of its curve t = 1/8 ... 7/8: steps `step_fraction` of the patch's size
-/// into the region, across the curve in the ribbon's tangent plane, finds the
-/// patch's root on the line along the ribbon's normal there (within as far again on either side) and
-/// measures the angle between grad F there and grad R_i. A patch that folds or bends sharply beside its
-/// boundary (its function approaches the ribbon only very close to the curve) shows a large angle or
-/// no root. (\pre an IPatchSurface; else all zero.) Deterministic.
-BoundaryBend measure_boundary_bend(const Composite& composite, std::size_t patch,
+/// For patch `index`, beside each side i, at the points of its curve t = 1/8 ... 7/8: steps `step_fraction`
+/// of the patch's size into the region, across the curve in the ribbon's tangent plane, finds the patch's
+/// root on the line along the ribbon's normal there (within as far again on either side) and measures the
+/// angle between grad F there and grad R_i. A patch that folds or bends sharply beside its boundary (its
+/// function approaches the ribbon only very close to the curve) shows a large angle or no root. (\pre an
+/// IPatchSurface; else all zero.) Deterministic.
+BoundaryBend measure_boundary_bend(const Composite& composite, std::size_t index,
                                    double step_fraction = 0.005);
 
 /// The farthest the patch's boundary runs outside its own region: B_j / |grad B_j| (> 0 outside) at 15
@@ -78,8 +78,9 @@ struct BoundaryExit {
 };
 BoundaryExit measure_boundary_exit(const Composite& composite, const CompositePatch& patch);
 
-/// Marches the lines through one I-patch (\pre its surface is an IPatchSurface; else all zero).
-PatchShape measure_patch(const Composite& composite, std::size_t patch, const ValidityOptions& options = {});
+/// Marches the lines through patch `index` of the composite (\pre its surface is an IPatchSurface; else all
+/// zero).
+PatchShape measure_patch(const Composite& composite, std::size_t index, const ValidityOptions& options = {});
 
 /// Per patch with an I-patch function (others are planes and cylinders, single sheets by construction):
 /// a finding when some line meets the patch more than once inside its region, or when the patch rises

@@ -1,38 +1,37 @@
 // Single-point evaluators: value, value with gradient (first-order forward mode) and value with
-// gradient and Hessian (second-order forward mode). A switch per instruction and registers on the
-// stack (or, for long tapes, in a thread-local buffer): no allocation, no virtual call.
+// gradient and Hessian (second-order forward mode), the registers the library's jets (autodiff.hpp:
+// GradientJet and Jet) with the chain rule written out per instruction. A switch per instruction and
+// registers on the stack (or, for long tapes, in a thread-local buffer): no allocation, no virtual
+// call.
+#include <isopatch/autodiff.hpp>
+
 #include "expr/derivatives.hpp"
 #include "expr/evaluate.hpp"
 #include "expr/scalar.hpp"
 
 #include <array>
+#include <cstddef>
+#include <new>
+#include <type_traits>
 #include <vector>
 
 namespace isopatch::expr {
 namespace {
 
-/// Runs f(registers) with at least `count` registers of type T.
+/// Runs f(registers) with at least `count` registers of type T. The stack registers are left
+/// uninitialized (every register is written before it is read: the variables and constants first, then
+/// each instruction's output), so a short tape pays nothing for them.
 template <class T, std::size_t N, class F>
 auto with_registers(std::size_t count, F&& f) {
+  static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
   if (count <= N) {
-    std::array<T, N> regs;
-    return f(regs.data());
+    alignas(T) std::byte storage[N * sizeof(T)];  // implicitly creates the T objects (trivial types)
+    return f(std::launder(reinterpret_cast<T*>(storage)));
   }
   thread_local std::vector<T> heap;
   if (heap.size() < count) heap.resize(count);
   return f(heap.data());
 }
-
-struct Dual {  // value and gradient
-  double v;
-  std::array<double, 3> g;
-};
-
-struct Jet2 {  // value, gradient, Hessian (upper triangle xx xy xz yy yz zz)
-  double v;
-  std::array<double, 3> g;
-  std::array<double, 6> h;
-};
 
 constexpr int kPairI[6] = {0, 0, 0, 1, 1, 2};
 constexpr int kPairJ[6] = {0, 1, 2, 1, 2, 2};
@@ -46,17 +45,17 @@ double run_value(const Tape& t, double* r, const Vec3& p) {
   return r[t.result];
 }
 
-ValueGradient run_gradient(const Tape& t, Dual* r, const Vec3& p) {
+ValueGradient run_gradient(const Tape& t, GradientJet* r, const Vec3& p) {
   for (int k = 0; k < 3; ++k) {
     r[k].v = p[k];
     r[k].g = {0.0, 0.0, 0.0};
     r[k].g[static_cast<std::size_t>(k)] = 1.0;
   }
-  for (const ConstantRegister& c : t.constants) r[c.reg] = Dual{c.value, {0.0, 0.0, 0.0}};
+  for (const ConstantRegister& c : t.constants) r[c.reg] = GradientJet(c.value);
   for (const Instruction& in : t.code) {
-    const Dual& a = r[in.a];
-    const Dual& b = r[in.b];
-    Dual& o = r[in.out];
+    const GradientJet& a = r[in.a];
+    const GradientJet& b = r[in.b];
+    GradientJet& o = r[in.out];
     switch (in.op) {
       case Op::Add:
         o.v = a.v + b.v;
@@ -110,20 +109,20 @@ ValueGradient run_gradient(const Tape& t, Dual* r, const Vec3& p) {
       }
     }
   }
-  const Dual& f = r[t.result];
+  const GradientJet& f = r[t.result];
   return {f.v, Vec3(f.g[0], f.g[1], f.g[2])};
 }
 
-SecondOrder run_second_order(const Tape& t, Jet2* r, const Vec3& p) {
+SecondOrder run_second_order(const Tape& t, Jet* r, const Vec3& p) {
   for (int k = 0; k < 3; ++k) {
-    r[k] = Jet2{p[k], {0.0, 0.0, 0.0}, {}};
+    r[k] = Jet(p[k]);
     r[k].g[static_cast<std::size_t>(k)] = 1.0;
   }
-  for (const ConstantRegister& c : t.constants) r[c.reg] = Jet2{c.value, {0.0, 0.0, 0.0}, {}};
+  for (const ConstantRegister& c : t.constants) r[c.reg] = Jet(c.value);
   for (const Instruction& in : t.code) {
-    const Jet2& a = r[in.a];
-    const Jet2& b = r[in.b];
-    Jet2& o = r[in.out];
+    const Jet& a = r[in.a];
+    const Jet& b = r[in.b];
+    Jet& o = r[in.out];
     switch (in.op) {
       case Op::Add:
       case Op::Sub: {
@@ -145,7 +144,7 @@ SecondOrder run_second_order(const Tape& t, Jet2* r, const Vec3& p) {
       case Op::Atan2:
       case Op::Hypot: {
         const BinaryDerivatives d = binary_derivatives(in.op, a.v, b.v);
-        Jet2 res;
+        Jet res;
         res.v = d.f;
         for (int k = 0; k < 3; ++k) res.g[k] = d.fa * a.g[k] + d.fb * b.g[k];
         for (int k = 0; k < 6; ++k) {
@@ -158,7 +157,7 @@ SecondOrder run_second_order(const Tape& t, Jet2* r, const Vec3& p) {
       }
       default: {
         const UnaryDerivatives d = unary_derivatives(in.op, a.v, in.imm);
-        Jet2 res;
+        Jet res;
         res.v = d.v;
         for (int k = 0; k < 3; ++k) res.g[k] = d.d1 * a.g[k];
         for (int k = 0; k < 6; ++k) res.h[k] = d.d1 * a.h[k] + d.d2 * a.g[kPairI[k]] * a.g[kPairJ[k]];
@@ -166,7 +165,7 @@ SecondOrder run_second_order(const Tape& t, Jet2* r, const Vec3& p) {
       }
     }
   }
-  const Jet2& f = r[t.result];
+  const Jet& f = r[t.result];
   SecondOrder s;
   s.value = f.v;
   s.gradient = Vec3(f.g[0], f.g[1], f.g[2]);
@@ -181,11 +180,12 @@ double evaluate(const Tape& tape, const Vec3& p) {
 }
 
 ValueGradient evaluate_gradient(const Tape& tape, const Vec3& p) {
-  return with_registers<Dual, 64>(tape.registers, [&](Dual* r) { return run_gradient(tape, r, p); });
+  return with_registers<GradientJet, 64>(tape.registers,
+                                         [&](GradientJet* r) { return run_gradient(tape, r, p); });
 }
 
 SecondOrder evaluate_second_order(const Tape& tape, const Vec3& p) {
-  return with_registers<Jet2, 32>(tape.registers, [&](Jet2* r) { return run_second_order(tape, r, p); });
+  return with_registers<Jet, 32>(tape.registers, [&](Jet* r) { return run_second_order(tape, r, p); });
 }
 
 }  // namespace isopatch::expr

@@ -5,8 +5,8 @@
 // makes neighbouring cubes agree on every shared face. Vertices of the x- and y-edges of a lattice
 // layer are kept while the two slabs on either side of the layer are processed; z-edges belong to a
 // single slab. Values are compared with the same rule everywhere (f < 0 negative, f >= 0 positive).
+#include "core/cube_numbering.hpp"
 #include "mc/edge_root.hpp"
-#include "mc/marching_cube.hpp"
 
 #include <isopatch/error.hpp>
 #include <isopatch/marching_cubes.hpp>
@@ -21,6 +21,18 @@ namespace isopatch {
 namespace {
 
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+
+// Where cube edge e lies in the lattice: the edge along `axis` leaving the cube corner at offset `lower`.
+struct LatticeEdge {
+  int axis;
+  std::array<int, 3> lower;
+};
+
+constexpr std::array<LatticeEdge, 12> kLatticeEdge = [] {
+  std::array<LatticeEdge, 12> table{};
+  for (int e = 0; e < 12; ++e) table[e] = {cube::edge_axis(e), cube::kCorner[cube::edge_lower_corner(e)]};
+  return table;
+}();
 
 class SlabMesher {
  public:
@@ -113,26 +125,19 @@ class SlabMesher {
       for (int i = 0; i < nx_; ++i) {
         int case_index = 0;
         for (int c = 0; c < 8; ++c) {
-          const auto& corner = mc::kCorner[c];
+          const auto& corner = cube::kCorner[c];
           const double f = values_[corner[2] != 0 ? above : below][at(i + corner[0], j + corner[1])];
           if (f < 0.0) case_index |= 1 << c;
         }
         if (case_index == 0 || case_index == 255) continue;
-        // Cube edges in the numbering of marching_cubes.hpp.
-        const std::array<std::uint32_t, 12> vertex = {
-            x_vertex_[below][x_edge(i, j)],
-            y_vertex_[below][y_edge(i + 1, j)],
-            x_vertex_[below][x_edge(i, j + 1)],
-            y_vertex_[below][y_edge(i, j)],
-            x_vertex_[above][x_edge(i, j)],
-            y_vertex_[above][y_edge(i + 1, j)],
-            x_vertex_[above][x_edge(i, j + 1)],
-            y_vertex_[above][y_edge(i, j)],
-            z_vertex_[at(i, j)],
-            z_vertex_[at(i + 1, j)],
-            z_vertex_[at(i + 1, j + 1)],
-            z_vertex_[at(i, j + 1)],
-        };
+        std::array<std::uint32_t, 12> vertex{};  // by cube edge (core/cube_numbering.hpp)
+        for (int e = 0; e < 12; ++e) {
+          const auto& [axis, lower] = kLatticeEdge[e];
+          const int layer = lower[2] != 0 ? above : below;
+          vertex[e] = axis == 0   ? x_vertex_[layer][x_edge(i + lower[0], j + lower[1])]
+                      : axis == 1 ? y_vertex_[layer][y_edge(i + lower[0], j + lower[1])]
+                                  : z_vertex_[at(i + lower[0], j + lower[1])];
+        }
         for (const std::array<int, 3>& t : table[case_index].triangles)
           mesh_.triangles.push_back({vertex[t[0]], vertex[t[1]], vertex[t[2]]});
       }

@@ -6,9 +6,9 @@
 // whichever cube looks at them, so two cubes sharing a face produce the same segments, traversed in
 // opposite directions (the outward normals of the face are opposite). Lorensen & Cline 1987 pasted a
 // table of 15 classes, whose ambiguous faces can disagree and leave holes; this rule cannot.
-#include "mc/marching_cube.hpp"
-
 #include <isopatch/marching_cubes.hpp>
+
+#include "core/cube_numbering.hpp"
 
 #include <Eigen/Geometry>
 
@@ -19,9 +19,8 @@
 namespace isopatch {
 namespace {
 
-using mc::kCorner;
-using mc::kEdge;
-using mc::kFace;
+using cube::kCorner;
+using cube::kEdge;
 
 Vec3 corner_point(int c) {
   return Vec3(kCorner[c][0], kCorner[c][1], kCorner[c][2]);
@@ -36,12 +35,12 @@ struct Segment {
   int to;    // cube edge where it ends
 };
 
-// The segments where the surface meets `face` in sign configuration `case_index`, directed so that
+// The segments where the surface meets face f in sign configuration `case_index`, directed so that
 // each runs counter-clockwise around the patch seen from its positive side: with N the in-face
 // direction from the negative to the positive side and n the outward face normal, along N x n.
-std::vector<Segment> face_segments(int case_index, const mc::CubeFace& face) {
-  std::array<int, 4> edges{};
-  for (int k = 0; k < 4; ++k) edges[k] = mc::edge_between(face.corners[k], face.corners[(k + 1) % 4]);
+std::vector<Segment> face_segments(int case_index, int f) {
+  const std::array<int, 4>& corners = cube::kFace[f];
+  const std::array<int, 4>& edges = cube::kFaceEdge[f];  // edges[k] joins corners[k] and corners[k + 1]
 
   struct Cut {
     Segment segment;
@@ -50,20 +49,20 @@ std::vector<Segment> face_segments(int case_index, const mc::CubeFace& face) {
   std::vector<Cut> cuts;
   std::vector<int> crossed;
   for (int k = 0; k < 4; ++k)
-    if (mc::crossed(case_index, edges[k])) crossed.push_back(k);
+    if (cube::crossed(case_index, edges[k])) crossed.push_back(k);
   if (crossed.size() == 2) {
     const int e = edges[crossed[0]];
-    const int neg = mc::negative(case_index, kEdge[e][0]) ? kEdge[e][0] : kEdge[e][1];
+    const int neg = cube::negative(case_index, kEdge[e][0]) ? kEdge[e][0] : kEdge[e][1];
     cuts.push_back({{e, edges[crossed[1]]}, neg});
   } else if (crossed.size() == 4) {
     // Ambiguous face: cut each negative corner off on its own (negative diagonal corners not joined).
     for (int k = 0; k < 4; ++k)
-      if (mc::negative(case_index, face.corners[k]))
-        cuts.push_back({{edges[(k + 3) % 4], edges[k]}, face.corners[k]});
+      if (cube::negative(case_index, corners[k]))
+        cuts.push_back({{edges[(k + 3) % 4], edges[k]}, corners[k]});
   }
 
   Vec3 outward = Vec3::Zero();
-  outward[face.axis] = face.sign;
+  outward[cube::kFaceAxis[f]] = cube::face_outward_sign(f);
   std::vector<Segment> segments;
   for (const Cut& cut : cuts) {
     const Vec3 a = edge_midpoint(cut.segment.from);
@@ -105,20 +104,35 @@ void triangulate_loop(const std::vector<int>& loop, std::vector<std::array<int, 
     triangles.push_back({at(best_apex, 0), at(best_apex, i), at(best_apex, i + 1)});
 }
 
+/// The order in which loops are started: the edges around the face z = 0, then around z = 1 (as
+/// numbered), then the vertical edges by their lower corner. A loop starts at its first edge in this
+/// order, which orders a case's triangles and breaks ties between equally good apexes (the planar square
+/// of cases 15 and 240 is cut along the diagonal from corner 0's vertical edge).
+constexpr std::array<int, 12> kLoopStartOrder = [] {
+  std::array<int, 12> order{};
+  int k = 0;
+  for (int e = 0; e < 12; ++e)
+    if (cube::edge_axis(e) != 2) order[k++] = e;
+  for (int corner = 0; corner < 4; ++corner)
+    for (int e = 0; e < 12; ++e)
+      if (cube::edge_axis(e) == 2 && cube::edge_lower_corner(e) == corner) order[k++] = e;
+  return order;
+}();
+
 McCase generate_case(int case_index) {
   // Link the directed face segments into closed loops: every crossed edge lies on two faces and is
   // the end of a segment on one of them and the start of a segment on the other.
   std::array<int, 12> next{};
   next.fill(-1);
-  for (const mc::CubeFace& face : kFace)
-    for (const Segment& s : face_segments(case_index, face)) {
+  for (int f = 0; f < 6; ++f)
+    for (const Segment& s : face_segments(case_index, f)) {
       assert(next[s.from] == -1);
       next[s.from] = s.to;
     }
 
   McCase result;
   std::array<bool, 12> visited{};
-  for (int start = 0; start < 12; ++start) {
+  for (const int start : kLoopStartOrder) {
     if (next[start] < 0 || visited[start]) continue;
     std::vector<int> loop;
     for (int e = start; !visited[e]; e = next[e]) {

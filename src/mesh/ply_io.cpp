@@ -49,7 +49,7 @@ class BinarySource {
       case PlyType::UInt32:
         return load_scalar<std::uint32_t>(p, big_endian_);
       case PlyType::Float32:
-        return load_scalar<float>(p, big_endian_);
+        return static_cast<double>(load_scalar<float>(p, big_endian_));
       case PlyType::Float64:
         return load_scalar<double>(p, big_endian_);
     }

@@ -1,9 +1,9 @@
 #pragma once
 /// \file cell.hpp
 /// An octree cell as integer data: its depth, its coordinates at that depth, and the lattice names of
-/// its corners, centres, edges and faces (cube numbering of cell_cube.hpp).
+/// its corners, centres, edges and faces (cube numbering of core/cube_numbering.hpp).
 
-#include "partition/cell_cube.hpp"
+#include "core/cube_numbering.hpp"
 #include "partition/lattice.hpp"
 
 namespace isopatch {

@@ -3,7 +3,7 @@
 #include <array>
 #include <utility>
 
-#include "partition/cell_cube.hpp"
+#include "core/cube_numbering.hpp"
 #include "partition/cell_tests.hpp"
 #include "surface/bracketed_root.hpp"
 

@@ -22,10 +22,10 @@ struct ConfigEntry {
   std::uint16_t crossed_edges = 0;  ///< bit e set when edge e of the cube is crossed
 };
 
-/// The 256-entry table, indexed by the configuration code: bit i set when corner i (cell_cube.hpp) is
-/// negative. Built once on first use (thread-safe); docs/algorithms.md 2.5 lists the expected counts:
-/// 2 empty, 126 single loops (16 triangles, 30 quads, 48 pentagons, 32 hexagons), 8 double
-/// triangles, 120 ambiguous.
+/// The 256-entry table, indexed by the configuration code: bit i set when corner i
+/// (core/cube_numbering.hpp) is negative. Built once on first use (thread-safe); docs/algorithms.md 2.5
+/// lists the expected counts: 2 empty, 126 single loops (16 triangles, 30 quads, 48 pentagons, 32
+/// hexagons), 8 double triangles, 120 ambiguous.
 const std::array<ConfigEntry, 256>& config_table();
 
 }  // namespace isopatch

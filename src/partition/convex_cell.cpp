@@ -123,6 +123,7 @@ bool ConvexCell::clip(const CellPlane& plane) {
     centre /= static_cast<double>(cap.size());
     const auto [u, v] = plane_basis(plane.normal);
     std::vector<std::pair<double, std::uint32_t>> order;
+    order.reserve(cap.size());
     for (std::uint32_t i : cap)
       order.emplace_back(std::atan2((points[i] - centre).dot(v), (points[i] - centre).dot(u)), i);
     std::sort(order.begin(), order.end());

@@ -118,6 +118,7 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
   out.start_level = settings.start_level;
   if (leaves.empty()) return out;
   std::vector<double> sizes;
+  sizes.reserve(leaves.size());
   for (const ConvexLeaf& leaf : leaves) sizes.push_back(leaf.cell.bounds().size().maxCoeff());
   std::vector<double> sorted = sizes;
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
@@ -263,6 +264,7 @@ CellPartition build_convex_partition(const Surface& surface, const Box& region,
         for (std::uint32_t id : v) cone.push_back(gradients[id]);
         if (events.empty()) continue;
         std::vector<Vec3> in_face;
+        in_face.reserve(v.size());
         for (std::uint32_t id : v) in_face.push_back(gradients[id]);
         faces = faces && in_plane_gradients_agree(in_face, overlay.pieces[piece].normal);
         // Rotate to start at an entering crossing; crossings then alternate entering, leaving.

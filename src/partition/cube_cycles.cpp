@@ -1,7 +1,7 @@
 // Face-by-face linking of crossed cube edges; see cube_cycles.hpp for the orientation argument.
 #include "partition/cube_cycles.hpp"
 
-#include "partition/cell_cube.hpp"
+#include "core/cube_numbering.hpp"
 
 #include <array>
 #include <cassert>

@@ -5,9 +5,9 @@
 #include <span>
 #include <unordered_set>
 
+#include "core/cube_numbering.hpp"
 #include "core/cyclic.hpp"
 #include "partition/cell_checks.hpp"
-#include "partition/cell_cube.hpp"
 #include "partition/cell_tests.hpp"
 #include "partition/face_links.hpp"
 #include "partition/octree_descent.hpp"

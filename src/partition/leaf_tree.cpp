@@ -2,7 +2,7 @@
 // from its own depth upwards, at most 21 lookups.
 #include "partition/leaf_tree.hpp"
 
-#include "partition/cell_cube.hpp"
+#include "core/cube_numbering.hpp"
 #include "partition/index_map.hpp"
 
 #include <algorithm>

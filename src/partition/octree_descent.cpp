@@ -7,7 +7,7 @@
 #include <optional>
 #include <unordered_set>
 
-#include "partition/cell_cube.hpp"
+#include "core/cube_numbering.hpp"
 #include "partition/cell_tests.hpp"
 #include "surface/sign_rule.hpp"
 

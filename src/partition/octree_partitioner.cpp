@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "partition/cell_cube.hpp"
+#include "core/cube_numbering.hpp"
 #include "partition/cube_cycles.hpp"
 
 namespace isopatch {

@@ -94,8 +94,8 @@ struct Leaf {
   Box box;
   LeafKind kind = LeafKind::Complex;
   ComplexReason reason = ComplexReason::None;
-  /// Corner-sign code, bit i set when corner i (cell_cube.hpp) is negative. For a transition leaf
-  /// (adaptive mode) informative only: its loops and verdict come from the boundary graph.
+  /// Corner-sign code, bit i set when corner i (core/cube_numbering.hpp) is negative. For a transition
+  /// leaf (adaptive mode) informative only: its loops and verdict come from the boundary graph.
   std::uint8_t config = 0;
   std::vector<Loop> loops;
 };

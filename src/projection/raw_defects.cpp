@@ -8,6 +8,7 @@
 
 #include <tbb/parallel_sort.h>
 
+#include "core/triangle_angle.hpp"
 #include "core/vertex_role.hpp"
 
 namespace isopatch {
@@ -34,18 +35,6 @@ int kind_of(float role) {
 int rank(int kind) {
   constexpr int kRank[RawDefects::kKinds] = {2, 1, 0, 3};
   return kRank[kind];
-}
-
-/// The cosine of the smallest angle of a triangle (the largest of its corners' cosines; 1 when degenerate).
-double smallest_angle_cosine(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 p[3] = {a, b, c};
-  double largest = -1.0;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3 u = p[(i + 1) % 3] - p[i], v = p[(i + 2) % 3] - p[i];
-    const double lengths = std::sqrt(u.squaredNorm() * v.squaredNorm());
-    largest = std::max(largest, lengths > 0.0 ? u.dot(v) / lengths : 1.0);
-  }
-  return largest;
 }
 
 }  // namespace

@@ -142,10 +142,7 @@ void evaluate_starts(const Sampler& f, std::span<RayStart> rays) {
 std::optional<RayHit> march_to_surface(const Sampler& f, const Vec3& start, double f_start,
                                        const Vec3& direction, const Box& region,
                                        const RayMarchSettings& settings) {
-  const RayStart ray{start, f_start, direction};
-  std::vector<std::optional<RayHit>> hit;
-  march_rays(f, std::span<const RayStart>(&ray, 1), region, settings, hit);
-  return hit[0];
+  return march_to_surface(f, start, f_start, direction, MarchRegion::cell(region), settings);
 }
 
 std::optional<RayHit> march_to_surface(const Sampler& f, const Vec3& start, double f_start,

@@ -12,7 +12,7 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
-#include "remesh/triangle_angle.hpp"
+#include "core/triangle_angle.hpp"
 
 namespace isopatch::refine {
 namespace {

@@ -8,8 +8,8 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include "core/triangle_angle.hpp"
 #include "remesh/remesh_thresholds.hpp"
-#include "remesh/triangle_angle.hpp"
 
 namespace isopatch::refine {
 namespace {

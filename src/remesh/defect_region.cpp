@@ -1,7 +1,7 @@
 // Vertices near defects (defect_region.hpp).
 #include "remesh/defect_region.hpp"
 
-#include "remesh/triangle_angle.hpp"
+#include "core/triangle_angle.hpp"
 #include "remesh/valence_flips.hpp"
 
 namespace isopatch {

@@ -1,6 +1,6 @@
 #pragma once
-// The vertices the preview's local repair works on (remesh.hpp RemeshSettings::local_only): those near
-// a defect of the mesh, so that the repair costs in proportion to what needs fixing.
+// The vertices the preview's local repair works on (the preview preset, CleanupEffort::local_only): those
+// near a defect of the mesh, so that the repair costs in proportion to what needs fixing.
 
 #include <cstdint>
 #include <vector>

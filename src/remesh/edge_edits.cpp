@@ -38,7 +38,8 @@ void split_long_edges(RemeshRun& run) {
 }
 
 std::size_t split_listed(RemeshRun& run, const EdgeList& edges, double longest) {
-  const auto [first_vertex, first_triangle] = run.mesh.add_split_slots(edges.size());
+  const auto slots = run.mesh.add_split_slots(edges.size());  // (first vertex, first triangle)
+  const std::uint32_t first_vertex = slots.first, first_triangle = slots.second;
   const std::size_t splits =
       edit_edges_in_blocks(run.mesh, edges, longest, [&](std::uint32_t a, std::uint32_t b, std::size_t k) {
         return try_split(run, a, b, first_vertex + static_cast<std::uint32_t>(k),

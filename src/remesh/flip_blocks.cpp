@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 namespace isopatch {
@@ -36,7 +37,7 @@ FlipBlocks make_flip_blocks(const EditableMesh& mesh, double width, double shift
   blocks.width = width;
   blocks.shift = shift;
   blocks.block_of.assign(mesh.vertex_slots(), kNoBlock);
-  Vec3 lo = Vec3::Constant(INFINITY);
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
   for (std::uint32_t v = 0; v < mesh.vertex_slots(); ++v)
     if (mesh.alive(v)) lo = lo.cwiseMin(mesh.positions[v]);
   blocks.origin = lo;

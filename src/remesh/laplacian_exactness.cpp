@@ -13,7 +13,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
-#include "remesh/triangle_angle.hpp"
+#include "core/triangle_angle.hpp"
 
 namespace isopatch {
 namespace {
@@ -57,6 +57,11 @@ struct MomentSums {
     return *this;
   }
 };
+
+/// Pointers to the three frames of a triangle's corners, as triangle_sums takes them.
+std::array<const TangentFrame*, 3> corner_frames(const std::array<TangentFrame, 3>& frames) {
+  return {frames.data(), frames.data() + 1, frames.data() + 2};
+}
 
 /// The sums of triangle (x0, x1, x2) at each of its corners, corner k in frame *frames[k] (null: that
 /// corner is not needed). False for a degenerate triangle. The mixed area follows Meyer et al. (2003)
@@ -231,7 +236,7 @@ class ExactnessSweeper {
       const Triangle& tri = mesh_.triangles[t];
       if (!triangle_sums({&position(mesh_, tri[0], u, q), &position(mesh_, tri[1], u, q),
                           &position(mesh_, tri[2], u, q)},
-                         {&s.frames[k][0], &s.frames[k][1], &s.frames[k][2]}, trial[k]))
+                         corner_frames(s.frames[k]), trial[k]))
         return false;
       for (std::size_t c = 0; c < 3; ++c) {
         MomentSums& sum = ring_sums[corner_slot[3 * k + c]];
@@ -264,7 +269,7 @@ class ExactnessSweeper {
         if (found == ring.end()) ring.push_back(tri[c]);
       }
       if (!triangle_sums({&mesh_.positions[tri[0]], &mesh_.positions[tri[1]], &mesh_.positions[tri[2]]},
-                         {&s.frames[k][0], &s.frames[k][1], &s.frames[k][2]}, s.current[k]))
+                         corner_frames(s.frames[k]), s.current[k]))
         return false;
     }
     return true;

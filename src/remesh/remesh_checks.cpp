@@ -20,17 +20,7 @@ void check_remesh_settings(const RemeshSettings& s) {
                        "remesh: the smallest size must be positive and at most the edge length");
   if (!(s.grading > 0.0 && s.grading <= 1.0))
     throw SettingError("grading", "remesh: grading must lie in (0, 1]");
-  if (s.valence_search < 0 || s.valence_search > kMaxValenceSearch)
-    throw SettingError("valence_search", "remesh: the valence search must be between 0 and " +
-                                             std::to_string(kMaxValenceSearch) + " flips per chain");
-  if (s.curvature_sweeps < 0 || s.curvature_sweeps > kMaxCurvatureSweeps)
-    throw SettingError("curvature_sweeps", "remesh: the curvature sweeps must be between 0 and " +
-                                               std::to_string(kMaxCurvatureSweeps));
-  if (s.final_relaxation_rounds < 0 || s.final_relaxation_rounds > 100)
-    throw SettingError("final_relaxation_rounds",
-                       "remesh: the final relaxation rounds must be between 0 and 100");
-  if (s.iterations < 0 || s.iterations > 100)
-    throw SettingError("remesh_iterations", "remesh: iterations must be between 0 and 100");
+  s.cleanup.validate();
 }
 
 }  // namespace isopatch

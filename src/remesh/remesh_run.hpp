@@ -16,12 +16,13 @@
 #include <vector>
 
 #include "core/stage_timer.hpp"
+#include "core/triangle_angle.hpp"
 #include "remesh/box_boundary.hpp"
 #include "remesh/editable_mesh.hpp"
+#include "remesh/remesh_presets.hpp"
 #include "remesh/remesh_thresholds.hpp"
 #include "remesh/size_field.hpp"
 #include "remesh/slot_renumbering.hpp"
-#include "remesh/triangle_angle.hpp"
 #include "surface/project_point.hpp"
 #include "surface/sampler.hpp"
 
@@ -38,6 +39,7 @@ class RemeshRun {
       : f(surface),
         mesh(editable),
         settings(run_settings),
+        effort(cleanup_effort(run_settings.cleanup)),
         sizes(surface, run_settings),
         tolerance(projection_tolerance) {}
 
@@ -125,7 +127,7 @@ class RemeshRun {
   /// local run, or else).
   double collapse_factor() const {
     if (settings.sizes.max_error) return kErrorCollapseFactor;
-    return settings.local_only ? kLocalCollapseFactor : kCollapseFactor;
+    return effort.local_only ? kLocalCollapseFactor : kCollapseFactor;
   }
 
   /// The axis of the box face along which boundary vertex v may slide, or -1 (box_boundary.hpp).
@@ -158,9 +160,11 @@ class RemeshRun {
   std::vector<int> slide_axes;    ///< per vertex slot at the start; empty without a box
   std::vector<int> slide_planes;  ///< per vertex slot at the start; -1 off the region's planes
   std::vector<CutPlane> planes;   ///< the region's planes (unit normals), set by find_sliding_vertices
+  std::vector<std::uint32_t> near_defects;  ///< a local run's vertices near its defects, relaxed alone
   Sampler f;
   EditableMesh& mesh;
   const RemeshSettings& settings;
+  const CleanupEffort effort;  ///< what settings.cleanup asks for, its preset applied
   SizeField sizes;
   double tolerance;
   RemeshStats stats;

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "remesh/cleanup_flips.hpp"
 #include "remesh/edge_edits.hpp"
@@ -22,7 +23,7 @@ std::size_t repair_small_angles(RemeshRun& run) {
     const Triangle tri = run.mesh.triangles[t];
     if (run.smallest_angle_cosine(tri) <= run.cos_repair) continue;
     int longest = 0, shortest = 0;
-    double lmax = -1.0, lmin = INFINITY;
+    double lmax = -1.0, lmin = std::numeric_limits<double>::infinity();
     for (int i = 0; i < 3; ++i) {
       const double l =
           run.length(tri[static_cast<std::size_t>(i)], tri[static_cast<std::size_t>((i + 1) % 3)]);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace isopatch {
@@ -27,7 +28,8 @@ std::uint64_t z_order_key(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 std::vector<std::uint32_t> z_order(const std::vector<Vec3>& points, const std::vector<bool>& keep) {
   const auto kept = [&](std::size_t i) { return keep.empty() || keep[i]; };
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()),
+       hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < points.size(); ++i)
     if (kept(i)) lo = lo.cwiseMin(points[i]), hi = hi.cwiseMax(points[i]);
   constexpr double kSteps = 2097151.0;  // 2^21 - 1

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -133,6 +134,15 @@ TEST(CompositeCli, HonoursARegionAFrameAndTheBase) {
   EXPECT_EQ(coons.positions, automatic.positions);
   EXPECT_NE(bary.positions, coons.positions);
   EXPECT_TRUE(analyze_topology(bary).watertight());
+  // The octree's settings mean nothing along the curves: refused, naming the flag, no file written.
+  const auto refused = dir / "refused.ply";
+  const auto r = test::run_command(
+      kCli + " mesh " + kExamples + "cube.ipatch -q --max-depth 5 -o " + refused.string(), dir);
+  EXPECT_EQ(r.exit_code, cli::exit_code(ErrorKind::InvalidArgument)) << r.err;
+  EXPECT_NE(r.err.find("--max-depth"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(refused));
+  // Through the partition (a frame) the octree reads them.
+  EXPECT_TRUE(analyze_topology(mesh("framed_depth", "--frame 30,20,10 --max-depth 7")).watertight());
 }
 
 TEST(CompositeCli, RefusesBadFilesWithOneLineAndAnExitCode) {

@@ -1,7 +1,9 @@
 // The composite path reads every setting that applies to it: a region, a frame and given cells mesh the
 // piecewise function through the partition (clipped, rotated, over the caller's cells), and the base
-// chooses the Coons patch over the curves or the barycentric combination of the corners.
+// chooses the Coons patch over the curves or the barycentric combination of the corners; the octree's
+// settings are refused along the curves, where they mean nothing.
 #include <isopatch/composite_mesh.hpp>
+#include <isopatch/error.hpp>
 #include <isopatch/metrics.hpp>
 #include <isopatch/topology.hpp>
 
@@ -9,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "test_composites.hpp"
 
@@ -106,6 +109,37 @@ TEST(CompositeSettings, TheBaseIsCoonsByDefaultOrBarycentricWhenAsked) {
   expect_on_sphere(bary);
   EXPECT_TRUE(analyze_topology(bary).watertight());
   EXPECT_EQ(bary_stats.projection->fallback_cells, 0u);
+}
+
+TEST(CompositeSettings, OctreeSettingsAreRefusedAlongTheCurvesAndReadThroughThePartition) {
+  const CompositeModel model(test::cube_sphere());
+  const auto refused_field = [&](const Settings& s) -> std::string {
+    try {
+      mesh_composite(model, s);
+    } catch (const SettingError& e) {
+      return e.setting();
+    }
+    return "";
+  };
+  Settings s = base_settings();
+  s.max_depth = 6;
+  EXPECT_EQ(refused_field(s), "max_depth");
+  s = base_settings();
+  s.min_depth = 3;
+  EXPECT_EQ(refused_field(s), "min_depth");
+  s = base_settings();
+  s.max_cell_curvature = 0.0;
+  EXPECT_EQ(refused_field(s), "max_cell_curvature");
+  s = base_settings();
+  s.refine_around = {Vec3(1, 1, 1)};
+  EXPECT_EQ(refused_field(s), "refine_around");
+  // Through the partition the octree reads them: a shallower octree limit still meshes the sphere.
+  s = base_settings();
+  s.max_depth = 6;
+  s.frame = Frame{0.3, 0.2, 0.1};
+  const Mesh through = mesh_composite(model, s);
+  expect_on_sphere(through);
+  EXPECT_TRUE(analyze_topology(through).watertight());
 }
 
 }  // namespace

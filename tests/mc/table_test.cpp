@@ -1,8 +1,8 @@
 // The generated marching cubes table, checked case by case against the properties that make the
 // mesher watertight, manifold and outward oriented.
-#include "mc/marching_cube.hpp"
-
 #include <isopatch/marching_cubes.hpp>
+
+#include "core/cube_numbering.hpp"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>
@@ -16,9 +16,9 @@
 namespace isopatch {
 namespace {
 
-using mc::kCorner;
-using mc::kEdge;
-using mc::kFace;
+using cube::kCorner;
+using cube::kEdge;
+using cube::kFace;
 
 Vec3 corner_point(int c) {
   return Vec3(kCorner[c][0], kCorner[c][1], kCorner[c][2]);
@@ -30,11 +30,12 @@ Vec3 midpoint(int e) {
 // From the negative to the non-negative end of a crossed edge.
 Vec3 negative_to_positive(int case_index, int e) {
   const int a = kEdge[e][0], b = kEdge[e][1];
-  return mc::negative(case_index, a) ? corner_point(b) - corner_point(a) : corner_point(a) - corner_point(b);
+  return cube::negative(case_index, a) ? corner_point(b) - corner_point(a)
+                                       : corner_point(a) - corner_point(b);
 }
 
-bool on_face(int e, const mc::CubeFace& face) {
-  const auto& c = face.corners;
+bool on_face(int e, int f) {
+  const auto& c = kFace[f];
   return std::count(c.begin(), c.end(), kEdge[e][0]) == 1 && std::count(c.begin(), c.end(), kEdge[e][1]) == 1;
 }
 
@@ -46,12 +47,12 @@ std::map<std::pair<int, int>, int> directed_edges(const McCase& c) {
   return edges;
 }
 
-// The directed boundary segments of a case lying on `face`.
-std::set<std::pair<int, int>> face_segments(int case_index, const mc::CubeFace& face) {
+// The directed boundary segments of a case lying on face f.
+std::set<std::pair<int, int>> face_segments(int case_index, int f) {
   const auto edges = directed_edges(marching_cubes_table()[case_index]);
   std::set<std::pair<int, int>> segments;
   for (const auto& [e, count] : edges)
-    if (edges.count({e.second, e.first}) == 0 && on_face(e.first, face) && on_face(e.second, face))
+    if (edges.count({e.second, e.first}) == 0 && on_face(e.first, f) && on_face(e.second, f))
       segments.insert(e);
   return segments;
 }
@@ -88,14 +89,13 @@ int sign_components(int case_index, bool negative_side) {
   std::array<int, 8> label{};
   label.fill(-1);
   int count = 0;
-  auto same = [&](int c) { return mc::negative(case_index, c) == negative_side; };
+  auto same = [&](int c) { return cube::negative(case_index, c) == negative_side; };
   auto linked = [&](int a, int b) {
-    if (mc::edge_between(a, b) >= 0) return true;
+    if (cube::edge_between(a, b) >= 0) return true;
     if (negative_side) return false;
-    for (const mc::CubeFace& f : kFace)
+    for (const auto& corners : kFace)
       for (int k = 0; k < 2; ++k)
-        if ((f.corners[k] == a && f.corners[k + 2] == b) || (f.corners[k] == b && f.corners[k + 2] == a))
-          return true;
+        if ((corners[k] == a && corners[k + 2] == b) || (corners[k] == b && corners[k + 2] == a)) return true;
     return false;
   };
   for (int s = 0; s < 8; ++s) {
@@ -131,12 +131,12 @@ TEST(McTable, VerticesAreExactlyTheCrossedEdges) {
       EXPECT_TRUE(t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) << "case " << c;
       for (int e : t) {
         ASSERT_TRUE(e >= 0 && e < 12);
-        EXPECT_TRUE(mc::crossed(c, e)) << "case " << c << " uses uncrossed edge " << e;
+        EXPECT_TRUE(cube::crossed(c, e)) << "case " << c << " uses uncrossed edge " << e;
         used.insert(e);
       }
     }
     for (int e = 0; e < 12; ++e)
-      EXPECT_EQ(used.count(e), mc::crossed(c, e) ? 1u : 0u) << "case " << c << " edge " << e;
+      EXPECT_EQ(used.count(e), cube::crossed(c, e) ? 1u : 0u) << "case " << c << " edge " << e;
   }
 }
 
@@ -145,9 +145,9 @@ TEST(McTable, EachCaseIsAnOrientedSurfaceBoundedOnTheCubeFaces) {
     for (const auto& [e, count] : directed_edges(marching_cubes_table()[c])) {
       EXPECT_EQ(count, 1) << "case " << c << ": edge traversed twice the same way";
       if (directed_edges(marching_cubes_table()[c]).count({e.second, e.first}) != 0) continue;
-      const bool on_some_face = std::any_of(kFace.begin(), kFace.end(), [&](const auto& f) {
-        return on_face(e.first, f) && on_face(e.second, f);
-      });
+      bool on_some_face = false;
+      for (int f = 0; f < 6; ++f)
+        on_some_face = on_some_face || (on_face(e.first, f) && on_face(e.second, f));
       EXPECT_TRUE(on_some_face) << "case " << c << ": boundary edge " << e.first << "-" << e.second
                                 << " inside the cube";
     }
@@ -199,30 +199,32 @@ TEST(McTable, NeighboursAgreeOnEverySharedFace) {
   // The cube across face f sees the same four corners on its opposite face f'. Whatever its other
   // corners are, it must put the same segments there, traversed the other way.
   for (int f = 0; f < 6; ++f) {
-    const mc::CubeFace& face = kFace[f];
-    const mc::CubeFace& opposite = kFace[f ^ 1];
-    ASSERT_EQ(opposite.axis, face.axis);
+    const int axis = cube::kFaceAxis[f];
+    const auto& face = kFace[f];
+    const auto& opposite = kFace[f ^ 1];
+    ASSERT_EQ(cube::kFaceAxis[f ^ 1], axis);
+    ASSERT_NE(cube::kFaceSide[f ^ 1], cube::kFaceSide[f]);
     // Corner of `face` -> corner of the neighbour (same position, moved across the axis).
     std::array<int, 8> across{};
     across.fill(-1);
-    for (int c : face.corners)
-      for (int d : opposite.corners) {
+    for (int c : face)
+      for (int d : opposite) {
         bool same = true;
         for (int a = 0; a < 3; ++a)
-          if (a != face.axis && kCorner[c][a] != kCorner[d][a]) same = false;
+          if (a != axis && kCorner[c][a] != kCorner[d][a]) same = false;
         if (same) across[c] = d;
       }
-    auto edge_across = [&](int e) { return mc::edge_between(across[kEdge[e][0]], across[kEdge[e][1]]); };
+    auto edge_across = [&](int e) { return cube::edge_between(across[kEdge[e][0]], across[kEdge[e][1]]); };
     for (int c = 0; c < 256; ++c) {
       std::set<std::pair<int, int>> expected;
-      for (const auto& [a, b] : face_segments(c, face)) expected.insert({edge_across(b), edge_across(a)});
+      for (const auto& [a, b] : face_segments(c, f)) expected.insert({edge_across(b), edge_across(a)});
       for (int others = 0; others < 16; ++others) {
         int neighbour = 0;
-        for (int c0 : face.corners)
-          if (mc::negative(c, c0)) neighbour |= 1 << across[c0];
+        for (int c0 : face)
+          if (cube::negative(c, c0)) neighbour |= 1 << across[c0];
         for (int k = 0; k < 4; ++k)
-          if ((others >> k) & 1) neighbour |= 1 << face.corners[k];  // its far corners sit where face is
-        EXPECT_EQ(face_segments(neighbour, opposite), expected) << "face " << f << " case " << c;
+          if ((others >> k) & 1) neighbour |= 1 << face[k];  // its far corners sit where face is
+        EXPECT_EQ(face_segments(neighbour, f ^ 1), expected) << "face " << f << " case " << c;
       }
     }
   }
@@ -230,14 +232,14 @@ TEST(McTable, NeighboursAgreeOnEverySharedFace) {
 
 TEST(McTable, ComplementReversesUnambiguousFaces) {
   for (int c = 0; c < 256; ++c)
-    for (const mc::CubeFace& face : kFace) {
+    for (int f = 0; f < 6; ++f) {
       int crossed = 0;
-      for (int k = 0; k < 4; ++k)
-        if (mc::crossed(c, mc::edge_between(face.corners[k], face.corners[(k + 1) % 4]))) ++crossed;
+      for (int e : cube::kFaceEdge[f])
+        if (cube::crossed(c, e)) ++crossed;
       if (crossed == 4) continue;  // ambiguous: the rule separates the negative corners, not symmetric
       std::set<std::pair<int, int>> reversed;
-      for (const auto& [a, b] : face_segments(c, face)) reversed.insert({b, a});
-      EXPECT_EQ(face_segments(255 ^ c, face), reversed) << "case " << c;
+      for (const auto& [a, b] : face_segments(c, f)) reversed.insert({b, a});
+      EXPECT_EQ(face_segments(255 ^ c, f), reversed) << "case " << c;
     }
 }
 
@@ -251,6 +253,21 @@ TEST(McTable, OneCornerCaseIsOneTriangle) {
   EXPECT_EQ(patches(marching_cubes_table()[(1 << 0) | (1 << 2)]).size(), 2u);
   // Its complement joins the two positive corners through the face: one band of four triangles.
   EXPECT_EQ(patches(marching_cubes_table()[255 ^ ((1 << 0) | (1 << 2))]).size(), 1u);
+}
+
+TEST(McTable, AFlatSquareIsCutFromCornerZerosVerticalEdge) {
+  // Cases 15 and 240 cross the four vertical edges: a planar square, where both diagonals are equally
+  // good. The loop starts at the vertical edge of corner 0 (the table's loop order), so both triangles
+  // share that edge and the edge of the opposite corner 2.
+  const int from_corner_0 = cube::edge_between(0, 4), from_corner_2 = cube::edge_between(2, 6);
+  for (const int c : {15, 240}) {
+    const McCase& square = marching_cubes_table()[c];
+    ASSERT_EQ(square.triangles.size(), 2u) << c;
+    for (const auto& t : square.triangles) {
+      EXPECT_EQ(std::count(t.begin(), t.end(), from_corner_0), 1) << c;
+      EXPECT_EQ(std::count(t.begin(), t.end(), from_corner_2), 1) << c;
+    }
+  }
 }
 
 }  // namespace

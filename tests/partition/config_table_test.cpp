@@ -1,6 +1,7 @@
 // The generated configuration table (docs/algorithms.md 2.5) and the face-by-face linking it rests on.
 #include "partition/config_table.hpp"
-#include "partition/cell_cube.hpp"
+
+#include "core/cube_numbering.hpp"
 #include "partition/cube_cycles.hpp"
 
 #include <isopatch/geometry.hpp>
@@ -30,7 +31,7 @@ Vec3 edge_midpoint(int e) {
 TEST(CubeNumbering, FacesAreCounterClockwiseFromOutside) {
   for (int f = 0; f < 6; ++f) {
     Vec3 outward = Vec3::Zero();
-    outward[cube::kFaceAxis[f]] = cube::kFaceSide[f] == 1 ? 1.0 : -1.0;
+    outward[cube::kFaceAxis[f]] = cube::face_outward_sign(f);
     Vec3 newell = Vec3::Zero();
     for (int k = 0; k < 4; ++k) {
       const Vec3 p = corner_position(cube::kFace[f][k]);
@@ -39,7 +40,28 @@ TEST(CubeNumbering, FacesAreCounterClockwiseFromOutside) {
     }
     EXPECT_GT(newell.dot(outward), 0.0) << "face " << f;
     for (int k = 0; k < 4; ++k) EXPECT_GE(cube::kFaceEdge[f][k], 0) << "face " << f;
+    EXPECT_EQ(cube::kFaceAxis[f ^ 1], cube::kFaceAxis[f]) << "face " << f;  // f ^ 1 is the opposite face
+    EXPECT_NE(cube::kFaceSide[f ^ 1], cube::kFaceSide[f]) << "face " << f;
   }
+}
+
+TEST(CubeNumbering, EdgesJoinNeighbourCornersAlongOneAxis) {
+  for (int e = 0; e < 12; ++e) {
+    const int axis = cube::edge_axis(e);
+    ASSERT_GE(axis, 0) << "edge " << e;
+    EXPECT_EQ(cube::edge_between(cube::kEdge[e][0], cube::kEdge[e][1]), e);
+    EXPECT_EQ(cube::kCorner[cube::edge_lower_corner(e)][axis], 0) << "edge " << e;
+    for (int a = 0; a < 3; ++a) {
+      if (a == axis) continue;
+      EXPECT_EQ(cube::kCorner[cube::kEdge[e][0]][a], cube::kCorner[cube::kEdge[e][1]][a]) << "edge " << e;
+    }
+  }
+  EXPECT_EQ(cube::edge_between(0, 6), -1);
+  const int case_index = (1 << 0) | (1 << 4);  // corners 0 and 4 negative: edge 10 (0-4) is not crossed
+  EXPECT_TRUE(cube::negative(case_index, 4));
+  EXPECT_FALSE(cube::negative(case_index, 5));
+  EXPECT_FALSE(cube::crossed(case_index, 10));
+  EXPECT_TRUE(cube::crossed(case_index, 0));
 }
 
 TEST(ConfigTable, CountsMatchTheEnumeration) {

@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/triangle_angle.hpp"
 #include "remesh/editable_mesh.hpp"
 #include "remesh/laplacian_exactness.hpp"
-#include "remesh/triangle_angle.hpp"
 
 namespace isopatch {
 namespace {

@@ -139,7 +139,7 @@ struct ViewServer::Impl {
       res.set_content(encode_mesh(mesh->mesh, MeshFormat::PlyBinary), "application/octet-stream");
   }
 
-  void handle_static(const httplib::Request& req, httplib::Response& res) {
+  void handle_static(const httplib::Request& req, httplib::Response& res) const {
     const std::optional<std::filesystem::path> file = resolve_static(mounts, req.path);
     if (!file) {
       res.status = 404;
@@ -175,9 +175,10 @@ struct ViewServer::Impl {
                [this](const httplib::Request& req, httplib::Response& res) { handle_download(req, res); });
     server.Get(".*",
                [this](const httplib::Request& req, httplib::Response& res) { handle_static(req, res); });
-    server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
-      send_json(res, 500, {{"error", "internal error"}, {"kind", "internal"}});
-    });
+    server.set_exception_handler(
+        [](const httplib::Request&, httplib::Response& res, const std::exception_ptr&) {
+          send_json(res, 500, {{"error", "internal error"}, {"kind", "internal"}});
+        });
   }
 };
 

@@ -1,9 +1,11 @@
 #pragma once
-// The smallest interior angle of a triangle, shared by the remesher's checks.
+// The smallest interior angle of a triangle: one definition for the clean-up's checks, the refinement,
+// the raw-defect statistics and the composite analysis.
 
 #include <isopatch/geometry.hpp>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <utility>
 
@@ -14,7 +16,7 @@ namespace isopatch {
 inline std::pair<Vec3, Vec3> smallest_angle_edges(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
   const Vec3 p[3] = {p0, p1, p2};
   int opposite_shortest = 0;  // vertex i is opposite edge (i+1, i+2)
-  double shortest = INFINITY;
+  double shortest = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {
     const double l = (p[(i + 2) % 3] - p[(i + 1) % 3]).squaredNorm();
     if (l < shortest) shortest = l, opposite_shortest = i;
