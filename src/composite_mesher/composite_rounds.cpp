@@ -23,6 +23,13 @@ ProjectedPatches project_patches(const Composite& c, const std::vector<std::uniq
   pieces.resize(patches);
   fan.assign(patches, false);
   std::size_t passes = 0;
+  // The rejected patches of the last pass closed by fans over their boundaries, as sampled.
+  const auto close = [&](const std::vector<std::size_t>& rejected) {
+    for (const std::size_t p : rejected) {
+      fan[p] = true;
+      pieces[p] = fan_patch(*samplers[p], c.patches[p], boundary_of(c.patches[p], sampling, curves), params);
+    }
+  };
   // One pass: every patch projected in parallel (close_rejected: the rejected ones fanned instead).
   const auto pass = [&](bool close_rejected) {
     sampling = sample_curves(c, curves);
@@ -39,11 +46,7 @@ ProjectedPatches project_patches(const Composite& c, const std::vector<std::uniq
     if (settings.progress)
       settings.progress({++passes, static_cast<std::size_t>(settings.refinement_levels + 1)});
     if (close_rejected) {
-      for (const std::size_t p : rejected) {
-        fan[p] = true;
-        pieces[p] =
-            fan_patch(*samplers[p], c.patches[p], boundary_of(c.patches[p], sampling, curves), params);
-      }
+      close(rejected);
       rejected.clear();
     }
     return rejected;
@@ -59,8 +62,8 @@ ProjectedPatches project_patches(const Composite& c, const std::vector<std::uniq
         }
     return refined;
   };
-  ps.refinements =
-      refine_until_accepted(settings.refinement_levels, pass, refine, [&] { settings.check_cancel(); });
+  ps.refinements = refine_until_accepted(settings.refinement_levels, pass, refine, close,
+                                         [&] { settings.check_cancel(); });
 
   return out;
 }

@@ -144,7 +144,13 @@ Mesh mesh_refining(const Surface& surface, Partitioner& partitioner, const Octre
     ++rounds;
     return true;
   };
-  refine_until_accepted(kMaxRounds, pass, refine, [&] { budget.check_cancel(); });
+  // The octree always splits (refine never returns false), and its mesher closes cells only in a whole
+  // pass: close re-runs one.
+  const auto close = [&](const std::vector<std::size_t>&) {
+    budget.check_cancel();
+    pass(true);
+  };
+  refine_until_accepted(kMaxRounds, pass, refine, close, [&] { budget.check_cancel(); });
   const DoubtfulCells doubtful = [&] {
     const StageTimer timer(times, "checks");
     return doubtful_cells(*partition, partitioner, f);
