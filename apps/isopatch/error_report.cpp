@@ -27,6 +27,8 @@ int exit_code(ErrorKind kind) {
       return 9;
     case ErrorKind::SingularSurface:
       return 10;
+    case ErrorKind::Crease:
+      return 11;
   }
   return 1;
 }
@@ -39,7 +41,7 @@ std::string flag_for_setting(const std::string& setting) {
       {"fair_iterations", "--fair"},
       {"remesh_iterations", "--remesh"},
   }};
-  static constexpr std::array<std::string_view, 30> kSameName{"box",
+  static constexpr std::array<std::string_view, 31> kSameName{"box",
                                                               "region",
                                                               "frame",
                                                               "colour",
@@ -53,6 +55,7 @@ std::string flag_for_setting(const std::string& setting) {
                                                               "max_cell_curvature",
                                                               "coordinates",
                                                               "base",
+                                                              "creases",
                                                               "max_ray_angle",
                                                               "grid",
                                                               "edge_root",

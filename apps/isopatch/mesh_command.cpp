@@ -59,6 +59,7 @@ struct MeshOptions {
   double max_cell_curvature = defaults.max_cell_curvature;
   std::string coordinates = "wachspress";
   std::string base = "auto";
+  std::string creases = "auto";
   double max_ray_angle = defaults.max_ray_angle;
   std::optional<int> remesh;
   int refine = defaults.refine;
@@ -128,6 +129,7 @@ int run_mesh(const MeshOptions& o) {
     settings.coordinates = Settings::Coordinates::MeanValue;
   else
     throw InputError("unknown --coordinates '" + o.coordinates + "' (want wachspress or mean-value)");
+  settings.creases = parse_creases(o.creases);
   if (o.base == "auto")
     settings.base = Settings::Base::Automatic;
   else if (o.base == "barycentric")
@@ -234,6 +236,11 @@ Runner add_mesh_command(CLI::App& app) {
          "--base", o->base,
          "Projection: auto | barycentric | coons (exact face curves, C0 Coons base); auto: barycentric in "
          "cells, coons on a composite's patches")
+      ->capture_default_str();
+  cmd->add_option(
+         "--creases", o->creases,
+         "Formulas: auto (one built with min, max or abs whose faces meet at creases is meshed along "
+         "its exact creases and corners) | off (meshed as a smooth surface)")
       ->capture_default_str();
   cmd->add_option("--max-ray-angle", o->max_ray_angle,
                   "Projection: acceptance angle between ray and gradient")

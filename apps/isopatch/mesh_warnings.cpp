@@ -24,6 +24,20 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
         "are closed by fans over their boundaries (%zu fan centres off the surface): their functions "
         "leave their regions or fold there\n",
         w.fan_patches, w.unprojected_fan_centres);
+  if (w.exempt_corners > 0)
+    std::fprintf(out,
+                 "warning: %zu corners of the shape's faces are sharper than 25 degrees: the triangles at "
+                 "those corners cannot reach the 25 degree floor\n",
+                 w.exempt_corners);
+  if (w.creases_leave_box > 0)
+    std::fprintf(out,
+                 "warning: creases of the shape leave the box: meshed as a smooth surface (creases rounded); "
+                 "a box that holds the whole shape meshes it along its creases\n");
+  if (w.tangential_contacts > 0)
+    std::fprintf(out,
+                 "warning: %zu places where two faces of the shape touch tangentially (no crease between "
+                 "them): meshed as the faces on either side\n",
+                 w.tangential_contacts);
   if (const auto& l = stats.local_sizes) {
     std::string where;
     if (l->sources > 0)

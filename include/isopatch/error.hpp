@@ -23,6 +23,7 @@ enum class ErrorKind {
   NoSurface,        ///< f = 0 does not cross the box
   Limit,            ///< a resource budget (evaluations, time, vertices) was exhausted or cancelled
   SingularSurface,  ///< grad f vanishes on f = 0 (a repeated factor, f = g^3): no gradient to mesh with
+  Crease,           ///< a CSG shape whose faces meet in a way that cannot be meshed (non-manifold, lost)
 };
 
 /// Base of all isopatch errors.
@@ -84,6 +85,13 @@ class NoSurfaceError : public Error {
 class SingularSurfaceError : public Error {
  public:
   explicit SingularSurfaceError(const std::string& message) : Error(ErrorKind::SingularSurface, message) {}
+};
+
+/// The faces of a CSG shape meet in a way no mesh can follow: two solids touching along an edge or at a
+/// point (not a 2-manifold), a sheet of zero thickness, a crease the tracer cannot follow.
+class CreaseError : public Error {
+ public:
+  explicit CreaseError(const std::string& message) : Error(ErrorKind::Crease, message) {}
 };
 
 /// A budget ran out or the run was cancelled; setting() names the budget ("max_evaluations",

@@ -136,6 +136,25 @@ struct MeshWarnings {
   /// their boundary, and the fan centres of those that no ray brought onto the patch's function.
   std::size_t fan_patches = 0;
   std::size_t unprojected_fan_centres = 0;
+  /// CSG shapes: corners of pieces sharper than the 25 degree angle floor (two faces or creases meet
+  /// at a smaller angle there), where triangles cannot reach the floor.
+  std::size_t exempt_corners = 0;
+  /// CSG shapes: places where two faces touch tangentially (no crease curve between them).
+  std::size_t tangential_contacts = 0;
+  /// CSG shapes: 1 when a crease leaves the box, so the shape was meshed as a smooth surface.
+  std::size_t creases_leave_box = 0;
+};
+
+/// What the crease analysis of a CSG shape found (Settings::creases, docs/creases.md).
+struct CreaseStats {
+  std::size_t faces = 0;         ///< smooth faces (the sides of a smooth blend count as one)
+  std::size_t creases = 0;       ///< crease curves traced
+  std::size_t corners = 0;       ///< points where three or more faces meet
+  std::size_t seams = 0;         ///< seams cutting faces into disc-like pieces
+  std::size_t pieces = 0;        ///< patches meshed
+  std::size_t smooth_pairs = 0;  ///< pairs of faces that meet without a crease (merged)
+  std::size_t repair_moves = 0;  ///< vertex moves of the last pass over small angles (seams, creases)
+  double seconds = 0.0;          ///< of the analysis
 };
 
 /// What multiresolution meshing did (RefineSettings): the level used and what its base was.
@@ -178,8 +197,10 @@ struct MeshStats {
   std::optional<MarchingCubesStats> marching_cubes;
   std::optional<FairingSummary> fairing;
   std::optional<RemeshStats> cleanup;
-  std::optional<RefineStats> refine;      ///< multiresolution meshing, when it ran
-  std::optional<LocalSizes> local_sizes;  ///< when sizes were refined at small features (cut, rims)
+  std::optional<RefineStats> refine;  ///< multiresolution meshing, when it ran
+  std::optional<LocalSizes> local_sizes;
+  std::optional<CreaseStats> creases;  ///< when the shape was meshed along its creases  ///< when sizes were
+                                       ///< refined at small features (cut, rims)
   MeshWarnings warnings;
   StageTimes times;  ///< wall time per stage
 };

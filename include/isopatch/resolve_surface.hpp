@@ -13,6 +13,8 @@
 
 namespace isopatch {
 
+class Expression;
+
 /// The surface f = 0 of a formula, with every Surface service: batch values, exact gradients and
 /// Hessians (forward mode), sound interval bounds of f and of its gradient.
 /// \param formula the formula text (definitions, `;` or new lines, `#` comments; README.md)
@@ -23,6 +25,10 @@ namespace isopatch {
 /// \throw InputError for an invalid box or a parameter that names no definition
 SurfacePtr expression_surface(const std::string& formula, const Box& box, std::string name = {},
                               const std::map<std::string, double>& params = {});
+
+/// The surface f = 0 of an already compiled expression (the same services as above).
+/// \throw InputError for an invalid box.
+SurfacePtr expression_surface(Expression expression, const Box& box, std::string name);
 
 /// The catalogue surface of that name, compiled from its formula, with its default box.
 /// \throw UnknownSurfaceError naming the closest entry: "unknown surface 'tours' (did you mean 'torus'?)"

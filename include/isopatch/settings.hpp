@@ -19,6 +19,15 @@ enum class Method {
 
 /// Every setting of every mesher: the stage settings (stage_settings.hpp), each read only by its
 /// stage, with the method and the region. Fields are reached directly (settings.edge_length).
+/// How formulas with creases (min, max, abs: CSG shapes) are meshed.
+enum class Creases {
+  Automatic,  ///< along their creases when a formula has real ones (docs/creases.md); else as smooth
+  Off,        ///< as a smooth surface (creases rounded off by the projection, as before)
+};
+
+/// "auto" or "off". \throw SettingError (setting "creases") otherwise.
+Creases parse_creases(const std::string& name);
+
 struct Settings : SizeSettings,
                   OctreeSettings,
                   PatchSettings,
@@ -28,6 +37,9 @@ struct Settings : SizeSettings,
                   RefineSettings,
                   BudgetSettings {
   Method method = Method::Projection;
+  /// Projection only, formulas only, without region, frame or cells: CSG shapes meshed along their
+  /// exact creases and corners (Automatic), or as smooth surfaces (Off).
+  Creases creases = Creases::Automatic;
   /// The region to mesh; the surface's default box when empty. Must be valid().
   std::optional<Box> box;
   /// Projection only. A convex polytope to mesh inside (inside the box when one is given; else instead

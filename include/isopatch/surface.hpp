@@ -19,6 +19,8 @@
 
 namespace isopatch {
 
+class Expression;
+
 class Surface {
  public:
   /// \param name  shown in summaries and errors
@@ -48,6 +50,10 @@ class Surface {
   /// Sound enclosures of f, its gradient and its Hessian over `box`, or nullopt (the default: only the
   /// singular-point search uses them, singular_points.hpp).
   virtual std::optional<IntervalHessian> hessian_bound(const Box& box) const;
+
+  /// The compiled formula behind this surface, or nullptr (callables, volumes, wrappers): what the
+  /// crease analysis of CSG shapes reads (src/csg).
+  virtual const Expression* expression() const { return nullptr; }
 
   const std::string& name() const { return name_; }
   const Box& box() const { return box_; }

@@ -7,6 +7,7 @@ Surfaces are formulas (``'x^2+y^2+z^2-1'``), catalogue names (``'torus'``), Pyth
 
 from ._api import catalogue, mesh, mesh_volume, read_volume
 from ._errors import (
+    CreaseError,
     Error,
     EvaluationError,
     InputError,
@@ -28,6 +29,7 @@ __all__ = [
     "read_volume",
     "catalogue",
     "Mesh",
+    "CreaseError",
     "Error",
     "EvaluationError",
     "InputError",

@@ -70,6 +70,7 @@ def mesh(
     max_evaluations: int = 0,
     time_limit: float = 0.0,
     uniform: bool = False,
+    creases: str = "auto",
     samples: Optional[int] = None,
     batch: int = 1 << 18,
 ) -> Mesh:
@@ -89,6 +90,9 @@ def mesh(
         even where the box cuts the surface in features narrower than an edge, or where the surface
         turns within an edge, as at a thin rim): the library's
         settings, as the command line's flags of the same names.
+    creases: formulas only. 'auto': a formula built with min, max or abs whose faces meet at real creases
+        (a CSG shape) is meshed along its exact creases and corners (docs/creases.md); 'off': meshed as a
+        smooth surface. Raises CreaseError for a shape no mesh can follow (solids touching along an edge).
     samples, batch: Python functions only. The function is called in batches of at most ``batch``
         points: first on a grid of ``samples`` cells along the box's longest side (default: two per
         target edge, 64..256), whose tricubic B-spline interpolant is meshed, then for a few batched
@@ -98,7 +102,7 @@ def mesh(
     Ctrl-C stops it with KeyboardInterrupt. Raises the isopatch exceptions (isopatch.Error and its
     subclasses) with the library's messages; an exception raised by the function propagates unchanged.
     """
-    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations"))
+    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations", "creases"))
     if isinstance(surface, str):
         if gradient is not None or samples is not None:
             raise InputError("gradient and samples are for Python functions, not formulas", "gradient")

@@ -69,6 +69,11 @@ class SingularSurfaceError(Error):
     """grad f vanishes on f = 0 (a repeated factor such as g**3): there is no gradient to mesh with."""
 
 
+class CreaseError(Error):
+    """The faces of a CSG shape meet in a way no mesh can follow (solids touching along an edge, a
+    sheet of zero thickness, a crease that cannot be traced)."""
+
+
 __all__ = [
     "Error",
     "InternalError",
@@ -81,4 +86,5 @@ __all__ = [
     "NoSurfaceError",
     "LimitError",
     "SingularSurfaceError",
+    "CreaseError",
 ]

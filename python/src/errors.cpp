@@ -31,6 +31,8 @@ const char* class_name(ErrorKind kind) {
       return "LimitError";
     case ErrorKind::SingularSurface:
       return "SingularSurfaceError";
+    case ErrorKind::Crease:
+      return "CreaseError";
   }
   return "InternalError";
 }

@@ -65,6 +65,8 @@ void set_option(Settings& s, const std::string& key, const py::handle& value) {
     s.time_limit = value.cast<double>();
   else if (key == "uniform")
     s.uniform = value.cast<bool>();
+  else if (key == "creases")
+    s.creases = parse_creases(value.cast<std::string>());
   else
     throw InputError("unknown setting '" + key + "'", key);
 }

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/crease_meshing.hpp"
 #include "api/multiresolution.hpp"
 #include "api/task_arena_run.hpp"
 #include "composite_mesher/composite_mesher.hpp"
@@ -94,6 +95,10 @@ Mesh mesh_composite(const CompositeModel& model, const Settings& settings, MeshS
   if (settings.method == Method::MarchingCubes || meshed_through_partition(settings))
     return mesh_surface(*model.surface(), settings, stats);
   refuse_octree_settings(settings);
+  return mesh_composite_along_curves(model, settings, stats);
+}
+
+Mesh mesh_composite_along_curves(const CompositeModel& model, const Settings& settings, MeshStats* stats) {
   return run_in_task_arena(settings, stats, [&] {
     std::optional<BudgetedComposite> budgeted;
     if (settings.max_evaluations > 0 || settings.time_limit > 0.0)

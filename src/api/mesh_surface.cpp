@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "api/crease_meshing.hpp"
 #include "api/curvature_feature_sizes.hpp"
 #include "api/cut_feature_sizes.hpp"
 #include "api/frame_meshing.hpp"
@@ -232,12 +233,17 @@ Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const 
 
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
   settings.validate();
-  return run_in_task_arena(settings, stats, [&] {
+  if (std::optional<Mesh> creased = mesh_along_creases(surface, settings, stats)) return std::move(*creased);
+  // Creases that left the box: the warning outlives the smooth path's statistics.
+  const bool creases_left_box = stats && stats->warnings.creases_leave_box > 0;
+  Mesh mesh = run_in_task_arena(settings, stats, [&] {
     if (settings.max_evaluations == 0 && settings.time_limit == 0.0)
       return dispatch(surface, settings, stats);
     const BudgetedSurface budgeted(surface, settings.max_evaluations, settings.time_limit);
     return dispatch(budgeted, settings, stats);
   });
+  if (creases_left_box) stats->warnings.creases_leave_box = 1;
+  return mesh;
 }
 
 Method parse_method(const std::string& name) {

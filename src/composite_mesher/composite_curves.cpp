@@ -28,14 +28,21 @@ CornerKey corner_key(const Vec3& p) {
 
 /// The segments a patch asks of one of its curves: the curve's length over the target size there on the
 /// patch's function (rounded, 1..kMaxPatchResolution), or the fixed resolution.
-int curve_segment_count(const ConicArc& arc, const Surface& surface, const TargetSizes& sizes,
-                        int resolution) {
-  const double length = arc_length(arc);
+int curve_segment_count(const Composite& c, std::size_t curve, const Surface& surface,
+                        const TargetSizes& sizes, int resolution) {
+  const double length = curve_length(c, curve);
   if (resolution > 0) return resolution;
   double h = sizes.largest;
-  if (sizes.varies())
-    for (int i = 0; i < kSizeSamples; ++i)
-      h = std::min(h, target_size(surface, sizes, arc.point(static_cast<double>(i) / (kSizeSamples - 1))));
+  if (sizes.varies()) {
+    if (curve < c.traced.size() && !c.traced[curve].points.empty()) {
+      for (const Vec3& p : sample_curve(c, curve, kSizeSamples - 1))
+        h = std::min(h, target_size(surface, sizes, p));
+    } else {
+      const ConicArc& arc = c.curves[curve];
+      for (int i = 0; i < kSizeSamples; ++i)
+        h = std::min(h, target_size(surface, sizes, arc.point(static_cast<double>(i) / (kSizeSamples - 1))));
+    }
+  }
   const double count = std::round(length / h);
   return static_cast<int>(std::clamp(count, 1.0, static_cast<double>(kMaxPatchResolution)));
 }
@@ -51,10 +58,10 @@ CurvePlan plan_curves(const Composite& c, const TargetSizes& sizes, int resoluti
   // With varying sizes each patch reads its own function's curvature.
   for (const CompositePatch& p : c.patches)
     for (const PatchSide& s : p.sides)
-      plan.segments[s.curve] = std::max(
-          plan.segments[s.curve], curve_segment_count(c.curves[s.curve], *p.surface, sizes, resolution));
+      plan.segments[s.curve] =
+          std::max(plan.segments[s.curve], curve_segment_count(c, s.curve, *p.surface, sizes, resolution));
   for (std::size_t i = 0; i < c.curves.size(); ++i)
-    plan.dense.push_back(plan.used[i] ? sample_arc(c.curves[i], kCoonsSegments) : std::vector<Vec3>{});
+    plan.dense.push_back(plan.used[i] ? sample_curve(c, i, kCoonsSegments) : std::vector<Vec3>{});
   return plan;
 }
 
@@ -76,7 +83,7 @@ CurveSampling sample_curves(const Composite& c, const CurvePlan& plan) {
   s.points.resize(c.curves.size());
   for (std::size_t i = 0; i < c.curves.size(); ++i) {
     if (!used[i]) continue;
-    s.points[i] = sample_arc(c.curves[i], segments[i]);
+    s.points[i] = sample_curve(c, i, segments[i]);
     s.ids[i].push_back(ends[i].first);
     for (std::size_t j = 1; j + 1 < s.points[i].size(); ++j) {
       s.ids[i].push_back(static_cast<std::uint32_t>(s.positions.size()));

@@ -78,7 +78,7 @@ refine::RefineResult refine_composite(const Composite& composite, const Composit
     if (it == by_edge.end()) return false;
     const CurveSegment& s = it->second;
     auto [at, fresh] = fine.try_emplace(s.curve);
-    if (fresh) at->second = sample_arc(composite.curves[s.curve], base.curve_segments[s.curve] * level);
+    if (fresh) at->second = sample_curve(composite, s.curve, base.curve_segments[s.curve] * level);
     const std::vector<Vec3>& samples = at->second;
     // Sample i * level + j lies j / level of the way along segment i, from sample i.
     for (int j = 1; j < level; ++j) {

@@ -7,12 +7,36 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
+#include <optional>
+
+#include "surface/curve_point.hpp"
 
 namespace isopatch {
 
 namespace {
 
 constexpr int kTable = 512;
+/// A traced curve's samples are put back on both functions to this share of the curve's length.
+constexpr double kTracedTolerance = 1e-13;
+
+const TracedCurve* traced_curve(const Composite& c, std::size_t i) {
+  if (i >= c.traced.size() || c.traced[i].points.empty()) return nullptr;
+  const TracedCurve& t = c.traced[i];
+  if (t.points.size() < 2 || !t.first || !t.second)
+    throw InputError("a traced boundary curve needs at least 2 points and both of its functions");
+  for (const Vec3& p : t.points)
+    if (!p.allFinite()) throw InputError("a traced boundary curve has a point that is not finite");
+  return &t;
+}
+
+/// Cumulative lengths along a polyline.
+std::vector<double> polyline_lengths(const std::vector<Vec3>& points) {
+  std::vector<double> s(points.size(), 0.0);
+  for (std::size_t k = 1; k < points.size(); ++k) s[k] = s[k - 1] + (points[k] - points[k - 1]).norm();
+  if (!(s.back() > 0.0)) throw InputError("a traced boundary curve has length 0");
+  return s;
+}
 
 /// Cumulative chord lengths at t = i / kTable.
 std::array<double, kTable + 1> length_table(const ConicArc& arc) {
@@ -59,6 +83,43 @@ std::vector<Vec3> sample_arc(const ConicArc& arc, int segments) {
 std::vector<Vec3> side_samples(const ConicArc& arc, bool reversed, int segments) {
   std::vector<Vec3> points = sample_arc(arc, segments);
   if (reversed) std::reverse(points.begin(), points.end());
+  return points;
+}
+
+}  // namespace isopatch
+
+namespace isopatch {
+
+double curve_length(const Composite& c, std::size_t i) {
+  if (const TracedCurve* t = traced_curve(c, i)) return polyline_lengths(t->points).back();
+  return arc_length(c.curves[i]);
+}
+
+std::vector<Vec3> sample_curve(const Composite& c, std::size_t i, int segments) {
+  const TracedCurve* t = traced_curve(c, i);
+  if (!t) return sample_arc(c.curves[i], segments);
+  const std::vector<double> s = polyline_lengths(t->points);
+  const double length = s.back();
+  CurvePointParams params;
+  params.tolerance = kTracedTolerance * length;
+  std::vector<Vec3> points;
+  points.reserve(static_cast<std::size_t>(segments) + 1);
+  points.push_back(t->points.front());
+  for (int k = 1; k < segments; ++k) {
+    const double at = length * k / segments;
+    const auto it = std::upper_bound(s.begin(), s.end(), at);
+    const auto j = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(it - s.begin(), 1, std::ssize(s) - 1));
+    const double u = s[j] > s[j - 1] ? (at - s[j - 1]) / (s[j] - s[j - 1]) : 0.0;
+    const Vec3 guess = (1.0 - u) * t->points[j - 1] + u * t->points[j];
+    // A point of the chord lies within the chord's length of the curve (its sag is far less).
+    params.max_step = std::max(length / segments, s[j] - s[j - 1]);
+    params.max_travel = params.max_step;
+    const std::optional<Vec3> p = settle_on_curve(*t->first, *t->second, guess, params);
+    if (!p)
+      throw EvaluationError("a sample of a traced curve could not be put back on both of its functions");
+    points.push_back(*p);
+  }
+  points.push_back(t->points.back());
   return points;
 }
 

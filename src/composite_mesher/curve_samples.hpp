@@ -7,6 +7,7 @@
 
 #include <isopatch/geometry.hpp>
 
+#include <cstddef>
 #include <vector>
 
 #include "composite_model/composite.hpp"
@@ -23,6 +24,17 @@ double arc_length(const ConicArc& arc);
 /// conic (and on the functions of the patches whose side it is) to rounding.
 /// \pre segments >= 1. \throw InputError as arc_length().
 std::vector<Vec3> sample_arc(const ConicArc& arc, int segments);
+
+/// The length of curve i of the composite: its traced polyline's when it is traced, else its arc's.
+/// \throw InputError as arc_length(), or for a traced curve of fewer than 2 finite points or length 0.
+double curve_length(const Composite& c, std::size_t i);
+
+/// segments + 1 points on curve i from its start to its end: sample_arc() of its arc, or for a traced
+/// curve points at equal arc length along its polyline, each put back on both of its functions
+/// (surface/curve_point.hpp; the ends are the polyline's ends exactly).
+/// \throw InputError as curve_length(); EvaluationError when a sample cannot be put back on both
+///        functions (the polyline is too coarse for the curve, or the functions touch there).
+std::vector<Vec3> sample_curve(const Composite& c, std::size_t i, int segments);
 
 /// The samples of a side: sample_arc() of its curve, in the side's direction.
 std::vector<Vec3> side_samples(const ConicArc& arc, bool reversed, int segments);

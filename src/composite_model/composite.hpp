@@ -37,6 +37,15 @@ struct ConicArc {
   Vec3 point(double t) const;
 };
 
+/// A curve known as the meeting of two smooth functions (a crease or a seam of a CSG shape, src/csg):
+/// a dense polyline on it from its start to its end, and the two functions. The mesher samples it by
+/// arc length along the polyline and puts every sample back on both functions (surface/curve_point.hpp).
+struct TracedCurve {
+  std::vector<Vec3> points;  ///< >= 2 points on first = second = 0; front() and back() are its ends
+  SurfacePtr first;          ///< one function the curve lies on
+  SurfacePtr second;         ///< the other
+};
+
 /// One side of a patch: a curve of the composite, traversed from its start to its end or reversed.
 struct PatchSide {
   std::uint32_t curve = 0;  ///< index into Composite::curves
@@ -61,6 +70,9 @@ struct Composite {
   std::string name;
   Box box;  ///< bounds of the solid, grown by a margin: the box meshers and renderers use
   std::vector<ConicArc> curves;
+  /// Empty, or one per curve: a curve whose entry has points is that traced curve (its arc then holds
+  /// the same ends and is not read for the curve's shape).
+  std::vector<TracedCurve> traced;
   std::vector<CompositePatch> patches;
 };
 

@@ -117,8 +117,24 @@ void visit_stats(
     for (int a = 0; a < 3; ++a) v(std::string("extent_lo_") + "xyz"[a], l -> extent.lo[a]);
     for (int a = 0; a < 3; ++a) v(std::string("extent_hi_") + "xyz"[a], l -> extent.hi[a]);
   }
+  if (const auto& c = stats.creases) {
+    const auto v = [&](std::string_view name, double value) { visit("creases", name, value); };
+    v("faces", count(c->faces));
+    v("creases", count(c->creases));
+    v("corners", count(c->corners));
+    v("seams", count(c->seams));
+    v("pieces", count(c->pieces));
+    v("smooth_pairs", count(c->smooth_pairs));
+    v("repair_moves", count(c->repair_moves));
+    v("seconds", c->seconds);
+  }
   const MeshWarnings& w = stats.warnings;
   const auto v = [&](std::string_view name, double value) { visit("warnings", name, value); };
+  if (stats.creases) {
+    v("exempt_corners", count(w.exempt_corners));
+    v("tangential_contacts", count(w.tangential_contacts));
+  }
+  if (w.creases_leave_box > 0) v("creases_leave_box", count(w.creases_leave_box));
   if (stats.projection) {
     v("doubtful_cells", count(w.doubtful_cells));
     v("doubtful_topology_cells", count(w.doubtful_topology_cells));

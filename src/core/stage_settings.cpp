@@ -115,6 +115,12 @@ void RefineSettings::validate() const {
     throw SettingError("refine", "must be 0.." + std::to_string(kMaxRefineLevel) + " (0: automatic, 1: off)");
 }
 
+Creases parse_creases(const std::string& name) {
+  if (name == "auto") return Creases::Automatic;
+  if (name == "off") return Creases::Off;
+  throw SettingError("creases", "unknown creases '" + name + "' (want auto or off)");
+}
+
 void Settings::validate() const {
   SizeSettings::validate();
   OctreeSettings::validate();

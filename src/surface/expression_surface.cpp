@@ -27,6 +27,7 @@ class ExpressionSurface final : public Surface {
   std::optional<IntervalHessian> hessian_bound(const Box& box) const override {
     return expression_.hessian_bound(box);
   }
+  const Expression* expression() const override { return &expression_; }
 
  private:
   Expression expression_;
@@ -45,6 +46,11 @@ std::string default_name(const std::string& formula) {
 }
 
 }  // namespace
+
+SurfacePtr expression_surface(Expression expression, const Box& box, std::string name) {
+  if (!box.valid()) throw InputError("bad box " + format_box(box) + ": need finite lo < hi on every axis");
+  return std::make_shared<ExpressionSurface>(std::move(expression), box, std::move(name));
+}
 
 SurfacePtr expression_surface(const std::string& formula, const Box& box, std::string name,
                               const std::map<std::string, double>& params) {

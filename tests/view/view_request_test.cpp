@@ -20,7 +20,7 @@ std::string setting_of(const std::string& body) {
 TEST(ViewRequest, ReadsEveryMember) {
   const MeshRequest r = parse_mesh_request(
       R"({"surface": "x^2+y^2+z^2-1", "box": [-2, -2, -2, 2, 2, 2], "edge_length": 0.1, "max_error": 0.001,
-          "quality": "fine", "method": "mc", "remesh": 0, "threads": 1, "time_limit": 5, "max_vertices": 1000})");
+          "quality": "fine", "method": "mc", "creases": "off", "remesh": 0, "threads": 1, "time_limit": 5, "max_vertices": 1000})");
   EXPECT_EQ(r.surface, "x^2+y^2+z^2-1");
   ASSERT_TRUE(r.settings.box.has_value());
   EXPECT_EQ(r.settings.box->lo, Vec3(-2, -2, -2));
@@ -29,6 +29,10 @@ TEST(ViewRequest, ReadsEveryMember) {
   EXPECT_EQ(r.settings.max_error, 0.001);
   EXPECT_EQ(r.settings.quality, Quality::Fine);
   EXPECT_EQ(r.settings.method, Method::MarchingCubes);
+  EXPECT_EQ(r.settings.creases, Creases::Off);
+  EXPECT_EQ(parse_mesh_request(R"({"surface": "torus"})").settings.creases, Creases::Automatic);
+  EXPECT_THROW(parse_mesh_request(R"({"surface": "torus", "creases": "sharp"})"), InputError);
+  EXPECT_THROW(parse_mesh_request(R"({"surface": "torus", "creases": 1})"), InputError);
   EXPECT_EQ(r.settings.remesh_iterations, 0);
   EXPECT_EQ(r.settings.threads, 1);
   EXPECT_EQ(r.settings.time_limit, 5.0);

@@ -119,6 +119,8 @@ function showStats(s) {
     ['valence 6', s.valence_6 === null ? '-' : `${(100 * s.valence_6).toFixed(1)} %`],
     ['smallest angle', s.min_angle === null ? '-' : `${s.min_angle.toFixed(1)}\u00b0`],
   ];
+  // A formula with creases (min, max, abs) is meshed along them: say how many.
+  if (s.creases) rows.push(['creases', `${s.creases.creases} creases, ${s.creases.corners} corners, ${s.creases.faces} faces`]);
   $('stats').replaceChildren(...rows.map(([k, v]) => {
     const tr = document.createElement('tr');
     for (const text of [k, v]) tr.appendChild(document.createElement('td')).textContent = text;

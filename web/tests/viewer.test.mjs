@@ -124,6 +124,20 @@ test('typing a new formula re-meshes', async () => {
   assert.ok(p.foreground > 0.05 * p.total);
 });
 
+test('a formula with creases is meshed along them, and the page says so', async () => {
+  const before = await page.evaluate(() => window.isopatch.meshId);
+  await page.fill('#surface', 'max(max(abs(x), abs(y)), abs(z)) - 1');
+  await page.fill('#box', '-1.5, -1.5, -1.5, 1.5, 1.5, 1.5');
+  await page.click('#mesh-button');
+  await waitForMesh(before);
+  const s = await page.evaluate(() => window.isopatch.summary);
+  assert.deepEqual(s.creases && [s.creases.faces, s.creases.creases, s.creases.corners], [6, 12, 8]);
+  assert.ok(s.min_angle >= 25, `smallest angle ${s.min_angle}`);
+  assert.match(await page.locator('#stats').innerText(), /12 creases, 8 corners/);
+  const p = await pixels();
+  assert.ok(p.foreground > 0.05 * p.total);
+});
+
 test('a bad formula shows the error with its column, and the page lives on', async () => {
   const id = await page.evaluate(() => window.isopatch.meshId);
   await page.fill('#surface', 'x^2 + * y');

@@ -61,6 +61,9 @@ ViewMesh mesh_request(const MeshRequest& request, const std::atomic<bool>* cance
   s["box"] = {box.lo.x(), box.lo.y(), box.lo.z(), box.hi.x(), box.hi.y(), box.hi.z()};
   s["quality"] = quality_name(settings.quality);
   s["seconds"] = mesh_seconds;
+  if (const auto& c = stats.creases)
+    s["creases"] = {
+        {"faces", c->faces}, {"creases", c->creases}, {"corners", c->corners}, {"pieces", c->pieces}};
   finish(view, surface.get());
   s["total_seconds"] = seconds_since(start);
   return view;
@@ -85,8 +88,8 @@ ViewMesh view_mesh_file(Mesh mesh, const std::string& name, const Surface* surfa
 
 json error_json(const Error& error) {
   static constexpr const char* kKinds[] = {
-      "internal",   "invalid_argument", "unknown_surface", "parse",           "io",
-      "evaluation", "no_surface",       "limit",           "singular_surface"};
+      "internal", "invalid_argument", "unknown_surface", "parse", "io", "evaluation", "no_surface",
+      "limit",    "singular_surface", "crease"};
   json j;
   j["error"] = error.what();
   j["kind"] = kKinds[static_cast<int>(error.kind())];

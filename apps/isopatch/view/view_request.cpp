@@ -107,6 +107,9 @@ MeshRequest parse_mesh_request(std::string_view body, const RequestLimits& limit
         s.method = Method::MarchingCubes;
       else
         bad(key, "must be \"projection\" or \"mc\"");
+    } else if (key == "creases") {
+      if (value != "auto" && value != "off") bad(key, "must be \"auto\" or \"off\"");
+      s.creases = parse_creases(value.get<std::string>());
     } else if (key == "remesh") {
       s.remesh_iterations = static_cast<int>(count(value, key, 100));
     } else if (key == "threads") {
@@ -120,8 +123,8 @@ MeshRequest parse_mesh_request(std::string_view body, const RequestLimits& limit
           n == 0 || (limits.max_vertices != 0 && n > limits.max_vertices) ? limits.max_vertices : n;
     } else {
       bad(key,
-          "unknown member (want surface, box, edge_length, max_error, quality, method, remesh, threads, "
-          "time_limit, max_vertices)");
+          "unknown member (want surface, box, edge_length, max_error, quality, method, creases, remesh, "
+          "threads, time_limit, max_vertices)");
     }
   }
   if (!has_surface || request.surface.empty()) bad("surface", "missing: give a catalogue name or a formula");

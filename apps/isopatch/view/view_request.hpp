@@ -30,7 +30,8 @@ struct MeshRequest {
 /// Parses `body`, a JSON object with the members (all optional but "surface")
 ///   "surface": string, "box": [x0, y0, z0, x1, y1, z1], "edge_length": number > 0,
 ///   "max_error": number > 0, "quality": "preview" | "default" | "fine" (default preview, for
-///   liveness), "method": "projection" | "mc", "remesh": integer 0..100 (clean-up rounds; 0: the paper's
+///   liveness), "method": "projection" | "mc", "creases": "auto" | "off" (a CSG formula meshed along
+///   its creases, or as a smooth surface), "remesh": integer 0..100 (clean-up rounds; 0: the paper's
 ///   method alone), "threads": integer 0..kMaxThreads, "time_limit": seconds > 0, "max_vertices": integer >=
 ///   0
 /// (null stands for "not given"). The result's settings hold the values, the limits' budgets (the

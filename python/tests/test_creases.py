@@ -1,0 +1,44 @@
+"""isopatch.mesh on CSG formulas: meshed along their exact creases and corners by default, as smooth
+surfaces with creases='off', and CreaseError for shapes no mesh can follow."""
+
+import numpy as np
+import pytest
+
+import isopatch
+
+CUBE = "max(max(abs(x),abs(y)),abs(z))-1"
+BOX = ((-1.5, -1.5, -1.5), (1.5, 1.5, 1.5))
+
+
+def test_a_cube_keeps_its_edges_and_corners():
+    m = isopatch.mesh(CUBE, box=BOX)
+    v = m.vertices
+    # Every corner is a vertex; every vertex is on the cube, those near an edge exactly on it.
+    for corner in np.array(np.meshgrid([-1, 1], [-1, 1], [-1, 1])).T.reshape(-1, 3):
+        assert np.min(np.linalg.norm(v - corner, axis=1)) < 1e-12
+    np.testing.assert_allclose(np.max(np.abs(v), axis=1), 1.0, atol=1e-12)
+    second = np.sort(np.abs(v), axis=1)[:, 1]
+    near_edge = second > 1 - 1e-3
+    assert near_edge.sum() > 200
+    np.testing.assert_allclose(second[near_edge], 1.0, atol=1e-12)
+    creases = m.stats["creases"]
+    assert (creases["faces"], creases["creases"], creases["corners"]) == (6, 12, 8)
+    report = m.analyze()
+    assert report["topology"]["watertight"] and report["topology"]["euler_characteristic"] == 2
+    assert report["shape"]["min_angle_degrees"]["min"] >= 25.0
+
+
+def test_creases_off_rounds_them_as_before():
+    m = isopatch.mesh(CUBE, box=BOX, creases="off")
+    assert "creases" not in m.stats
+    assert np.min(np.linalg.norm(m.vertices - np.array([1.0, 1.0, 1.0]), axis=1)) > 1e-6
+
+
+def test_bad_creases_setting_and_bad_shapes():
+    with pytest.raises(isopatch.SettingError) as e:
+        isopatch.mesh(CUBE, box=BOX, creases="sharp")
+    assert e.value.setting == "creases"
+    # Two boxes touching along an edge: not a 2-manifold.
+    with pytest.raises(isopatch.CreaseError):
+        isopatch.mesh("min(max(max(abs(x),abs(y)),abs(z))-1,max(max(abs(x-2),abs(y-2)),abs(z))-1)",
+                      box=((-1.5, -1.5, -1.5), (3.5, 3.5, 1.5)))

@@ -1,0 +1,191 @@
+/// \file face_set.cpp
+/// Faces of a CSG shape by branch choice (face_set.hpp).
+#include "csg/face_set.hpp"
+
+#include <isopatch/error.hpp>
+#include <isopatch/expression.hpp>
+#include <isopatch/resolve_surface.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <utility>
+
+#include "expr/branches.hpp"
+#include "expr/tape.hpp"
+
+namespace isopatch {
+
+struct FaceSet::Tapes {
+  Expression whole;
+  std::vector<std::uint32_t> switches;
+  std::map<std::vector<std::int8_t>, int> id_of;
+};
+
+namespace {
+
+/// -|f - g|: zero where f equals the face function g, the first-order distance outside.
+class RegionBound final : public Surface {
+ public:
+  RegionBound(SurfacePtr f, SurfacePtr g, const Box& box)
+      : Surface("face region", box), f_(std::move(f)), g_(std::move(g)) {}
+  double value(const Vec3& p) const override { return -std::abs(f_->value(p) - g_->value(p)); }
+  ValueGradient value_gradient(const Vec3& p) const override {
+    const ValueGradient a = f_->value_gradient(p), b = g_->value_gradient(p);
+    const double d = a.value - b.value;
+    if (d == 0.0) return {0.0, Vec3::UnitX()};  // inside: depth 0 / 1
+    return {-std::abs(d), (d > 0.0 ? -1.0 : 1.0) * (a.gradient - b.gradient)};
+  }
+  SecondOrder second_order(const Vec3& p) const override {
+    const ValueGradient v = value_gradient(p);
+    SecondOrder s;
+    s.value = v.value;
+    s.gradient = v.gradient;
+    return s;
+  }
+
+ private:
+  SurfacePtr f_, g_;
+};
+
+class PlaneSurface final : public Surface {
+ public:
+  PlaneSurface(const Vec3& n, double d, const Box& box) : Surface("seam plane", box), n_(n), d_(d) {}
+  double value(const Vec3& p) const override { return n_.dot(p) - d_; }
+  ValueGradient value_gradient(const Vec3& p) const override { return {value(p), n_}; }
+  SecondOrder second_order(const Vec3& p) const override {
+    SecondOrder s;
+    s.value = value(p);
+    s.gradient = n_;
+    return s;
+  }
+
+ private:
+  Vec3 n_;
+  double d_;
+};
+
+}  // namespace
+
+FaceSet::FaceSet(const Expression& f, const Box& box)
+    : tapes_(std::make_unique<Tapes>(Tapes{f, {}, {}})), box_(box) {
+  tapes_->switches = expr::switch_instructions(f.tape());
+  whole_ = expression_surface(f, box, "f");
+}
+
+FaceSet::~FaceSet() = default;
+
+bool FaceSet::has_switches() const {
+  return !tapes_->switches.empty();
+}
+
+int FaceSet::face_at(const Vec3& p) {
+  std::vector<std::int8_t> c = expr::active_branches(tapes_->whole.tape(), tapes_->switches, p);
+  const auto [it, fresh] = tapes_->id_of.emplace(std::move(c), static_cast<int>(choices_.size()));
+  if (fresh) {
+    choices_.push_back(it->first);
+    parent_.push_back(it->second);
+  }
+  return root(it->second);
+}
+
+bool FaceSet::holds(int face, const Vec3& p, double tolerance) const {
+  face = root(face);
+  for (std::size_t m = 0; m < choices_.size(); ++m)
+    if (root(static_cast<int>(m)) == face &&
+        expr::failing_switch(tapes_->whole.tape(), tapes_->switches, choices_[m], p, tolerance) < 0)
+      return true;
+  return false;
+}
+
+int FaceSet::across(int face, const Vec3& p, double tolerance) {
+  face = root(face);
+  const expr::Tape& tape = tapes_->whole.tape();
+  for (std::size_t m = 0; m < choices_.size(); ++m) {
+    if (root(static_cast<int>(m)) != face) continue;
+    const int s = expr::failing_switch(tape, tapes_->switches, choices_[m], p, tolerance);
+    if (s < 0) return -1;
+    std::vector<std::int8_t> full = expr::all_branches(tape, tapes_->switches, p);
+    for (std::size_t k = 0; k < full.size(); ++k)
+      if (choices_[m][k] != expr::kOpen) full[k] = choices_[m][k];
+    full[static_cast<std::size_t>(s)] = static_cast<std::int8_t>(1 - full[static_cast<std::size_t>(s)]);
+    std::vector<std::int8_t> c = expr::live_choice(tape, tapes_->switches, std::move(full));
+    const auto [it, fresh] = tapes_->id_of.emplace(std::move(c), static_cast<int>(choices_.size()));
+    if (fresh) {
+      choices_.push_back(it->first);
+      parent_.push_back(it->second);
+    }
+    return root(it->second);
+  }
+  return -1;
+}
+
+int FaceSet::root(int face) const {
+  while (parent_[static_cast<std::size_t>(face)] != face) face = parent_[static_cast<std::size_t>(face)];
+  return face;
+}
+
+void FaceSet::merge(int a, int b) {
+  if (!functions_.empty()) throw Error(ErrorKind::Internal, "faces merged after their functions were made");
+  a = root(a);
+  b = root(b);
+  if (a == b) return;
+  parent_[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
+}
+
+const SurfacePtr& FaceSet::function(int face) {
+  face = root(face);
+  if (functions_.size() < choices_.size()) {
+    functions_.resize(choices_.size());
+    bounds_.resize(choices_.size());
+  }
+  SurfacePtr& out = functions_[static_cast<std::size_t>(face)];
+  if (!out) {
+    // The branch of each switch that the members where it is live agree on; a switch they take
+    // different branches of stays open (a switch dead in a member does not matter to it).
+    std::vector<std::int8_t> shared(choices_[static_cast<std::size_t>(face)].size(), expr::kOpen);
+    std::vector<bool> conflict(shared.size(), false);
+    for (std::size_t m = 0; m < choices_.size(); ++m)
+      if (root(static_cast<int>(m)) == face)
+        for (std::size_t s = 0; s < shared.size(); ++s) {
+          const std::int8_t c = choices_[m][s];
+          if (c == expr::kOpen) continue;
+          if (shared[s] == expr::kOpen && !conflict[s])
+            shared[s] = c;
+          else if (shared[s] != c) {
+            conflict[s] = true;
+            shared[s] = expr::kOpen;
+          }
+        }
+    auto tape =
+        std::make_shared<const expr::Tape>(expr::specialise(tapes_->whole.tape(), tapes_->switches, shared));
+    out = expression_surface(Expression(std::move(tape)), box_, "face " + std::to_string(face));
+  }
+  return out;
+}
+
+const SurfacePtr& FaceSet::fine_function(int face) {
+  if (fine_.size() < choices_.size()) fine_.resize(choices_.size());
+  SurfacePtr& out = fine_[static_cast<std::size_t>(face)];
+  if (!out) {
+    auto tape = std::make_shared<const expr::Tape>(
+        expr::specialise(tapes_->whole.tape(), tapes_->switches, choices_[static_cast<std::size_t>(face)]));
+    out = expression_surface(Expression(std::move(tape)), box_, "branch " + std::to_string(face));
+  }
+  return out;
+}
+
+SurfacePtr FaceSet::region_bound(int face) {
+  face = root(face);
+  const SurfacePtr& g = function(face);
+  SurfacePtr& out = bounds_[static_cast<std::size_t>(face)];
+  if (!out) out = std::make_shared<RegionBound>(whole_, g, box_);
+  return out;
+}
+
+SurfacePtr plane_surface(const Vec3& normal, double offset, const Box& box) {
+  return std::make_shared<PlaneSurface>(normal, offset, box);
+}
+
+}  // namespace isopatch

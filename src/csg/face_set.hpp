@@ -1,0 +1,75 @@
+#pragma once
+/// \file face_set.hpp
+/// The faces of a CSG shape read from its expression: every min, max and abs fixed to the branch taken
+/// at a point gives that point's face function (expr/branches.hpp); faces that meet without a crease
+/// (the two sides of a smooth union's blend, where the branches' gradients agree) are merged into one
+/// face whose function leaves the switches they differ in open (smooth there). docs/creases.md.
+
+#include <isopatch/geometry.hpp>
+#include <isopatch/surface.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace isopatch {
+
+class Expression;
+
+/// The faces of f = 0 seen so far, by branch choice, with their functions. Not thread-safe while faces
+/// are added (face_at()); the functions it hands out are.
+class FaceSet {
+ public:
+  /// \param f    the whole function (its tape is read)
+  /// \param box  the box given to the face functions
+  FaceSet(const Expression& f, const Box& box);
+  ~FaceSet();
+  FaceSet(const FaceSet&) = delete;
+  FaceSet& operator=(const FaceSet&) = delete;
+
+  /// Whether f has a min, max or abs at all (else it has one face and no crease).
+  bool has_switches() const;
+  /// The face whose branches f takes at p (a new face when they were not seen before), as its merged
+  /// face: faces merged by merge() answer with the same id, the smallest of them.
+  int face_at(const Vec3& p);
+  /// Whether f takes the branches of the (merged) face at p, ties within `tolerance` counting: p lies in
+  /// the face's region (for a merged face, in one of its members').
+  bool holds(int face, const Vec3& p, double tolerance) const;
+  /// The face across the boundary of a face's region at p (where holds() fails): the face's branches
+  /// with the first one f does not take at p switched over, the rest as f takes them there. -1 when
+  /// the face holds at p.
+  int across(int face, const Vec3& p, double tolerance);
+  /// Merges two faces that meet without a crease. \pre both ids came from face_at().
+  void merge(int a, int b);
+  /// The merged face of a face id (the smallest id merged with it).
+  int root(int face) const;
+  /// The function of a (merged) face: f with the branches its members share fixed. Built on first use;
+  /// merging afterwards is not allowed (\throw Error of kind Internal).
+  const SurfacePtr& function(int face);
+  /// The function of one face id on its own (its branches fixed, merged or not).
+  const SurfacePtr& fine_function(int face);
+  /// A bound of the face's region for the projection (composite.hpp bounds): -|f - f_face|, zero where
+  /// f takes the face's branches and, to first order, minus the distance to that region elsewhere.
+  SurfacePtr region_bound(int face);
+  /// The whole function f as a surface.
+  const SurfacePtr& whole() const { return whole_; }
+  /// Number of face ids handed out (merged ones included).
+  std::size_t size() const { return choices_.size(); }
+
+ private:
+  struct Tapes;
+  std::unique_ptr<Tapes> tapes_;
+  Box box_;
+  SurfacePtr whole_;
+  std::vector<std::vector<std::int8_t>> choices_;
+  std::vector<int> parent_;
+  std::vector<SurfacePtr> functions_;
+  std::vector<SurfacePtr> fine_;
+  std::vector<SurfacePtr> bounds_;
+};
+
+/// The plane n . x = d as a surface (n unit): the seams that cut a face into disc-like pieces.
+SurfacePtr plane_surface(const Vec3& normal, double offset, const Box& box);
+
+}  // namespace isopatch

@@ -1,0 +1,111 @@
+// Formulas with creases meshed along them through mesh_surface() (api/crease_meshing.hpp): the cube
+// end to end, the switch between automatic and smooth treatment, and the errors of bad shapes.
+#include <gtest/gtest.h>
+
+#include <isopatch/error.hpp>
+#include <isopatch/topology.hpp>
+
+#include "csg_checks.hpp"
+#include "mesh_checks.hpp"
+
+namespace isopatch {
+namespace {
+
+using test::mesh_csg;
+
+constexpr const char* kCube = "max(max(abs(x),abs(y)),abs(z))-1";
+const Box kCubeBox{Vec3::Constant(-1.5), Vec3::Constant(1.5)};
+
+double volume(const Mesh& mesh) {
+  double v = 0.0;
+  for (const Triangle& t : mesh.triangles)
+    v += mesh.positions[t[0]].dot(mesh.positions[t[1]].cross(mesh.positions[t[2]])) / 6.0;
+  return v;
+}
+
+TEST(CreaseMeshing, ACubeHasExactEdgesAndCornersAndGoodTriangles) {
+  const test::CsgRun run = mesh_csg(kCube, kCubeBox);
+  ASSERT_TRUE(run.stats.creases);
+  EXPECT_EQ(run.stats.creases->faces, 6u);
+  EXPECT_EQ(run.stats.creases->creases, 12u);
+  EXPECT_EQ(run.stats.creases->corners, 8u);
+  EXPECT_EQ(run.stats.creases->pieces, 6u);
+  const TopologyReport topology = analyze_topology(run.mesh);
+  EXPECT_TRUE(topology.watertight());
+  EXPECT_TRUE(topology.manifold());
+  EXPECT_TRUE(topology.consistently_oriented());
+  EXPECT_EQ(topology.euler_characteristic, 2);
+  EXPECT_EQ(topology.components.size(), 1u);
+  // Every corner is a vertex; every vertex lies on the cube, those near an edge on both of its faces.
+  for (const Vec3& corner : {Vec3(1, 1, 1), Vec3(-1, 1, 1), Vec3(1, -1, -1), Vec3(-1, -1, -1)}) {
+    double nearest = 1.0;
+    for (const Vec3& p : run.mesh.positions) nearest = std::min(nearest, (p - corner).norm());
+    EXPECT_LT(nearest, 1e-12);
+  }
+  const auto [residual, crease_vertices] = test::crease_residual(run);
+  EXPECT_GT(crease_vertices, 12u * 20u);
+  EXPECT_LT(residual, 1e-9 * kCubeBox.diagonal());
+  EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-12);
+  // Flat faces: the volume is exact to rounding; the angles reach the floor.
+  EXPECT_NEAR(volume(run.mesh), 8.0, 1e-9);
+  EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0);
+  EXPECT_EQ(run.stats.warnings.exempt_corners, 0u);
+}
+
+TEST(CreaseMeshing, TheSameBytesForAnyNumberOfThreads) {
+  const char* formula = "max(x^2+y^2+z^2-1,0.25-x^2-y^2)";
+  const Box box{Vec3::Constant(-1.2), Vec3::Constant(1.2)};
+  Settings s;
+  s.threads = 1;
+  const Mesh one = mesh_csg(formula, box, s).mesh;
+  for (const int threads : {2, 4}) {
+    s.threads = threads;
+    const Mesh many = mesh_csg(formula, box, s).mesh;
+    EXPECT_EQ(many.positions, one.positions) << threads;
+    EXPECT_EQ(many.triangles, one.triangles) << threads;
+  }
+}
+
+TEST(CreaseMeshing, CreasesOffMeshesAsBefore) {
+  Settings off;
+  off.creases = Creases::Off;
+  const test::CsgRun smooth = mesh_csg(kCube, kCubeBox, off);
+  EXPECT_FALSE(smooth.stats.creases);
+  // The smooth treatment rounds the corners off: no vertex at a corner.
+  double nearest = 1.0;
+  for (const Vec3& p : smooth.mesh.positions) nearest = std::min(nearest, (p - Vec3(1, 1, 1)).norm());
+  EXPECT_GT(nearest, 1e-6);
+}
+
+TEST(CreaseMeshing, ASmoothUnionWithoutCreasesKeepsItsSmoothMesh) {
+  // Two spheres joined by a polynomial smooth minimum: switches, but no crease anywhere.
+  const char* formula =
+      "k=0.3;a=(x-0.5)^2+y^2+z^2-0.36;b=(x+0.5)^2+y^2+z^2-0.36;h=max(k-abs(a-b),0)/k;min(a,b)-h*h*k/4";
+  const Box box{Vec3(-1.3, -0.9, -0.9), Vec3(1.3, 0.9, 0.9)};
+  Settings off;
+  off.creases = Creases::Off;
+  const test::CsgRun automatic = mesh_csg(formula, box);
+  const test::CsgRun smooth = mesh_csg(formula, box, off);
+  EXPECT_FALSE(automatic.stats.creases);
+  EXPECT_EQ(automatic.mesh.positions, smooth.mesh.positions);
+  EXPECT_EQ(automatic.mesh.triangles, smooth.mesh.triangles);
+}
+
+TEST(CreaseMeshing, BadShapesGetClearErrors) {
+  // Two boxes touching along an edge: not a 2-manifold.
+  EXPECT_THROW(mesh_csg("min(max(max(abs(x),abs(y)),abs(z))-1,max(max(abs(x-2),abs(y-2)),abs(z))-1)",
+                        Box{Vec3(-1.5, -1.5, -1.5), Vec3(3.5, 3.5, 1.5)}),
+               CreaseError);
+  // A sphere resting on a box: the faces touch at a point.
+  EXPECT_THROW(mesh_csg("min(max(max(abs(x),abs(y)),abs(z))-1,x^2+y^2+(z-1.5)^2-0.25)",
+                        Box{Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 2.2)}),
+               CreaseError);
+  // Creases that leave the box: meshed as a smooth surface (an open mesh, as before), with a warning.
+  const test::CsgRun open = mesh_csg(kCube, Box{Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 0.5)});
+  EXPECT_FALSE(open.stats.creases);
+  EXPECT_EQ(open.stats.warnings.creases_leave_box, 1u);
+  EXPECT_GT(open.mesh.triangle_count(), 100u);
+}
+
+}  // namespace
+}  // namespace isopatch
