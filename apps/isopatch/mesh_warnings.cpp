@@ -33,11 +33,6 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
     std::fprintf(out,
                  "warning: creases of the shape leave the box: meshed as a smooth surface (creases rounded); "
                  "a box that holds the whole shape meshes it along its creases\n");
-  if (w.tangential_contacts > 0)
-    std::fprintf(out,
-                 "warning: %zu places where two faces of the shape touch tangentially (no crease between "
-                 "them): meshed as the faces on either side\n",
-                 w.tangential_contacts);
   if (const auto& l = stats.local_sizes) {
     std::string where;
     if (l->sources > 0)

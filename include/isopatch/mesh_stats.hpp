@@ -139,8 +139,6 @@ struct MeshWarnings {
   /// CSG shapes: corners of pieces sharper than the 25 degree angle floor (two faces or creases meet
   /// at a smaller angle there), where triangles cannot reach the floor.
   std::size_t exempt_corners = 0;
-  /// CSG shapes: places where two faces touch tangentially (no crease curve between them).
-  std::size_t tangential_contacts = 0;
   /// CSG shapes: 1 when a crease leaves the box, so the shape was meshed as a smooth surface.
   std::size_t creases_leave_box = 0;
 };

@@ -27,17 +27,16 @@ constexpr double kCreaseRepairTolerance = 1e-14;
 
 }  // namespace
 
-std::optional<Mesh> mesh_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats) {
+CreasedMesh mesh_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats) {
   if (settings.creases == Creases::Off || settings.method != Method::Projection || !settings.region.empty() ||
       settings.frame || !settings.cells.empty() || !surface.expression())
-    return std::nullopt;
+    return {};
   const auto start = std::chrono::steady_clock::now();
   const Box box = settings.box.value_or(surface.box());
   const TargetSizes sizes = target_sizes(settings, box);
   std::optional<Vec3> leaves_box;
   std::optional<CsgShape> shape = analyse_csg(surface, box, sizes.largest, &leaves_box);
-  if (leaves_box && stats) stats->warnings.creases_leave_box = 1;
-  if (!shape) return std::nullopt;
+  if (!shape) return {std::nullopt, leaves_box.has_value()};
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const CompositeModel model(std::make_shared<const Composite>(std::move(shape->composite)));
   Mesh mesh = mesh_composite_along_curves(model, settings, stats);
@@ -68,9 +67,8 @@ std::optional<Mesh> mesh_along_creases(const Surface& surface, const Settings& s
     stats->seconds += seconds;
     stats->times.add("creases", seconds);
     stats->warnings.exempt_corners = shape->exempt_corners;
-    stats->warnings.tangential_contacts = shape->tangential_contacts.size();
   }
-  return mesh;
+  return {std::move(mesh), false};
 }
 
 }  // namespace isopatch

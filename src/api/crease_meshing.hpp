@@ -14,12 +14,20 @@
 
 namespace isopatch {
 
-/// The mesh of `surface` along its creases, or nullopt when it is not meshed that way: another method,
-/// Creases::Off, a region, frame or given cells, not a formula, or no crease in the box.
+/// What mesh_along_creases() did.
+struct CreasedMesh {
+  std::optional<Mesh> mesh;        ///< nullopt: mesh the surface as a smooth one
+  bool creases_leave_box = false;  ///< why not, when it is because a crease leaves the box
+};
+
+/// The mesh of `surface` along its creases, or no mesh when it is not meshed that way: another method,
+/// Creases::Off, a region, frame or given cells, not a formula, no crease in the box, or a crease that
+/// leaves the box (said in the result: the caller warns after the smooth run, whose statistics replace
+/// `stats`).
 /// \throw CreaseError when the shape has creases that cannot be meshed (docs/creases.md: solids touching
 ///        along an edge, a crease the tracer cannot follow); the
 ///        errors of mesh_composite().
-std::optional<Mesh> mesh_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats);
+CreasedMesh mesh_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats);
 
 /// The composite path of mesh_composite() after its checks: projection along the composite's curves,
 /// the clean-up per patch and the multiresolution refinement, in the settings' task arena.

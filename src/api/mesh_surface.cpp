@@ -233,16 +233,15 @@ Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const 
 
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
   settings.validate();
-  if (std::optional<Mesh> creased = mesh_along_creases(surface, settings, stats)) return std::move(*creased);
-  // Creases that left the box: the warning outlives the smooth path's statistics.
-  const bool creases_left_box = stats && stats->warnings.creases_leave_box > 0;
+  CreasedMesh creased = mesh_along_creases(surface, settings, stats);
+  if (creased.mesh) return std::move(*creased.mesh);
   Mesh mesh = run_in_task_arena(settings, stats, [&] {
     if (settings.max_evaluations == 0 && settings.time_limit == 0.0)
       return dispatch(surface, settings, stats);
     const BudgetedSurface budgeted(surface, settings.max_evaluations, settings.time_limit);
     return dispatch(budgeted, settings, stats);
   });
-  if (creases_left_box) stats->warnings.creases_leave_box = 1;
+  if (stats && creased.creases_leave_box) stats->warnings.creases_leave_box = 1;
   return mesh;
 }
 

@@ -34,7 +34,7 @@ int curve_segment_count(const Composite& c, std::size_t curve, const Surface& su
   if (resolution > 0) return resolution;
   double h = sizes.largest;
   if (sizes.varies()) {
-    if (curve < c.traced.size() && !c.traced[curve].points.empty()) {
+    if (is_traced(c, curve)) {
       for (const Vec3& p : sample_curve(c, curve, kSizeSamples - 1))
         h = std::min(h, target_size(surface, sizes, p));
     } else {

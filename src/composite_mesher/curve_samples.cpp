@@ -86,9 +86,9 @@ std::vector<Vec3> side_samples(const ConicArc& arc, bool reversed, int segments)
   return points;
 }
 
-}  // namespace isopatch
-
-namespace isopatch {
+bool is_traced(const Composite& c, std::size_t i) {
+  return traced_curve(c, i) != nullptr;
+}
 
 double curve_length(const Composite& c, std::size_t i) {
   if (const TracedCurve* t = traced_curve(c, i)) return polyline_lengths(t->points).back();

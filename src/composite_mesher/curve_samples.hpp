@@ -25,6 +25,10 @@ double arc_length(const ConicArc& arc);
 /// \pre segments >= 1. \throw InputError as arc_length().
 std::vector<Vec3> sample_arc(const ConicArc& arc, int segments);
 
+/// Whether curve i of the composite is a traced curve (Composite::traced). \throw InputError as
+/// curve_length() for a malformed traced curve.
+bool is_traced(const Composite& c, std::size_t i);
+
 /// The length of curve i of the composite: its traced polyline's when it is traced, else its arc's.
 /// \throw InputError as arc_length(), or for a traced curve of fewer than 2 finite points or length 0.
 double curve_length(const Composite& c, std::size_t i);

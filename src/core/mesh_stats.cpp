@@ -130,10 +130,7 @@ void visit_stats(
   }
   const MeshWarnings& w = stats.warnings;
   const auto v = [&](std::string_view name, double value) { visit("warnings", name, value); };
-  if (stats.creases) {
-    v("exempt_corners", count(w.exempt_corners));
-    v("tangential_contacts", count(w.tangential_contacts));
-  }
+  if (stats.creases) v("exempt_corners", count(w.exempt_corners));
   if (w.creases_leave_box > 0) v("creases_leave_box", count(w.creases_leave_box));
   if (stats.projection) {
     v("doubtful_cells", count(w.doubtful_cells));

@@ -4,12 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <numbers>
 #include <optional>
 #include <set>
 
 #include "core/triangle_angle.hpp"
 #include "surface/curve_point.hpp"
+#include "surface/project_point.hpp"
+#include "surface/sampler.hpp"
 
 namespace isopatch {
 
@@ -19,8 +22,6 @@ namespace {
 constexpr int kSweeps = 6;
 /// Shares of the way to the neighbours' mean tried, largest first.
 constexpr double kSteps[] = {1.0, 0.5, 0.25};
-/// Newton steps that put a moved vertex back on its face.
-constexpr int kNewtonSteps = 20;
 
 /// The smallest angle (degrees) of the triangles around v with v at `p`, or -1 when one of them turns
 /// against the outward normal `n` of its faces there.
@@ -42,18 +43,6 @@ double fan_angle(const Mesh& mesh, const std::vector<std::uint32_t>& fan, std::u
   return smallest;
 }
 
-/// p put back on f by Newton steps along grad f, or nullopt.
-std::optional<Vec3> onto(const Surface& f, Vec3 p, double tolerance) {
-  for (int i = 0; i < kNewtonSteps; ++i) {
-    const ValueGradient g = f.value_gradient(p);
-    const double n2 = g.gradient.squaredNorm();
-    if (!std::isfinite(g.value) || !(n2 > 0.0)) return std::nullopt;
-    if (std::abs(g.value) <= tolerance * std::sqrt(n2)) return p;
-    p -= g.value / n2 * g.gradient;
-  }
-  return std::nullopt;
-}
-
 }  // namespace
 
 AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces, double floor_degrees,
@@ -71,19 +60,18 @@ AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces
     }
   const auto triangle_angle = [&](std::size_t t) {
     const Triangle& tr = mesh.triangles[t];
-    return (smallest_angle(mesh.positions[tr[0]], mesh.positions[tr[1]], mesh.positions[tr[2]]));
+    return smallest_angle(mesh.positions[tr[0]], mesh.positions[tr[1]], mesh.positions[tr[2]]);
   };
-  out.smallest_before = 180.0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    out.smallest_before = std::min(out.smallest_before, triangle_angle(t));
-  // The faces each vertex lies on, found when first needed.
-  std::vector<std::optional<std::vector<const Surface*>>> on(n);
-  const auto faces_of = [&](std::uint32_t v) -> const std::vector<const Surface*>& {
+  std::deque<Sampler> samplers;  // not movable: a deque builds them in place
+  for (const SurfacePtr& f : faces) samplers.emplace_back(*f);
+  // The faces each vertex lies on (indices into `faces`), found when first needed.
+  std::vector<std::optional<std::vector<std::size_t>>> on(n);
+  const auto faces_of = [&](std::uint32_t v) -> const std::vector<std::size_t>& {
     if (!on[v]) {
       on[v].emplace();
-      for (const SurfacePtr& f : faces) {
-        const ValueGradient g = f->value_gradient(mesh.positions[v]);
-        if (std::abs(g.value) <= on_face * g.gradient.norm()) on[v]->push_back(f.get());
+      for (std::size_t i = 0; i < faces.size(); ++i) {
+        const ValueGradient g = samplers[i].value_gradient(mesh.positions[v]);
+        if (std::abs(g.value) <= on_face * g.gradient.norm()) on[v]->push_back(i);
       }
     }
     return *on[v];
@@ -91,7 +79,8 @@ AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces
   std::vector<Vec3> normals(n, Vec3::Zero());
   const auto normal_of = [&](std::uint32_t v) {
     Vec3 sum = Vec3::Zero();
-    for (const Surface* f : faces_of(v)) sum += f->value_gradient(mesh.positions[v]).gradient.normalized();
+    for (const std::size_t i : faces_of(v))
+      sum += samplers[i].value_gradient(mesh.positions[v]).gradient.normalized();
     return sum;
   };
   for (int sweep = 0; sweep < kSweeps; ++sweep) {
@@ -102,7 +91,7 @@ AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces
     if (candidates.empty()) break;
     std::size_t moved = 0;
     for (const std::uint32_t v : candidates) {
-      const std::vector<const Surface*>& on_v = faces_of(v);
+      const std::vector<std::size_t>& on_v = faces_of(v);
       if (on_v.empty() || on_v.size() > 2) continue;  // a corner (or a vertex off every face) stays
       for (const std::uint32_t w : neighbours[v]) normals[w] = normal_of(w);
       normals[v] = normal_of(v);
@@ -132,17 +121,18 @@ AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces
       for (Vec3 target : targets) {
         std::optional<Vec3> q;
         if (on_v.size() == 1) {
-          q = onto(*on_v[0], target, tolerance);
+          if (project_to_surface(samplers[on_v[0]], target, tolerance, edge)) q = target;
         } else {
           // Along the crease only, then back onto both functions.
-          const Vec3 t =
-              on_v[0]->value_gradient(p).gradient.cross(on_v[1]->value_gradient(p).gradient).normalized();
+          const Surface& a = *faces[on_v[0]];
+          const Surface& b = *faces[on_v[1]];
+          const Vec3 t = a.value_gradient(p).gradient.cross(b.value_gradient(p).gradient).normalized();
           target = p + (target - p).dot(t) * t;
           CurvePointParams cp;
           cp.tolerance = tolerance;
           cp.max_step = (target - p).norm() + tolerance;
           cp.max_travel = 2.0 * cp.max_step;
-          q = settle_on_curve(*on_v[0], *on_v[1], target, cp);
+          q = settle_on_curve(a, b, target, cp);
         }
         if (!q) continue;
         const double after = fan_angle(mesh, fan[v], v, *q, normals);
@@ -159,9 +149,6 @@ AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces
     out.moved += moved;
     if (moved == 0) break;
   }
-  out.smallest_after = 180.0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    out.smallest_after = std::min(out.smallest_after, triangle_angle(t));
   return out;
 }
 

@@ -20,15 +20,14 @@ namespace isopatch {
 
 /// What the pass did.
 struct AngleRepair {
-  std::size_t moved = 0;         ///< vertex moves kept
-  double smallest_before = 0.0;  ///< smallest angle in the mesh, degrees
-  double smallest_after = 0.0;
+  std::size_t moved = 0;  ///< vertex moves kept
 };
 
 /// Moves vertices of triangles with an angle under `floor_degrees` (several sweeps, in vertex order: the
 /// same result for any thread count). `faces` are the shape's face functions; a vertex lies on a face
 /// when |f| / |grad f| <= `on_face` there; a moved vertex is put back on its faces to `tolerance`.
 /// Positions change, topology does not.
+/// A vertex on one face goes back onto it by surface/project_point.hpp's Newton steps.
 /// \throw EvaluationError when a face function is not finite at a vertex.
 AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces, double floor_degrees,
                                 double on_face, double tolerance);

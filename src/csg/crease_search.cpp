@@ -12,9 +12,9 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <unordered_map>
 #include <utility>
 
+#include "core/point_grid.hpp"
 #include "csg/curve_tracer.hpp"
 #include "surface/curve_point.hpp"
 
@@ -37,43 +37,34 @@ constexpr double kStepShare = 0.25;
 /// How far a seed's Newton point may move, in grid cells.
 constexpr double kSeedTravel = 2.0;
 
-std::string at(const Vec3& p) {
-  return point_text(p);
-}
-
-/// Points of the traced curves by grid cell, per pair of faces: which seeds are already traced.
+/// Points of the traced curves per pair of faces: which seeds are already traced (within `reach`).
 class TracedPoints {
  public:
-  explicit TracedPoints(double cell) : cell_(cell) {}
+  explicit TracedPoints(double reach) : reach_(reach) {}
   void add(std::pair<int, int> pair, const std::vector<Vec3>& points) {
-    for (const Vec3& p : points) cells_[key(pair, p)].push_back(p);
+    Set& s = sets_.try_emplace(pair, reach_).first->second;
+    for (const Vec3& p : points) {
+      s.grid.insert(p, s.points.size());
+      s.points.push_back(p);
+    }
   }
-  bool near(std::pair<int, int> pair, const Vec3& p, double reach) const {
-    const std::array<long long, 3> c = cell_of(p);
-    for (long long dx = -2; dx <= 2; ++dx)
-      for (long long dy = -2; dy <= 2; ++dy)
-        for (long long dz = -2; dz <= 2; ++dz) {
-          const auto it = cells_.find(pack(pair, {c[0] + dx, c[1] + dy, c[2] + dz}));
-          if (it == cells_.end()) continue;
-          for (const Vec3& q : it->second)
-            if ((q - p).norm() <= reach) return true;
-        }
-    return false;
+  bool near(std::pair<int, int> pair, const Vec3& p) const {
+    const auto it = sets_.find(pair);
+    if (it == sets_.end()) return false;
+    bool hit = false;
+    it->second.grid.near(p,
+                         [&](std::size_t id) { hit = hit || (it->second.points[id] - p).norm() <= reach_; });
+    return hit;
   }
 
  private:
-  using Key = std::array<long long, 5>;
-  std::array<long long, 3> cell_of(const Vec3& p) const {
-    return {static_cast<long long>(std::floor(p.x() / cell_)),
-            static_cast<long long>(std::floor(p.y() / cell_)),
-            static_cast<long long>(std::floor(p.z() / cell_))};
-  }
-  static Key pack(std::pair<int, int> pair, std::array<long long, 3> c) {
-    return {pair.first, pair.second, c[0], c[1], c[2]};
-  }
-  Key key(std::pair<int, int> pair, const Vec3& p) const { return pack(pair, cell_of(p)); }
-  double cell_;
-  std::map<Key, std::vector<Vec3>> cells_;
+  struct Set {
+    explicit Set(double reach) : grid(reach) {}
+    PointGrid grid;
+    std::vector<Vec3> points;
+  };
+  double reach_;
+  std::map<std::pair<int, int>, Set> sets_;
 };
 
 std::pair<int, int> ordered(int a, int b) {
@@ -119,8 +110,7 @@ CreaseSearch find_creases(FaceSet& faces, const Box& box, double cell) {
   const Surface& f = *faces.whole();
   // Whether a point of f_i = f_j = 0 is on the shape (f vanishes there too).
   const auto on_shape = [&](const Vec3& p, const Surface& fi) {
-    const ValueGradient g = fi.value_gradient(p);
-    return std::abs(f.value(p)) <= 1e3 * tolerance * std::max(g.gradient.norm(), 1e-300);
+    return faces.on_shape(p, fi, kOnShapeTolerances * tolerance);
   };
 
   // 1. Pairs that meet smoothly (the branches of a smooth blend) are merged.
@@ -150,8 +140,7 @@ CreaseSearch find_creases(FaceSet& faces, const Box& box, double cell) {
   trace.tolerance = tolerance;
   trace.box = box;
   trace.third_function = [&](int face) -> const Surface& { return *faces.function(face); };
-  TracedPoints traced(h);
-  std::set<std::pair<int, int>> contact_pairs;
+  TracedPoints traced(kSeedReach * h);
   std::deque<std::pair<std::pair<int, int>, Vec3>> work;
   for (const auto& [pair, points] : pair_seeds(out.samples))
     for (const Vec3& p : points) work.emplace_back(pair, p);
@@ -161,7 +150,7 @@ CreaseSearch find_creases(FaceSet& faces, const Box& box, double cell) {
   while (!work.empty()) {
     const auto [pair, seed] = work.front();
     work.pop_front();
-    if (traced.near(pair, seed, kSeedReach * h)) continue;
+    if (traced.near(pair, seed)) continue;
     const Surface& a = *faces.function(pair.first);
     const Surface& b = *faces.function(pair.second);
     const std::optional<Vec3> settled = settle_on_curve(a, b, seed, seed_params);
@@ -170,7 +159,7 @@ CreaseSearch find_creases(FaceSet& faces, const Box& box, double cell) {
       continue;
     }
     const Vec3 p = *settled;
-    if (traced.near(pair, p, kSeedReach * h)) continue;
+    if (traced.near(pair, p)) continue;
     if (!on_shape(p, a)) {
       // Cut away by a third face (one the grid may have missed): seed its pairs here.
       const int third = faces.face_at(p);
@@ -181,19 +170,18 @@ CreaseSearch find_creases(FaceSet& faces, const Box& box, double cell) {
       }
       continue;
     }
-    if (!faces.holds(pair.first, p, branch_tolerance) || !faces.holds(pair.second, p, branch_tolerance))
+    const std::array<int, 2> both{pair.first, pair.second};
+    if (faces.boundary_face(both, p, branch_tolerance) >= 0)
       continue;  // both functions vanish here, but not as faces of the shape
     if (gradient_sine(a, b, p) < kSmoothSine) {
       untraced.emplace(pair, p);
       continue;
     }
-    trace.owner = [&, pair = pair](const Vec3& q) {
+    trace.owner = [&, pair = pair, both = both](const Vec3& q) {
       const auto other = [&](int k) { return k == pair.first || k == pair.second ? -1 : k; };
       if (!on_shape(q, *faces.function(pair.first))) return other(faces.face_at(q));
       // On f = 0 and on both functions, but a face's branches no longer taken: its region ends here.
-      for (const int face : {pair.first, pair.second})
-        if (!faces.holds(face, q, branch_tolerance)) return other(faces.across(face, q, branch_tolerance));
-      return -1;
+      return other(faces.boundary_face(both, q, branch_tolerance));
     };
     const TracedPath forward = trace_curve(a, b, p, 1.0, trace);
     TracedPath backward;
@@ -206,7 +194,8 @@ CreaseSearch find_creases(FaceSet& faces, const Box& box, double cell) {
         return out;
       }
       if (path->end == TraceEnd::Lost)
-        throw CreaseError("the crease between two faces cannot be followed near " + at(path->points.back()) +
+        throw CreaseError("the crease between two faces cannot be followed near " +
+                          point_text(path->points.back()) +
                           " (the faces touch tangentially or the crease has a cusp there)");
     }
     GraphCurve curve;
@@ -225,8 +214,8 @@ CreaseSearch find_creases(FaceSet& faces, const Box& box, double cell) {
       curve.points.front() = out.graph.nodes[static_cast<std::size_t>(curve.start)].position;
       curve.points.back() = out.graph.nodes[static_cast<std::size_t>(curve.end)].position;
       if (curve.start == curve.end)
-        throw CreaseError("a crease starts and ends at the same corner near " + at(curve.points.front()) +
-                          " (the faces meet in a way no mesh can follow)");
+        throw CreaseError("a crease starts and ends at the same corner near " +
+                          point_text(curve.points.front()) + " (the faces meet in a way no mesh can follow)");
     }
     // Which face lies on the left of the curve, seen from outside: probe a little to the left of its
     // middle, on face `first`.

@@ -62,7 +62,6 @@ std::optional<CsgShape> analyse_csg(const Surface& surface, const Box& box, doub
   shape.creases = search.graph.curves.size();
   shape.corners = search.graph.nodes.size();
   shape.smooth_pairs = search.smooth_pairs;
-  shape.tangential_contacts = search.tangential_contacts;
   CreaseGraph& graph = search.graph;
   for (GraphCurve& c : graph.curves)
     if (c.start == c.end) --shape.corners;  // a closed loop's node is no corner

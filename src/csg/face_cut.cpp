@@ -5,6 +5,7 @@
 #include <isopatch/error.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -15,11 +16,6 @@
 #include "surface/curve_point.hpp"
 
 namespace isopatch {
-
-bool PlaneCutter::on_shape(const Vec3& p, const Surface& fi) const {
-  const ValueGradient g = fi.value_gradient(p);
-  return std::abs(faces.whole()->value(p)) <= 1e3 * tolerance * std::max(g.gradient.norm(), 1e-300);
-}
 
 int PlaneCutter::node_degree(int node) const {
   int n = 0;
@@ -194,12 +190,9 @@ int PlaneCutter::cut(int g, int part, const std::vector<const FaceCycle*>& cycle
   trace.owner = [&](const Vec3& q) {
     for (std::size_t s = 0; s < seam_bounds.size(); ++s)
       if (seam_bounds[s]->value(q) < -tolerance) return kSeamOwner + static_cast<int>(s);
-    if (!on_shape(q, fg)) {
-      const int owner = faces.face_at(q);
-      return owner == g ? -1 : owner;
-    }
-    if (faces.holds(g, q, 1e-9 * box.diagonal())) return -1;
-    const int owner = faces.across(g, q, 1e-9 * box.diagonal());
+    const int owner = faces.on_shape(q, fg, kOnShapeTolerances * tolerance)
+                          ? faces.boundary_face(std::array{g}, q, 1e-9 * box.diagonal())
+                          : faces.face_at(q);
     return owner == g ? -1 : owner;
   };
   for (const int x : crossings) trace.targets.push_back(graph.nodes[static_cast<std::size_t>(x)].position);

@@ -31,8 +31,6 @@ struct PlaneCutter {
   Box box;
   std::set<int> touched;  ///< curves split since it was last cleared
 
-  /// Whether a point of fi = 0 is on f = 0.
-  bool on_shape(const Vec3& p, const Surface& fi) const;
   /// How many curve ends meet at a node.
   int node_degree(int node) const;
   /// The plane through the part's node nearest to it when one lies within a third of a cell (so the

@@ -4,8 +4,6 @@
 
 #include <isopatch/error.hpp>
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,12 +11,11 @@
 #include <numbers>
 #include <optional>
 #include <set>
-#include <unordered_map>
 #include <utility>
 
+#include "core/point_grid.hpp"
 #include "csg/face_cut.hpp"
 #include "csg/face_parts.hpp"
-#include "surface/curve_point.hpp"
 
 namespace isopatch {
 
@@ -35,60 +32,42 @@ constexpr double kMaxConcaveTurn = 0.6 * std::numbers::pi;
 /// A piece with a reflex corner turning right by more than this (radians) is cut through it.
 constexpr double kMaxReflexTurn = std::numbers::pi / 3.0;
 
-/// The coarse mesh's vertices by grid cell.
+/// Points by grid cell, for nearest-point queries within at most `cell`.
 class VertexGrid {
  public:
-  VertexGrid(const std::vector<Vec3>& points, double cell) : points_(points), cell_(cell) {
-    for (std::size_t v = 0; v < points.size(); ++v) cells_[key(points[v])].push_back(static_cast<int>(v));
+  VertexGrid(const std::vector<Vec3>& points, double cell) : points_(points), grid_(cell) {
+    for (std::size_t v = 0; v < points.size(); ++v) grid_.insert(points[v], v);
   }
-  /// The nearest vertex within `reach` of p that `accept` takes, or -1.
+  /// The nearest point within `reach` (<= cell) of p that `accept` takes (the lowest id among equals),
+  /// or -1.
   template <class Accept>
   int nearest(const Vec3& p, double reach, Accept accept) const {
-    const auto lo = key(p - Vec3::Constant(reach)), hi = key(p + Vec3::Constant(reach));
     int best = -1;
     double best_d = reach;
-    for (long long x = lo[0]; x <= hi[0]; ++x)
-      for (long long y = lo[1]; y <= hi[1]; ++y)
-        for (long long z = lo[2]; z <= hi[2]; ++z) {
-          const auto it = cells_.find({x, y, z});
-          if (it == cells_.end()) continue;
-          for (const int v : it->second) {
-            const double d = (points_[static_cast<std::size_t>(v)] - p).norm();
-            if (d <= best_d && accept(v) && (best < 0 || d < best_d || v < best)) {
-              best_d = d;
-              best = v;
-            }
-          }
-        }
+    grid_.near(p, [&](std::size_t id) {
+      const auto v = static_cast<int>(id);
+      const double d = (points_[id] - p).norm();
+      if (d <= best_d && accept(v) && (best < 0 || d < best_d || v < best)) {
+        best_d = d;
+        best = v;
+      }
+    });
     return best;
   }
 
  private:
-  std::array<long long, 3> key(const Vec3& p) const {
-    return {static_cast<long long>(std::floor(p.x() / cell_)),
-            static_cast<long long>(std::floor(p.y() / cell_)),
-            static_cast<long long>(std::floor(p.z() / cell_))};
-  }
   const std::vector<Vec3>& points_;
-  double cell_;
-  struct KeyHash {
-    std::size_t operator()(const std::array<long long, 3>& k) const {
-      return static_cast<std::size_t>((k[0] * 73856093LL) ^ (k[1] * 19349663LL) ^ (k[2] * 83492791LL));
-    }
-  };
-  std::unordered_map<std::array<long long, 3>, std::vector<int>, KeyHash> cells_;
+  PointGrid grid_;
 };
 
 }  // namespace
-
-namespace {}  // namespace
 
 std::vector<FaceCycle> cut_into_discs(CreaseGraph& graph, FaceSet& faces, const ShapeSamples& samples,
                                       const Box& box) {
   Parts parts = initial_parts(samples);
   const double h = samples.cell;
   PlaneCutter cutter{graph, faces, samples, parts, h, 1e-13 * box.diagonal(), box, {}};
-  const VertexGrid grid(samples.mesh.positions, h);
+  const VertexGrid grid(samples.mesh.positions, 2.0 * h);
   std::vector<Vec3> normals;
   for (std::size_t v = 0; v < samples.mesh.positions.size(); ++v)
     normals.push_back(
@@ -97,7 +76,6 @@ std::vector<FaceCycle> cut_into_discs(CreaseGraph& graph, FaceSet& faces, const 
     std::vector<FaceCycle> cycles = face_cycles(graph, faces);
     // Each cycle's part: the vote of the coarse vertices of its face nearest to its crease points.
     std::map<int, std::vector<const FaceCycle*>> cycles_of;
-    std::vector<CycleShape> shapes;
     for (const FaceCycle& c : cycles) {
       std::map<int, int> votes;
       bool any_crease = false;
@@ -194,7 +172,7 @@ std::vector<FaceCycle> cut_into_discs(CreaseGraph& graph, FaceSet& faces, const 
                 curve_points->first.push_back(c.points[k]);
                 curve_points->second.push_back({c.left, c.right});
               }
-            curve_grid.emplace(curve_points->first, h);
+            curve_grid.emplace(curve_points->first, 2.0 * h);
           }
           bool near_curve = false;
           const std::size_t stride = std::max<std::size_t>(1, m.size() / 32);
@@ -222,8 +200,7 @@ std::vector<FaceCycle> cut_into_discs(CreaseGraph& graph, FaceSet& faces, const 
           });
           for (const int a : axes) planes.push_back({Vec3::Unit(a), at[a]});
         }
-        if (!planes.empty()) {
-        } else {
+        if (planes.empty()) {
           // Across the direction the normals (or, for a flat part with too many sides, the points) vary most.
           const Vec3 key = stray > kMaxNormalStray ? spread : Vec3(hi - lo);
           std::array<int, 3> axes{0, 1, 2};
@@ -240,8 +217,7 @@ std::vector<FaceCycle> cut_into_discs(CreaseGraph& graph, FaceSet& faces, const 
         const int axis = candidate.normal.x() != 0.0 ? 0 : (candidate.normal.y() != 0.0 ? 1 : 2);
         const double centre = 0.5 * (box.lo[axis] + box.hi[axis]);
         lattice.offset = centre + std::round((candidate.offset - centre) / (0.5 * h)) * (0.5 * h);
-        const std::optional<Plane> plane = cutter.snapped_to_nodes(lattice, mine);
-        if (plane && cutter.cut(g, part, mine, *plane) > 0) {
+        if (cutter.cut(g, part, mine, cutter.snapped_to_nodes(lattice, mine)) > 0) {
           cut_faces.insert(g);
           break;
         }

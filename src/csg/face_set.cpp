@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -80,9 +81,8 @@ bool FaceSet::has_switches() const {
   return !tapes_->switches.empty();
 }
 
-int FaceSet::face_at(const Vec3& p) {
-  std::vector<std::int8_t> c = expr::active_branches(tapes_->whole.tape(), tapes_->switches, p);
-  const auto [it, fresh] = tapes_->id_of.emplace(std::move(c), static_cast<int>(choices_.size()));
+int FaceSet::id_of(std::vector<std::int8_t> choice) {
+  const auto [it, fresh] = tapes_->id_of.emplace(std::move(choice), static_cast<int>(choices_.size()));
   if (fresh) {
     choices_.push_back(it->first);
     parent_.push_back(it->second);
@@ -90,33 +90,41 @@ int FaceSet::face_at(const Vec3& p) {
   return root(it->second);
 }
 
-bool FaceSet::holds(int face, const Vec3& p, double tolerance) const {
-  face = root(face);
-  for (std::size_t m = 0; m < choices_.size(); ++m)
-    if (root(static_cast<int>(m)) == face &&
-        expr::failing_switch(tapes_->whole.tape(), tapes_->switches, choices_[m], p, tolerance) < 0)
-      return true;
-  return false;
+int FaceSet::face_at(const Vec3& p) {
+  return id_of(expr::active_branches(tapes_->whole.tape(), tapes_->switches, p));
 }
 
-int FaceSet::across(int face, const Vec3& p, double tolerance) {
-  face = root(face);
+bool FaceSet::on_shape(const Vec3& p, const Surface& fi, double tolerance) const {
+  const ValueGradient g = fi.value_gradient(p);
+  return std::abs(whole_->value(p)) <= tolerance * std::max(g.gradient.norm(), 1e-300);
+}
+
+int FaceSet::boundary_face(std::span<const int> faces, const Vec3& p, double tolerance) {
   const expr::Tape& tape = tapes_->whole.tape();
-  for (std::size_t m = 0; m < choices_.size(); ++m) {
-    if (root(static_cast<int>(m)) != face) continue;
-    const int s = expr::failing_switch(tape, tapes_->switches, choices_[m], p, tolerance);
-    if (s < 0) return -1;
-    std::vector<std::int8_t> full = expr::all_branches(tape, tapes_->switches, p);
-    for (std::size_t k = 0; k < full.size(); ++k)
-      if (choices_[m][k] != expr::kOpen) full[k] = choices_[m][k];
-    full[static_cast<std::size_t>(s)] = static_cast<std::int8_t>(1 - full[static_cast<std::size_t>(s)]);
-    std::vector<std::int8_t> c = expr::live_choice(tape, tapes_->switches, std::move(full));
-    const auto [it, fresh] = tapes_->id_of.emplace(std::move(c), static_cast<int>(choices_.size()));
-    if (fresh) {
-      choices_.push_back(it->first);
-      parent_.push_back(it->second);
+  const expr::SwitchValues values = expr::switch_values(tape, p);
+  for (const int face : faces) {
+    // The face holds where one of its members' branches do.
+    const int r = root(face);
+    int failing = -1;
+    std::size_t member = 0;
+    bool holds = false;
+    for (std::size_t m = 0; m < choices_.size() && !holds; ++m) {
+      if (root(static_cast<int>(m)) != r) continue;
+      const int s = expr::failing_switch(tape, tapes_->switches, choices_[m], values, tolerance);
+      holds = s < 0;
+      if (!holds && failing < 0) {
+        failing = s;
+        member = m;
+      }
     }
-    return root(it->second);
+    if (holds) continue;
+    // Across: the first member's branches with the failing one switched over, the rest as f takes them.
+    std::vector<std::int8_t> full = expr::all_branches(tapes_->switches, values);
+    for (std::size_t k = 0; k < full.size(); ++k)
+      if (choices_[member][k] != expr::kOpen) full[k] = choices_[member][k];
+    full[static_cast<std::size_t>(failing)] =
+        static_cast<std::int8_t>(1 - full[static_cast<std::size_t>(failing)]);
+    return id_of(expr::live_choice(tape, tapes_->switches, std::move(full)));
   }
   return -1;
 }

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace isopatch {
@@ -33,13 +34,13 @@ class FaceSet {
   /// The face whose branches f takes at p (a new face when they were not seen before), as its merged
   /// face: faces merged by merge() answer with the same id, the smallest of them.
   int face_at(const Vec3& p);
-  /// Whether f takes the branches of the (merged) face at p, ties within `tolerance` counting: p lies in
-  /// the face's region (for a merged face, in one of its members').
-  bool holds(int face, const Vec3& p, double tolerance) const;
-  /// The face across the boundary of a face's region at p (where holds() fails): the face's branches
-  /// with the first one f does not take at p switched over, the rest as f takes them there. -1 when
-  /// the face holds at p.
-  int across(int face, const Vec3& p, double tolerance);
+  /// Whether a point of fi = 0 lies on f = 0 (|f| <= tolerance |grad fi| there).
+  bool on_shape(const Vec3& p, const Surface& fi, double tolerance) const;
+  /// -1 when f takes the branches of each of `faces` at p (ties within `tolerance` count: p lies in
+  /// every one's region; a merged face holds where one of its members does); else the face across the
+  /// first one's region boundary at p: its branches with the first one f does not take switched over,
+  /// the rest as f takes them there (possibly a new face). One run of f's tape.
+  int boundary_face(std::span<const int> faces, const Vec3& p, double tolerance);
   /// Merges two faces that meet without a crease. \pre both ids came from face_at().
   void merge(int a, int b);
   /// The merged face of a face id (the smallest id merged with it).
@@ -67,7 +68,14 @@ class FaceSet {
   std::vector<SurfacePtr> functions_;
   std::vector<SurfacePtr> fine_;
   std::vector<SurfacePtr> bounds_;
+
+  /// The (merged) face of a branch choice, registered when new.
+  int id_of(std::vector<std::int8_t> choice);
 };
+
+/// A point put on two face functions to a Newton tolerance t is on f = 0 when |f| <= this many t
+/// (FaceSet::on_shape): the tracers' test of a point still on the shape.
+inline constexpr double kOnShapeTolerances = 1e3;
 
 /// The plane n . x = d as a surface (n unit): the seams that cut a face into disc-like pieces.
 SurfacePtr plane_surface(const Vec3& normal, double offset, const Box& box);

@@ -37,30 +37,6 @@ std::vector<bool> live_instructions(const Tape& tape, const std::vector<std::int
   return live;
 }
 
-/// Runs the tape at p: the branch each switch instruction takes, and its operands' values (registers
-/// are reused, so they are kept as the instruction reads them).
-void run(const Tape& tape, const Vec3& p, std::vector<std::int8_t>& taken,
-         std::vector<std::pair<double, double>>* operands = nullptr) {
-  std::vector<double> r(std::max<std::size_t>(tape.registers, Tape::kVariables), 0.0);
-  taken.assign(tape.code.size(), kOpen);
-  if (operands) operands->assign(tape.code.size(), {0.0, 0.0});
-  if (r.size() < Tape::kVariables) return;
-  r[0] = p.x();
-  r[1] = p.y();
-  r[2] = p.z();
-  for (const ConstantRegister& c : tape.constants) r[c.reg] = c.value;
-  for (std::size_t i = 0; i < tape.code.size(); ++i) {
-    const Instruction& in = tape.code[i];
-    const double a = r[in.a], b = r[in.b];
-    // The branch the evaluators take (scalar.hpp: min is b < a ? b : a, max is a < b ? b : a).
-    if (in.op == Op::Min) taken[i] = b < a ? 1 : 0;
-    if (in.op == Op::Max) taken[i] = a < b ? 1 : 0;
-    if (in.op == Op::Abs) taken[i] = a < 0.0 ? 1 : 0;
-    if (operands) (*operands)[i] = {a, b};
-    r[in.out] = apply(in.op, a, b, in.imm);
-  }
-}
-
 }  // namespace
 
 std::vector<std::uint32_t> switch_instructions(const Tape& tape) {
@@ -70,15 +46,35 @@ std::vector<std::uint32_t> switch_instructions(const Tape& tape) {
   return out;
 }
 
-BranchChoice active_branches(const Tape& tape, const std::vector<std::uint32_t>& switches, const Vec3& p) {
-  return live_choice(tape, switches, all_branches(tape, switches, p));
+SwitchValues switch_values(const Tape& tape, const Vec3& p) {
+  SwitchValues out;
+  out.taken.assign(tape.code.size(), kOpen);
+  out.operands.assign(tape.code.size(), {0.0, 0.0});
+  std::vector<double> r(std::max<std::size_t>(tape.registers, Tape::kVariables), 0.0);
+  r[0] = p.x();
+  r[1] = p.y();
+  r[2] = p.z();
+  for (const ConstantRegister& c : tape.constants) r[c.reg] = c.value;
+  for (std::size_t i = 0; i < tape.code.size(); ++i) {
+    const Instruction& in = tape.code[i];
+    const double a = r[in.a], b = r[in.b];
+    // The branch the evaluators take (scalar.hpp: min is b < a ? b : a, max is a < b ? b : a).
+    if (in.op == Op::Min) out.taken[i] = b < a ? 1 : 0;
+    if (in.op == Op::Max) out.taken[i] = a < b ? 1 : 0;
+    if (in.op == Op::Abs) out.taken[i] = a < 0.0 ? 1 : 0;
+    out.operands[i] = {a, b};
+    r[in.out] = apply(in.op, a, b, in.imm);
+  }
+  return out;
 }
 
-BranchChoice all_branches(const Tape& tape, const std::vector<std::uint32_t>& switches, const Vec3& p) {
-  std::vector<std::int8_t> taken;
-  run(tape, p, taken);
+BranchChoice active_branches(const Tape& tape, const std::vector<std::uint32_t>& switches, const Vec3& p) {
+  return live_choice(tape, switches, all_branches(switches, switch_values(tape, p)));
+}
+
+BranchChoice all_branches(const std::vector<std::uint32_t>& switches, const SwitchValues& values) {
   BranchChoice choice(switches.size(), kOpen);
-  for (std::size_t s = 0; s < switches.size(); ++s) choice[s] = taken[switches[s]];
+  for (std::size_t s = 0; s < switches.size(); ++s) choice[s] = values.taken[switches[s]];
   return choice;
 }
 
@@ -92,15 +88,12 @@ BranchChoice live_choice(const Tape& tape, const std::vector<std::uint32_t>& swi
 }
 
 int failing_switch(const Tape& tape, const std::vector<std::uint32_t>& switches, const BranchChoice& choice,
-                   const Vec3& p, double tolerance) {
-  std::vector<std::int8_t> taken;
-  std::vector<std::pair<double, double>> operands;
-  run(tape, p, taken, &operands);
+                   const SwitchValues& values, double tolerance) {
   for (std::size_t s = 0; s < switches.size(); ++s) {
     const std::int8_t c = choice[s];
     if (c == kOpen) continue;
     const Instruction& in = tape.code[switches[s]];
-    const auto [a, b] = operands[switches[s]];
+    const auto [a, b] = values.operands[switches[s]];
     bool holds = true;
     if (in.op == Op::Min) holds = c == 0 ? a <= b + tolerance : b <= a + tolerance;
     if (in.op == Op::Max) holds = c == 0 ? a >= b - tolerance : b >= a - tolerance;

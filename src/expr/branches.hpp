@@ -10,6 +10,7 @@
 #include <isopatch/geometry.hpp>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace isopatch::expr {
@@ -28,18 +29,28 @@ std::vector<std::uint32_t> switch_instructions(const Tape& tape);
 /// \pre switches == switch_instructions(tape).
 BranchChoice active_branches(const Tape& tape, const std::vector<std::uint32_t>& switches, const Vec3& p);
 
-/// The branch every switch takes at p, live or dead.
-/// \pre switches == switch_instructions(tape).
-BranchChoice all_branches(const Tape& tape, const std::vector<std::uint32_t>& switches, const Vec3& p);
+/// One run of the tape at a point, kept per instruction: the branch each switch takes and the operands
+/// it compares (the registers are reused, so they are kept as the instruction reads them).
+struct SwitchValues {
+  std::vector<std::int8_t> taken;  ///< kOpen for instructions that are no switch
+  std::vector<std::pair<double, double>> operands;
+};
+
+/// Runs the tape at p once for the queries below.
+SwitchValues switch_values(const Tape& tape, const Vec3& p);
+
+/// The branch every switch takes where `values` were taken, live or dead.
+BranchChoice all_branches(const std::vector<std::uint32_t>& switches, const SwitchValues& values);
 
 /// `full` (a branch for every switch) with the dead switches set to kOpen: the canonical choice of the
 /// face those branches make.
 BranchChoice live_choice(const Tape& tape, const std::vector<std::uint32_t>& switches, BranchChoice full);
 
-/// The first switch (index into `switches`) whose branch in `choice` f does not take at p, a tie within
+/// The first switch (index into `switches`) whose branch in `choice` f does not take where `values` were
+/// taken, a tie within
 /// `tolerance` counting as taken; -1 when f takes all of them there (p lies in the face's region).
 int failing_switch(const Tape& tape, const std::vector<std::uint32_t>& switches, const BranchChoice& choice,
-                   const Vec3& p, double tolerance);
+                   const SwitchValues& values, double tolerance);
 
 /// The tape with every switch whose choice is not kOpen replaced by the copy of its branch (a + 0, or
 /// -a), and the instructions f no longer needs removed: a function equal to f wherever f takes those

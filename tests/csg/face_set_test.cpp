@@ -3,6 +3,7 @@
 
 #include <isopatch/expression.hpp>
 
+#include <array>
 #include <set>
 
 #include "csg/face_set.hpp"
@@ -25,7 +26,7 @@ TEST(FaceSet, TheFacesOfACubeAreItsSixPlanes) {
       // The face's function is the plane s x_a - 1 everywhere.
       const Vec3 far(3.0, -4.0, 5.0);
       EXPECT_DOUBLE_EQ(faces.function(id)->value(far), s * far[a] - 1.0);
-      EXPECT_TRUE(faces.holds(id, p, 1e-12));
+      EXPECT_EQ(faces.boundary_face(std::array{id}, p, 1e-12), -1);
     }
   EXPECT_EQ(ids.size(), 6u);
 }
@@ -35,9 +36,12 @@ TEST(FaceSet, AcrossARegionsEndIsTheNeighbouringFace) {
   const int x_face = faces.face_at({1.0, 0.2, 0.3});
   const int y_face = faces.face_at({0.2, 1.0, 0.3});
   // On the plane x = 1 beyond the edge y = 1 the face y = 1 takes over.
-  EXPECT_FALSE(faces.holds(x_face, {1.0, 1.2, 0.3}, 1e-9));
-  EXPECT_EQ(faces.across(x_face, {1.0, 1.2, 0.3}, 1e-9), y_face);
-  EXPECT_EQ(faces.across(x_face, {1.0, 0.5, 0.3}, 1e-9), -1);
+  EXPECT_EQ(faces.boundary_face(std::array{x_face}, {1.0, 1.2, 0.3}, 1e-9), y_face);
+  EXPECT_EQ(faces.boundary_face(std::array{x_face}, {1.0, 0.5, 0.3}, 1e-9), -1);
+  // Both faces hold on their edge; past its end the face z = 1 takes over from the first that fails.
+  EXPECT_EQ(faces.boundary_face(std::array{x_face, y_face}, {1.0, 1.0, 0.3}, 1e-9), -1);
+  EXPECT_EQ(faces.boundary_face(std::array{x_face, y_face}, {1.0, 1.0, 1.2}, 1e-9),
+            faces.face_at({0.2, 0.3, 1.0}));
 }
 
 TEST(FaceSet, MergedFacesKeepOnlyTheSwitchesTheyDisagreeOnOpen) {

@@ -58,11 +58,12 @@ TEST(Branches, AFaceFunctionIsSmoothAndEqualsFWhereItsBranchesHold) {
   }
   EXPECT_LT(face.tape().code.size(), f.tape().code.size());
   // Where the branches hold it equals f; failing_switch says where they do not.
-  EXPECT_EQ(failing_switch(f.tape(), switches, c, {1.0, 0.2, 0.3}, 1e-12), -1);
+  EXPECT_EQ(failing_switch(f.tape(), switches, c, switch_values(f.tape(), {1.0, 0.2, 0.3}), 1e-12), -1);
   EXPECT_EQ(face.value({1.2, 0.5, -0.4}), f.value({1.2, 0.5, -0.4}));
-  EXPECT_GE(failing_switch(f.tape(), switches, c, {0.2, 1.0, 0.3}, 1e-12), 0);
+  EXPECT_GE(failing_switch(f.tape(), switches, c, switch_values(f.tape(), {0.2, 1.0, 0.3}), 1e-12), 0);
   // A tie within the tolerance counts as taken (a point on a crease).
-  EXPECT_EQ(failing_switch(f.tape(), switches, c, {1.0, 1.0 + 1e-13, 0.3}, 1e-9), -1);
+  EXPECT_EQ(failing_switch(f.tape(), switches, c, switch_values(f.tape(), {1.0, 1.0 + 1e-13, 0.3}), 1e-9),
+            -1);
 }
 
 TEST(Branches, AbsOfOneSignIsOneFunction) {
