@@ -29,6 +29,13 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
                  "warning: %zu corners of the shape's faces are sharper than 25 degrees: the triangles at "
                  "those corners cannot reach the 25 degree floor\n",
                  w.exempt_corners);
+  if (w.uncertain_crease_cells > 0)
+    std::fprintf(out,
+                 "warning: %zu small cells, the first near (%.6g, %.6g, %.6g), may hold a crease by interval "
+                 "arithmetic, but no crease was found in them: a feature much smaller than an edge may be "
+                 "missing there (a smaller --edge-length searches finer)\n",
+                 w.uncertain_crease_cells, w.uncertain_crease_near.x(), w.uncertain_crease_near.y(),
+                 w.uncertain_crease_near.z());
   if (w.creases_leave_box > 0)
     std::fprintf(out,
                  "warning: creases of the shape leave the box: meshed as a smooth surface (creases rounded); "

@@ -139,6 +139,10 @@ struct MeshWarnings {
   /// CSG shapes: corners of pieces sharper than the 25 degree angle floor (two faces or creases meet
   /// at a smaller angle there), where triangles cannot reach the floor.
   std::size_t exempt_corners = 0;
+  /// CSG shapes: cells where interval arithmetic cannot rule out a crease but none was found (one may
+  /// be missing there: a feature far smaller than an edge, or faces meeting along a sheet).
+  std::size_t uncertain_crease_cells = 0;
+  Vec3 uncertain_crease_near = Vec3::Zero();  ///< the centre of the first of them
   /// CSG shapes: 1 when a crease leaves the box, so the shape was meshed as a smooth surface.
   std::size_t creases_leave_box = 0;
 };
@@ -152,7 +156,12 @@ struct CreaseStats {
   std::size_t pieces = 0;        ///< patches meshed
   std::size_t smooth_pairs = 0;  ///< pairs of faces that meet without a crease (merged)
   std::size_t repair_moves = 0;  ///< vertex moves of the last pass over small angles (seams, creases)
-  double seconds = 0.0;          ///< of the analysis
+  /// Interval analysis: cells of the cover where two faces may meet (every crease passes through
+  /// them), creases traced from those cells that the seed grid missed, and cells nothing explained.
+  std::size_t interval_cells = 0;
+  std::size_t interval_creases = 0;
+  std::size_t uncertain_cells = 0;
+  double seconds = 0.0;  ///< of the analysis
 };
 
 /// What multiresolution meshing did (RefineSettings): the level used and what its base was.

@@ -23,6 +23,9 @@ def test_a_cube_keeps_its_edges_and_corners():
     np.testing.assert_allclose(second[near_edge], 1.0, atol=1e-12)
     creases = m.stats["creases"]
     assert (creases["faces"], creases["creases"], creases["corners"]) == (6, 12, 8)
+    # Certified by interval arithmetic: every cell where two faces may meet is explained.
+    assert creases["interval_cells"] > 0 and creases["uncertain_cells"] == 0
+    assert m.stats["warnings"]["uncertain_crease_cells"] == 0
     report = m.analyze()
     assert report["topology"]["watertight"] and report["topology"]["euler_characteristic"] == 2
     assert report["shape"]["min_angle_degrees"]["min"] >= 25.0

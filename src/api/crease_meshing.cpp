@@ -62,11 +62,16 @@ CreasedMesh mesh_along_creases(const Surface& surface, const Settings& settings,
     c.pieces = model.patch_count();
     c.smooth_pairs = shape->smooth_pairs;
     c.repair_moves = repair.moved;
+    c.interval_cells = shape->certificate.cells;
+    c.interval_creases = shape->certificate.found;
+    c.uncertain_cells = shape->certificate.uncertain;
     c.seconds = seconds;
     stats->creases = c;
     stats->seconds += seconds;
     stats->times.add("creases", seconds);
     stats->warnings.exempt_corners = shape->exempt_corners;
+    stats->warnings.uncertain_crease_cells = shape->certificate.uncertain;
+    stats->warnings.uncertain_crease_near = shape->certificate.first_uncertain;
   }
   return {std::move(mesh), false};
 }

@@ -126,11 +126,15 @@ void visit_stats(
     v("pieces", count(c->pieces));
     v("smooth_pairs", count(c->smooth_pairs));
     v("repair_moves", count(c->repair_moves));
+    v("interval_cells", count(c->interval_cells));
+    v("interval_creases", count(c->interval_creases));
+    v("uncertain_cells", count(c->uncertain_cells));
     v("seconds", c->seconds);
   }
   const MeshWarnings& w = stats.warnings;
   const auto v = [&](std::string_view name, double value) { visit("warnings", name, value); };
   if (stats.creases) v("exempt_corners", count(w.exempt_corners));
+  if (stats.creases) v("uncertain_crease_cells", count(w.uncertain_crease_cells));
   if (w.creases_leave_box > 0) v("creases_leave_box", count(w.creases_leave_box));
   if (stats.projection) {
     v("doubtful_cells", count(w.doubtful_cells));

@@ -62,6 +62,7 @@ std::optional<CsgShape> analyse_csg(const Surface& surface, const Box& box, doub
   shape.creases = search.graph.curves.size();
   shape.corners = search.graph.nodes.size();
   shape.smooth_pairs = search.smooth_pairs;
+  shape.certificate = search.certificate;
   CreaseGraph& graph = search.graph;
   for (GraphCurve& c : graph.curves)
     if (c.start == c.end) --shape.corners;  // a closed loop's node is no corner

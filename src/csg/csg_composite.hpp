@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "composite_model/composite.hpp"
+#include "csg/crease_search.hpp"
 #include "csg/face_set.hpp"
 
 namespace isopatch {
@@ -29,6 +30,8 @@ struct CsgShape {
   std::size_t smooth_pairs = 0;  ///< pairs of faces merged because they meet without a crease
   /// Corners of pieces whose angle is below the triangle angle floor: triangles there cannot reach it.
   std::size_t exempt_corners = 0;
+  /// What the interval cover certified: where two faces may meet and what explained each place.
+  CreaseCertificate certificate;
   std::vector<SurfacePtr> face_functions;  ///< the function of every face that has pieces
   /// The faces as the analysis left them (merged where they meet smoothly): which face a point of the
   /// shape belongs to, for measures and tests (not thread-safe while it meets new faces).

@@ -7,6 +7,7 @@
 #include <isopatch/resolve_surface.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <span>
@@ -127,6 +128,21 @@ int FaceSet::boundary_face(std::span<const int> faces, const Vec3& p, double tol
     return id_of(expr::live_choice(tape, tapes_->switches, std::move(full)));
   }
   return -1;
+}
+
+const Expression& FaceSet::expression() const {
+  return tapes_->whole;
+}
+
+std::pair<int, int> FaceSet::faces_across(int s, const Vec3& p) {
+  const expr::Tape& tape = tapes_->whole.tape();
+  std::vector<std::int8_t> full = expr::all_branches(tapes_->switches, expr::switch_values(tape, p));
+  std::array<int, 2> sides{};
+  for (std::int8_t branch = 0; branch < 2; ++branch) {
+    full[static_cast<std::size_t>(s)] = branch;
+    sides[static_cast<std::size_t>(branch)] = id_of(expr::live_choice(tape, tapes_->switches, full));
+  }
+  return {sides[0], sides[1]};
 }
 
 int FaceSet::root(int face) const {

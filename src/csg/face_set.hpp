@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace isopatch {
@@ -41,6 +42,10 @@ class FaceSet {
   /// first one's region boundary at p: its branches with the first one f does not take switched over,
   /// the rest as f takes them there (possibly a new face). One run of f's tape.
   int boundary_face(std::span<const int> faces, const Vec3& p, double tolerance);
+  /// The two (merged) faces on either side of switch `s` at p: the branches f takes at p with switch s
+  /// taken one way and the other, the dead switches left open (either may be a new face).
+  /// \pre 0 <= s < the number of switches of expression().tape() (expr::switch_instructions()).
+  std::pair<int, int> faces_across(int s, const Vec3& p);
   /// Merges two faces that meet without a crease. \pre both ids came from face_at().
   void merge(int a, int b);
   /// The merged face of a face id (the smallest id merged with it).
@@ -53,6 +58,8 @@ class FaceSet {
   /// A bound of the face's region for the projection (composite.hpp bounds): -|f - f_face|, zero where
   /// f takes the face's branches and, to first order, minus the distance to that region elsewhere.
   SurfacePtr region_bound(int face);
+  /// The expression of f.
+  const Expression& expression() const;
   /// The whole function f as a surface.
   const SurfacePtr& whole() const { return whole_; }
   /// Number of face ids handed out (merged ones included).

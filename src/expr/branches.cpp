@@ -103,6 +103,15 @@ int failing_switch(const Tape& tape, const std::vector<std::uint32_t>& switches,
   return -1;
 }
 
+std::vector<int> open_live_switches(const Tape& tape, const std::vector<std::uint32_t>& switches,
+                                    const std::vector<std::int8_t>& decided) {
+  const std::vector<bool> live = live_instructions(tape, decided);
+  std::vector<int> out;
+  for (std::size_t s = 0; s < switches.size(); ++s)
+    if (live[switches[s]] && decided[switches[s]] == kOpen) out.push_back(static_cast<int>(s));
+  return out;
+}
+
 Tape specialise(const Tape& tape, const std::vector<std::uint32_t>& switches, const BranchChoice& choice) {
   std::vector<std::int8_t> fixed(tape.code.size(), kOpen);
   for (std::size_t s = 0; s < switches.size(); ++s) fixed[switches[s]] = choice[s];

@@ -52,6 +52,13 @@ BranchChoice live_choice(const Tape& tape, const std::vector<std::uint32_t>& swi
 int failing_switch(const Tape& tape, const std::vector<std::uint32_t>& switches, const BranchChoice& choice,
                    const SwitchValues& values, double tolerance);
 
+/// The switches (indices into `switches`) whose branch `decided` leaves open (-1) and whose result
+/// reaches f when every decided switch is fixed to its branch: where f may change from one face to
+/// another. `decided` holds one entry per instruction, as evaluate_interval_branches() fills it.
+/// \pre decided.size() == tape.code.size(), switches == switch_instructions(tape).
+std::vector<int> open_live_switches(const Tape& tape, const std::vector<std::uint32_t>& switches,
+                                    const std::vector<std::int8_t>& decided);
+
 /// The tape with every switch whose choice is not kOpen replaced by the copy of its branch (a + 0, or
 /// -a), and the instructions f no longer needs removed: a function equal to f wherever f takes those
 /// branches, smooth wherever its remaining operations are.

@@ -29,8 +29,8 @@ Interval apply_interval(Op op, const Interval& a, const Interval& b, double c) {
       return powi(a, static_cast<int>(c));
     case Op::PowC:
       return pow(a, c);
-    case Op::AddC:
-      return a + point(c);
+    case Op::AddC:  // x + 0 is exact: the copies specialise() makes of a switch's branch stay exact
+      return c == 0.0 ? a : a + point(c);
     case Op::MulC:
       return a * point(c);
     case Op::RSubC:
@@ -237,6 +237,25 @@ IntervalGradient evaluate_interval_gradient(const Tape& tape, const Box& box) {
     r[c.reg] = {point(c.value), {point(0.0), point(0.0), point(0.0)}};
   for (const Instruction& in : tape.code) r[in.out] = step(in, r[in.a], r[in.b]);
   return {r[tape.result].v, r[tape.result].g};
+}
+
+Interval evaluate_interval_branches(const Tape& tape, const Box& box, std::vector<std::int8_t>& decided) {
+  decided.assign(tape.code.size(), -1);
+  Interval* r = thread_registers<Interval>(tape.registers);
+  for (int k = 0; k < 3; ++k) r[k] = {box.lo[k], box.hi[k]};
+  for (const ConstantRegister& c : tape.constants) r[c.reg] = point(c.value);
+  for (std::size_t i = 0; i < tape.code.size(); ++i) {
+    const Instruction& in = tape.code[i];
+    const Interval a = r[in.a], b = r[in.b];
+    // The point evaluators' branches (scalar.hpp): min takes b where b < a, max takes b where a < b,
+    // abs negates where a < 0; a tie takes operand a.
+    std::int8_t& d = decided[i];
+    if (in.op == Op::Min) d = a.hi <= b.lo ? 0 : (b.hi < a.lo ? 1 : -1);
+    if (in.op == Op::Max) d = b.hi <= a.lo ? 0 : (a.hi < b.lo ? 1 : -1);
+    if (in.op == Op::Abs) d = a.lo >= 0.0 ? 0 : (a.hi < 0.0 ? 1 : -1);
+    r[in.out] = apply_interval(in.op, a, b, in.imm);
+  }
+  return r[tape.result];
 }
 
 }  // namespace isopatch::expr

@@ -49,8 +49,8 @@ UnaryEnclosure unary_enclosure(Op op, const Interval& a, double c) {
       const Interval d2 = c == 0.0 || c == 1.0 ? zero : exact_interval(c * (c - 1.0)) * pow(a, c - 2.0);
       return {pow(a, c), c == 0.0 ? zero : exact_interval(c) * pow(a, c - 1.0), d2};
     }
-    case Op::AddC:
-      return {a + exact_interval(c), one, zero};
+    case Op::AddC:  // x + 0 is exact (the copies specialise() makes)
+      return {c == 0.0 ? a : a + exact_interval(c), one, zero};
     case Op::MulC:
       return {a * exact_interval(c), exact_interval(c), zero};
     case Op::RSubC:

@@ -10,7 +10,9 @@
 #include <isopatch/interval.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 namespace isopatch::expr {
 
@@ -28,5 +30,12 @@ void evaluate_batch(const Tape& tape, std::span<const Vec3> points, std::span<do
 Interval evaluate_interval(const Tape& tape, const Box& box);
 IntervalGradient evaluate_interval_gradient(const Tape& tape, const Box& box);
 IntervalHessian evaluate_interval_hessian(const Tape& tape, const Box& box);
+
+/// An enclosure of f over the box, as evaluate_interval(), with the branch every min, max and abs
+/// instruction takes at all points of the box: decided[i] is 0 or 1 as switch_values() numbers the
+/// branches (branches.hpp), or -1 where points of the box may take either (and for instructions that
+/// are no switch). Sound for the computed values, ties included (interval_math.hpp).
+/// \post decided.size() == tape.code.size().
+Interval evaluate_interval_branches(const Tape& tape, const Box& box, std::vector<std::int8_t>& decided);
 
 }  // namespace isopatch::expr

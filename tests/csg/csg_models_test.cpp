@@ -92,6 +92,10 @@ const Model kModels[] = {
      {Vec3(-1.5, -1.5, -1.5), Vec3(3.5, 1.5, 1.5)},
      4,
      0.0},
+    // A corner cut off by a plane, its triangle (side 0.028) narrower than the seed grid's cells (0.047):
+    // the grid does not see it, the interval cover does.
+    {"corner_cut_below_the_grid", "max(max(max(abs(x),abs(y)),abs(z))-1,x+y+z-2.98)", cube(1.5), 2,
+     8.0 - 0.02 * 0.02 * 0.02 / 6.0},
     {"bolt_plate_50_primitives", bolt_plate(), {Vec3(-3.2, -3.2, -0.5), Vec3(3.2, 3.2, 0.5)}, -96, 0.0, 0.05},
 };
 
@@ -120,6 +124,10 @@ TEST_P(CsgModel, IsMeshedAlongItsCreases) {
   EXPECT_GT(near, 0u) << m.name;
   EXPECT_LT(residual, 1e-9 * diagonal) << m.name;
   EXPECT_EQ(run.stats.warnings.exempt_corners, 0u) << m.name;
+  // Certified: every place two faces may meet was explained.
+  EXPECT_GT(run.stats.creases->interval_cells, 0u) << m.name;
+  EXPECT_EQ(run.stats.creases->uncertain_cells, 0u) << m.name;
+  EXPECT_EQ(run.stats.warnings.uncertain_crease_cells, 0u) << m.name;
   EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0) << m.name;
   EXPECT_GE(valence6_share(run.mesh), 0.90) << m.name;
   if (m.volume > 0.0) {
@@ -129,6 +137,15 @@ TEST_P(CsgModel, IsMeshedAlongItsCreases) {
 
 INSTANTIATE_TEST_SUITE_P(Issue37, CsgModel, ::testing::ValuesIn(kModels),
                          [](const auto& model) { return std::string(model.param.name); });
+
+TEST(CsgCertificate, TheCreasesOfACornerCutNarrowerThanTheSeedGridAreFoundByIntervals) {
+  const test::CsgRun run = test::mesh_csg("max(max(max(abs(x),abs(y)),abs(z))-1,x+y+z-2.98)", cube(1.5));
+  ASSERT_TRUE(run.stats.creases);
+  EXPECT_EQ(run.stats.creases->faces, 7u);
+  EXPECT_EQ(run.stats.creases->creases, 15u);
+  // The cut's three creases: the seed grid has no vertex on the cut, the cover's cells do.
+  EXPECT_EQ(run.stats.creases->interval_creases, 3u);
+}
 
 TEST(CsgDihedral, TheAngleAcrossACurvedCreaseConvergesWithTheEdge) {
   // A sphere with a cylindrical hole: faces meet at 120 degrees between their normals on two circles.

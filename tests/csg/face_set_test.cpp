@@ -69,5 +69,18 @@ TEST(FaceSet, TheRegionBoundIsZeroOnTheFaceAndNegativeBeyondIt) {
   EXPECT_DOUBLE_EQ(plane->value({3.0, 1.0, 2.0}), 1.5);
 }
 
+TEST(FaceSet, TheFacesAcrossASwitchAreItsTwoSides) {
+  FaceSet faces(parse_expression("max(max(abs(x),abs(y)),abs(z))-1"), kFaceBox);
+  // Switch 3 in tape order is the max of |x| and |y| (abs x, abs y, max, abs z, max): at a point of the
+  // edge x = y = 1 its sides are the faces x = 1 and y = 1.
+  const auto [a, b] = faces.faces_across(2, {1.0, 1.0, 0.3});
+  EXPECT_EQ((std::set<int>{a, b}),
+            (std::set<int>{faces.face_at({1.0, 0.2, 0.3}), faces.face_at({0.2, 1.0, 0.3})}));
+  // The outer max at a point of the face z = 1: z = 1 against the face the inner max takes there.
+  const auto [c, d] = faces.faces_across(4, {0.5, 0.2, 1.0});
+  EXPECT_EQ((std::set<int>{c, d}),
+            (std::set<int>{faces.face_at({0.5, 0.2, 1.0}), faces.face_at({1.0, 0.2, 0.5})}));
+}
+
 }  // namespace
 }  // namespace isopatch
