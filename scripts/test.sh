@@ -35,7 +35,9 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
         -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=OFF -DISOPATCH_BUILD_PYTHON=OFF -DISOPATCH_SANITIZE=address,undefined \
         -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 >/dev/null
   cmake --build build-sanitize -j"$jobs"
+  # tests/support/lsan.supp: leaks inside third-party libraries (libzip under lib3mf's reader).
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  LSAN_OPTIONS="suppressions=$PWD/tests/support/lsan.supp" \
     ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive|validation|python|browser"
 fi
 # Fuzz targets (fuzz/, libFuzzer with clang++, ASan + UBSan): every committed corpus input (including

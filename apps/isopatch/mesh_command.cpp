@@ -197,7 +197,9 @@ Runner add_mesh_command(CLI::App& app) {
          "Catalogue name (see 'isopatch surfaces'), a formula, @file, a sampled volume (.npy, .nrrd) or a "
          "composite surface (.ipatch: control polyhedron or setback blends)")
       ->required();
-  cmd->add_option("-o,--output", o->output, "Output mesh: .ply, .obj, .off, .stl or .glb (glTF 2.0 binary)")
+  cmd->add_option("-o,--output", o->output,
+                  "Output mesh: .ply, .obj, .off, .stl, .glb (glTF 2.0 binary) or .3mf (3MF for printing, "
+                  "millimetres)")
       ->required();
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
   cmd->add_option("--box", o->box,

@@ -1,7 +1,8 @@
 #pragma once
 /// \file mesh_io.hpp
 /// Reading and writing meshes: OBJ, PLY (ASCII and binary, with per-vertex float attributes), OFF and
-/// STL; writing glTF 2.0 binary (.glb). The format is chosen by the file extension (case-insensitive).
+/// STL; writing glTF 2.0 binary (.glb) and 3MF (.3mf). The format is chosen by the file extension
+/// (case-insensitive).
 ///
 /// Writers: positions in double precision as the shortest decimal that reads back to the same double
 /// (OBJ, OFF, ASCII PLY; exact like %.17g, but shorter) or as raw doubles (binary little-endian PLY),
@@ -15,6 +16,12 @@
 /// kGlbUndefined. A double-sided, non-metallic white material shows COLOR_0 as it is. The node turns
 /// the mesh from isopatch's z up to glTF's y up; positions stay as they are. Reading glTF is not
 /// supported (IoError).
+///
+/// 3MF (3MF Consortium core specification 1.2, the package slicers read; written by Debian's lib3mf):
+/// one mesh object holding the whole mesh, positions as floats in millimetres (lib3mf prints six
+/// decimals: a nanometre), triangles as they are (counter-clockwise seen from outside, as 3MF asks), one
+/// build item without a transform, identifiers derived from the content so the same mesh gives the same
+/// bytes. Attributes and colours are not written. Reading 3MF is not supported (IoError).
 ///
 /// Readers: OBJ keeps `v` and `f` (corners `a`, `a/b`, `a//c`, `a/b/c`; negative = relative; a face
 /// may refer only to vertices defined before it) and skips the other statements of the OBJ
@@ -41,12 +48,12 @@
 
 namespace isopatch {
 
-enum class MeshFormat { Obj, PlyAscii, PlyBinary, Off, Stl, Glb };
+enum class MeshFormat { Obj, PlyAscii, PlyBinary, Off, Stl, Glb, ThreeMf };
 
 /// What a glTF attribute holds where the mesh's value is NaN or infinite (the lowest float).
 inline constexpr float kGlbUndefined = -std::numeric_limits<float>::max();
 
-/// The format for a path from its extension (.obj, .ply -> binary PLY, .off, .stl, .glb).
+/// The format for a path from its extension (.obj, .ply -> binary PLY, .off, .stl, .glb, .3mf).
 /// \throw IoError for an unknown extension.
 MeshFormat format_from_path(const std::string& path);
 
@@ -55,7 +62,8 @@ MeshFormat format_from_path(const std::string& path);
 /// `vertex_colours` (linear RGB in [0, 1], one per vertex, or empty for none) are written in glTF only,
 /// as COLOR_0 (render.hpp's field_vertex_colours() makes them from a field).
 /// \throw IoError if the file cannot be written; InputError if mesh.validate() fails, or for glTF a
-///        mesh without triangles or a colour count that is not the vertex count.
+///        mesh without triangles or a colour count that is not the vertex count, or for 3MF a mesh
+///        without triangles or with more than 2^32 - 1 vertices or triangles.
 void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
                 const std::vector<Vec3>& vertex_colours = {});
 /// Same, with the format from the extension.
@@ -72,7 +80,7 @@ Mesh read_mesh(const std::string& path);
 std::string encode_mesh(const Mesh& mesh, MeshFormat format, const std::vector<Vec3>& vertex_colours = {});
 /// Parses bytes as read_mesh would parse a file; `name` stands for the file in error messages.
 /// PlyAscii and PlyBinary both accept any PLY encoding (ASCII, binary little- or big-endian).
-/// \throw IoError for malformed, truncated or lying bytes, and for Glb (not read).
+/// \throw IoError for malformed, truncated or lying bytes, and for Glb and ThreeMf (not read).
 Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& name = "<memory>");
 
 }  // namespace isopatch

@@ -77,7 +77,7 @@ class Mesh:
         return self._result.stats()
 
     def write(self, path: str, fields: bool = False) -> None:
-        """Writes the mesh, the format from the extension (.ply, .obj, .off, .stl). With fields=True the
+        """Writes the mesh, the format from the extension (.ply, .obj, .off, .stl, .glb, .3mf). With fields=True the
         fields are stored as PLY vertex attributes. Raises IoError when the file cannot be written."""
         self._result.write(str(path), bool(fields))
 

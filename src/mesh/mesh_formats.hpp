@@ -30,4 +30,9 @@ Mesh decode_stl(std::string_view bytes, const std::string& name);
 /// for a mesh without triangles or a colour count that is not the vertex count.
 std::string encode_glb(const Mesh& mesh, const std::vector<Vec3>& colours);
 
+/// 3MF (3MF core specification 1.2) through lib3mf: one mesh object in millimetres, one build item,
+/// identifiers from the content. Throws InputError for a mesh without triangles or more than 2^32 - 1
+/// vertices or triangles, IoError when lib3mf fails.
+std::string encode_3mf(const Mesh& mesh);
+
 }  // namespace isopatch::io

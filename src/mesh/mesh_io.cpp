@@ -1,5 +1,6 @@
 // Public entry points of mesh I/O: the format from the extension, then one encoder or decoder per
-// format (obj_io.cpp, ply_io.cpp, off_io.cpp, stl_io.cpp). Files are read whole and written whole.
+// format (obj_io.cpp, ply_io.cpp, off_io.cpp, stl_io.cpp; glb_io.cpp and threemf_io.cpp write only). Files
+// are read whole and written whole.
 #include <isopatch/mesh_io.hpp>
 
 #include "mesh/io_util.hpp"
@@ -18,7 +19,9 @@ MeshFormat format_from_path(const std::string& path) {
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".stl") return MeshFormat::Stl;
   if (ext == ".glb") return MeshFormat::Glb;
-  throw IoError(path + ": unknown mesh file extension '" + ext + "' (use .obj, .ply, .off, .stl or .glb)");
+  if (ext == ".3mf") return MeshFormat::ThreeMf;
+  throw IoError(path + ": unknown mesh file extension '" + ext +
+                "' (use .obj, .ply, .off, .stl, .glb or .3mf)");
 }
 
 std::string encode_mesh(const Mesh& mesh, MeshFormat format, const std::vector<Vec3>& vertex_colours) {
@@ -36,6 +39,8 @@ std::string encode_mesh(const Mesh& mesh, MeshFormat format, const std::vector<V
       return io::encode_stl(mesh);
     case MeshFormat::Glb:
       return io::encode_glb(mesh, vertex_colours);
+    case MeshFormat::ThreeMf:
+      return io::encode_3mf(mesh);
   }
   throw InputError("unknown mesh format");
 }
@@ -55,6 +60,10 @@ Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& n
       throw IoError(name +
                     ": reading glTF is not supported (isopatch writes .glb; read .ply, .obj, .off "
                     "or .stl)");
+    case MeshFormat::ThreeMf:
+      throw IoError(name +
+                    ": reading 3MF is not supported (isopatch writes .3mf for printing; read .ply, .obj, "
+                    ".off or .stl)");
   }
   throw InputError("unknown mesh format");
 }

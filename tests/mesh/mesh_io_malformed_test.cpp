@@ -33,6 +33,8 @@ const char* label(MeshFormat format) {
       return "stl";
     case MeshFormat::Glb:
       return "glb";
+    case MeshFormat::ThreeMf:
+      return "3mf";
   }
   return "?";
 }
