@@ -13,6 +13,9 @@ struct Interval {
 
   bool contains(double v) const { return lo <= v && v <= hi; }
   bool contains_zero() const { return lo <= 0.0 && 0.0 <= hi; }
+  /// Whether 0 lies outside [lo, hi] for certain: false when a bound is NaN (an interval evaluation
+  /// that lost track of the value proves nothing), unlike !contains_zero().
+  bool excludes_zero() const { return lo > 0.0 || hi < 0.0; }
   bool empty() const { return !(lo <= hi); }
   double width() const { return hi - lo; }
 };

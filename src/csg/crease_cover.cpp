@@ -72,7 +72,7 @@ CreaseCover crease_cover(FaceSet& faces, const Box& box, double leaf, std::size_
     }
     ++out.examined;
     const Interval range = expr::evaluate_interval_branches(f->tape, cell, decided);
-    if (range.lo > 0.0 || range.hi < 0.0) {  // a NaN bound may vanish
+    if (range.excludes_zero()) {
       ++out.without_surface;
       continue;
     }
@@ -90,10 +90,10 @@ CreaseCover crease_cover(FaceSet& faces, const Box& box, double leaf, std::size_
     }
     CreaseCell c;
     c.box = cell;
-    for (const int s : open) {
-      const auto [a, b] = faces.faces_across(f->original[static_cast<std::size_t>(s)], cell.centre());
+    std::vector<int> switches;
+    for (const int s : open) switches.push_back(f->original[static_cast<std::size_t>(s)]);
+    for (const auto& [a, b] : faces.faces_across(switches, cell.centre()))
       if (a != b) c.pairs.emplace_back(std::min(a, b), std::max(a, b));
-    }
     std::sort(c.pairs.begin(), c.pairs.end());
     c.pairs.erase(std::unique(c.pairs.begin(), c.pairs.end()), c.pairs.end());
     if (c.pairs.empty()) {

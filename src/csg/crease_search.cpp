@@ -105,6 +105,7 @@ enum class SeedOutcome {
   Unsettled,  ///< Newton found no point of both functions near it
   Flush,      ///< the two functions vanish together on a surface there (coincident faces, a sheet)
   Touch,      ///< the two faces touch there with nearly parallel gradients and do not cross
+  Met,        ///< near a place where the pair was already found flush or touching
   CutAway,    ///< its point is cut away by a third face (whose pairs were seeded)
   NotFaces,   ///< both functions vanish there, but not as faces of the shape
   Smooth,     ///< the faces meet there without a crease
@@ -179,7 +180,8 @@ class Search {
         if (traced_.near(pair, centre)) continue;
         const SeedOutcome outcome = process(pair, centre, true);
         if (!drain()) return false;
-        if (outcome == SeedOutcome::Flush || outcome == SeedOutcome::Touch) ++c.touching;
+        if (outcome == SeedOutcome::Flush || outcome == SeedOutcome::Touch || outcome == SeedOutcome::Met)
+          ++c.touching;
         if (outcome != SeedOutcome::Unsettled && outcome != SeedOutcome::CutAway) continue;
         if (cannot_vanish(*faces_.function(pair.first), cell.box) ||
             cannot_vanish(*faces_.function(pair.second), cell.box))
@@ -241,21 +243,25 @@ class Search {
   bool real_face(int face, const Surface& g, const Surface& other, const Vec3& p) {
     const Vec3 n = g.value_gradient(p).gradient.normalized();
     const Vec3 along = n.cross(other.value_gradient(p).gradient).cross(n).normalized();
-    const Surface& f = *faces_.whole();
-    for (const double side : {1.0, -1.0}) {
-      Vec3 q = p + side * kProbeShare * h_ * along;
-      if (!project_to_surface(Sampler(g), q, seed_params_.tolerance, h_)) continue;
-      const Vec3 nq = g.value_gradient(q).gradient.normalized();
-      const double across = kAcrossShare * h_;
-      if (faces_.face_at(q) == face && f.value(q + across * nq) > 0.0 && f.value(q - across * nq) < 0.0)
-        return true;
-    }
-    return false;
+    return face_beside(face, g, p, along) || face_beside(face, g, p, -along);
   }
 
+  /// Whether `face` (function g) is a face of the solid at the point of g = 0 nearest to a step of a
+  /// probe share of the grid cell from p along `direction` (unit): f takes the face's branches there and
+  /// changes sign across it (two solids touching along a face give f = 0 with f < 0 on both sides).
+  bool face_beside(int face, const Surface& g, const Vec3& p, const Vec3& direction) {
+    Vec3 q = p + kProbeShare * h_ * direction;
+    if (!project_to_surface(Sampler(g), q, seed_params_.tolerance, h_)) return false;
+    const Vec3 nq = g.value_gradient(q).gradient.normalized();
+    const double across = kAcrossShare * h_;
+    const Surface& f = *faces_.whole();
+    return faces_.face_at(q) == face && f.value(q + across * nq) > 0.0 && f.value(q - across * nq) < 0.0;
+  }
+
+  /// Whether intervals prove g has no zero in the cell (none when g has no interval evaluator).
   static bool cannot_vanish(const Surface& g, const Box& cell) {
     const std::optional<Interval> range = g.bound(cell);
-    return range && (range->lo > 0.0 || range->hi < 0.0);
+    return range && range->excludes_zero();
   }
 
   /// Runs the queued seeds. False when a crease leaves the box.
@@ -272,7 +278,7 @@ class Search {
   /// the crease traced through it. A seed from the cover that meets no crease is not a contact.
   SeedOutcome process(std::pair<int, int> pair, const Vec3& seed, bool from_cover) {
     if (traced_.near(pair, seed)) return SeedOutcome::Known;
-    if (from_cover && met_.near(pair, seed)) return SeedOutcome::Flush;
+    if (from_cover && met_.near(pair, seed)) return SeedOutcome::Met;
     const Surface& a = *faces_.function(pair.first);
     const Surface& b = *faces_.function(pair.second);
     const std::optional<Vec3> settled = settle_on_curve(a, b, seed, seed_params_);
@@ -368,18 +374,8 @@ class Search {
     const Vec3 t =
         (curve.points[std::min(mid + 1, curve.points.size() - 1)] - curve.points[mid == 0 ? 0 : mid - 1])
             .normalized();
-    const ValueGradient ga = a.value_gradient(m);
-    const Vec3 left = ga.gradient.normalized().cross(t);
-    Vec3 q = m + kProbeShare * h_ * left;
-    const ValueGradient gq = a.value_gradient(q);
-    q -= gq.value / gq.gradient.squaredNorm() * gq.gradient;
-    // A real point of the face: f changes sign across it (two solids touching along a face give f = 0
-    // with f < 0 on both sides there).
-    const Vec3 na = gq.gradient.normalized();
-    const double across = kAcrossShare * h_;
-    const Surface& f = *faces_.whole();
-    const bool first_on_left = on_shape(q, a) && faces_.face_at(q) == pair.first &&
-                               f.value(q + across * na) > 0.0 && f.value(q - across * na) < 0.0;
+    const Vec3 left = a.value_gradient(m).gradient.normalized().cross(t).normalized();
+    const bool first_on_left = face_beside(pair.first, a, m, left);
     curve.left = first_on_left ? pair.first : pair.second;
     curve.right = first_on_left ? pair.second : pair.first;
     return curve;

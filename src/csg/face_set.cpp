@@ -134,15 +134,21 @@ const Expression& FaceSet::expression() const {
   return tapes_->whole;
 }
 
-std::pair<int, int> FaceSet::faces_across(int s, const Vec3& p) {
+std::vector<std::pair<int, int>> FaceSet::faces_across(std::span<const int> switches, const Vec3& p) {
   const expr::Tape& tape = tapes_->whole.tape();
-  std::vector<std::int8_t> full = expr::all_branches(tapes_->switches, expr::switch_values(tape, p));
-  std::array<int, 2> sides{};
-  for (std::int8_t branch = 0; branch < 2; ++branch) {
-    full[static_cast<std::size_t>(s)] = branch;
-    sides[static_cast<std::size_t>(branch)] = id_of(expr::live_choice(tape, tapes_->switches, full));
+  const std::vector<std::int8_t> taken = expr::all_branches(tapes_->switches, expr::switch_values(tape, p));
+  std::vector<std::pair<int, int>> out;
+  out.reserve(switches.size());
+  for (const int s : switches) {
+    std::vector<std::int8_t> full = taken;
+    std::array<int, 2> sides{};
+    for (std::int8_t branch = 0; branch < 2; ++branch) {
+      full[static_cast<std::size_t>(s)] = branch;
+      sides[static_cast<std::size_t>(branch)] = id_of(expr::live_choice(tape, tapes_->switches, full));
+    }
+    out.emplace_back(sides[0], sides[1]);
   }
-  return {sides[0], sides[1]};
+  return out;
 }
 
 int FaceSet::root(int face) const {

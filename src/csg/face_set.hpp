@@ -42,10 +42,11 @@ class FaceSet {
   /// first one's region boundary at p: its branches with the first one f does not take switched over,
   /// the rest as f takes them there (possibly a new face). One run of f's tape.
   int boundary_face(std::span<const int> faces, const Vec3& p, double tolerance);
-  /// The two (merged) faces on either side of switch `s` at p: the branches f takes at p with switch s
-  /// taken one way and the other, the dead switches left open (either may be a new face).
-  /// \pre 0 <= s < the number of switches of expression().tape() (expr::switch_instructions()).
-  std::pair<int, int> faces_across(int s, const Vec3& p);
+  /// For each switch s of `switches`, the two (merged) faces on either side of it at p: the branches f
+  /// takes at p with switch s taken one way and the other, the dead switches left open (either may be a
+  /// new face). One run of f's tape for all of them.
+  /// \pre each s in 0 .. the number of switches of expression().tape() (expr::switch_instructions()).
+  std::vector<std::pair<int, int>> faces_across(std::span<const int> switches, const Vec3& p);
   /// Merges two faces that meet without a crease. \pre both ids came from face_at().
   void merge(int a, int b);
   /// The merged face of a face id (the smallest id merged with it).

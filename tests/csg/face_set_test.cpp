@@ -5,6 +5,8 @@
 
 #include <array>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "csg/face_set.hpp"
 
@@ -73,13 +75,19 @@ TEST(FaceSet, TheFacesAcrossASwitchAreItsTwoSides) {
   FaceSet faces(parse_expression("max(max(abs(x),abs(y)),abs(z))-1"), kFaceBox);
   // Switch 3 in tape order is the max of |x| and |y| (abs x, abs y, max, abs z, max): at a point of the
   // edge x = y = 1 its sides are the faces x = 1 and y = 1.
-  const auto [a, b] = faces.faces_across(2, {1.0, 1.0, 0.3});
+  const std::array<int, 1> inner{2};
+  const auto [a, b] = faces.faces_across(inner, {1.0, 1.0, 0.3}).at(0);
   EXPECT_EQ((std::set<int>{a, b}),
             (std::set<int>{faces.face_at({1.0, 0.2, 0.3}), faces.face_at({0.2, 1.0, 0.3})}));
   // The outer max at a point of the face z = 1: z = 1 against the face the inner max takes there.
-  const auto [c, d] = faces.faces_across(4, {0.5, 0.2, 1.0});
+  const std::array<int, 2> both{2, 4};
+  const std::vector<std::pair<int, int>> sides = faces.faces_across(both, {0.5, 0.2, 1.0});
+  ASSERT_EQ(sides.size(), 2U);
+  const auto [c, d] = sides[1];
   EXPECT_EQ((std::set<int>{c, d}),
             (std::set<int>{faces.face_at({0.5, 0.2, 1.0}), faces.face_at({1.0, 0.2, 0.5})}));
+  // The inner max is not a crease there: both its sides are the face z = 1.
+  EXPECT_EQ(sides[0].first, sides[0].second);
 }
 
 }  // namespace
