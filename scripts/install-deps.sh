@@ -11,6 +11,7 @@ packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libcli11-de
           python3-dev pybind11-dev python3-numpy python3-pytest python3-meshio python3-skimage
           libtinygltf-dev libcpp-httplib-dev lib3mf-dev nodejs npm chromium doxygen)
 packages+=(prusa-slicer)  # the tests' slicer: python/tests/test_print_clients.py runs prusa-slicer --info
+packages+=(python3-distributed)  # isopatch.distributed: blocked runs on Dask (docs/distributed.md)
 packages+=(clang-format clang-tidy)  # scripts/check_format.sh, scripts/check_tidy.sh (version 14 on Debian 12)
 [ "${1:-}" = "--bench" ] && packages+=(libvtk9-dev time)
 missing=()

@@ -15,18 +15,24 @@
 # was analysed before, seconds for what passed unchanged). Each fails the run at its end, listing its
 # findings (the tests still run, so one run shows everything). ISOPATCH_LINT=0 skips both.
 # Set ISOPATCH_SKIP_SANITIZERS=1 to skip the second pass when iterating locally.
+# Every phase prints the seconds since the start, so that a CI log shows where its time goes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+phase() { echo "isopatch: [${SECONDS} s] $*"; }
+phase "installing what is missing"
 scripts/install-deps.sh
 jobs="$(nproc)"
+phase "building build-test"
 cmake -S . -B build-test -G Ninja -DCMAKE_BUILD_TYPE=Release -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=ON -DISOPATCH_BUILD_CGAL_PEER=OFF \
       -DPython_EXECUTABLE=/usr/bin/python3 >/dev/null
 cmake --build build-test -j"$jobs"
 lint=ok
 if [ "${ISOPATCH_LINT:-1}" != 0 ]; then
+  phase "format and clang-tidy"
   scripts/check_format.sh || lint="$lint format"
   scripts/check_tidy.sh build-test || lint="$lint clang-tidy"
 fi
+phase "the test suite (build-test)"
 ctest --test-dir build-test --output-on-failure -j"$jobs"
 if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
   echo "isopatch: the same suite under AddressSanitizer and UndefinedBehaviorSanitizer"
@@ -34,7 +40,9 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
   cmake -S . -B build-sanitize -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
         -DISOPATCH_WERROR=ON -DISOPATCH_BUILD_BENCH=OFF -DISOPATCH_BUILD_PYTHON=OFF -DISOPATCH_SANITIZE=address,undefined \
         -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 >/dev/null
+  phase "building build-sanitize"
   cmake --build build-sanitize -j"$jobs"
+  phase "the test suite under the sanitizers"
   # tests/support/lsan.supp: leaks inside third-party libraries (libzip under lib3mf's reader).
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS="suppressions=$PWD/tests/support/lsan.supp" \
@@ -45,8 +53,10 @@ fi
 # is reproducible (seed 1) yet explores beyond the corpus. Longer searches: scripts/fuzz.sh SECONDS.
 # ISOPATCH_FUZZ=0 skips this.
 if [ "${ISOPATCH_FUZZ:-1}" != 0 ]; then
+  phase "the fuzzers"
   scripts/fuzz.sh "${ISOPATCH_FUZZ_SECONDS:-60}" 100000000
 fi
+phase "done"
 if [ "$lint" != ok ]; then
   echo "isopatch: failed:${lint#ok} (the findings are listed after the first build)" >&2
   exit 1

@@ -24,6 +24,7 @@
 #include "progress_line.hpp"
 #include "singular_report.hpp"
 #include "stats_output.hpp"
+#include "tiles_runner.hpp"
 #include "volume_input.hpp"
 
 #include <tbb/task_arena.h>
@@ -72,6 +73,7 @@ struct MeshOptions {
   std::string quality = "default";
   int threads = 0;
   VolumeOptions volume;
+  TilesOptions tiles;
 };
 
 /// The surface of the argument; a formula without --box is given the bounds of a bounded --region as
@@ -89,7 +91,35 @@ SurfacePtr surface_in_region(const std::string& spec, const Settings& settings,
   }
 }
 
+/// A blocked run (--tiles): only the settings the blocks keep; the others are refused, not dropped.
+[[noreturn]] void run_mesh_in_tiles(const MeshOptions& o) {
+  const MeshOptions d;
+  const auto refuse = [](bool given, const std::string& flag) {
+    if (given) throw InputError(flag + " is not available with --tiles (docs/distributed.md)", "tiles");
+  };
+  refuse(o.method != d.method, "--method");
+  refuse(!o.region.empty(), "--region");
+  refuse(!o.frame.empty(), "--frame");
+  refuse(!o.volume.spacing.empty() || !o.volume.origin.empty(), "--spacing and --origin");
+  refuse(o.max_error.has_value(), "--max-error");
+  refuse(o.fields || o.vertex_roles, "--fields and --vertex-roles");
+  refuse(!o.stats_json.empty(), "--stats-json (the manifest in --out-dir has the figures)");
+  refuse(is_composite_path(o.surface), "a composite surface (.ipatch)");
+  TilesJob job;
+  job.surface = o.surface;
+  job.output = o.output == "-" ? "" : o.output;
+  job.box = o.box;
+  job.params = o.params;
+  job.level = o.volume.level;
+  job.edge_length = o.edge_length;
+  job.quality = o.quality;
+  job.refine = o.refine;
+  job.creases = o.creases;
+  run_tiles(o.tiles, job);
+}
+
 int run_mesh(const MeshOptions& o) {
+  if (o.tiles.tiles != 0) run_mesh_in_tiles(o);
   Settings settings;
   settings.method = parse_method(o.method);
   if (!o.box.empty()) settings.box = parse_box(o.box);
@@ -199,8 +229,7 @@ Runner add_mesh_command(CLI::App& app) {
       ->required();
   cmd->add_option("-o,--output", o->output,
                   "Output mesh: .ply, .obj, .off, .stl, .glb (glTF 2.0 binary) or .3mf (3MF for printing, "
-                  "millimetres)")
-      ->required();
+                  "millimetres); optional with --tiles, which writes blocks and a manifest");
   cmd->add_option("--method", o->method, "projection | mc (marching cubes)")->capture_default_str();
   cmd->add_option("--box", o->box,
                   "Region x0,y0,z0,x1,y1,z1 (a formula needs one, unless a bounded --region stands for it)");
@@ -305,12 +334,26 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--colour", o->colour,
                   std::string(".glb: the field shown as vertex colours (COLOR_0): ") + kGlbColourFields)
       ->capture_default_str();
+  cmd->add_option("--tiles", o->tiles.tiles,
+                  "Mesh as N blocks refined on Dask workers (docs/distributed.md); needs --out-dir");
+  cmd->add_option("--out-dir", o->tiles.out_dir,
+                  "--tiles: the directory of the block files and the manifest");
+  cmd->add_option("--scheduler", o->tiles.scheduler,
+                  "--tiles: 'local' (a cluster on 127.0.0.1) or tcp://HOST:PORT of a Dask scheduler")
+      ->capture_default_str();
+  cmd->add_option("--workers", o->tiles.workers, "--tiles: worker processes of the local cluster")
+      ->capture_default_str();
+  cmd->add_option("--memory-limit", o->tiles.memory_limit, "--tiles: memory per local worker, e.g. 2GB");
   cmd->add_option("--stats-json", o->stats_json,
                   "Also write every statistic of the run to this file as JSON (by stage, by name)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success (and no progress line)");
   cmd->add_flag(
       "--progress", o->progress,
       "Show a progress line on stderr even when it is not a terminal (default: only on a terminal)");
+  // -o is required unless the run is blocked (usage error, exit 2, like any missing argument).
+  cmd->parse_complete_callback([o] {
+    if (o->tiles.tiles == 0 && o->output.empty()) throw CLI::RequiredError("--output");
+  });
   return [o] { return run_mesh(*o); };
 }
 

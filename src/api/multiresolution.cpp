@@ -71,17 +71,6 @@ constexpr double kAngleFloor = 20.0;
 constexpr double kCleanupFloor = 25.0;
 constexpr double kBaseAngleSlack = 0.5;
 
-/// The settings of a base at `level` times the target sizes.
-Settings base_settings(const Settings& settings, double edge, int level) {
-  Settings s = settings;
-  s.refine = 1;
-  s.edge_length = edge * level;
-  if (settings.max_error) s.max_error = *settings.max_error * level * level;  // chordal error ~ h^2
-  if (settings.size_field)
-    s.size_field = [field = settings.size_field, level](const Vec3& p) { return level * field(p); };
-  return s;
-}
-
 /// The automatic level at most `ceiling` for a surface of largest curvature `kappa` whose mesh at the
 /// target edge length `edge` has about `vertices` vertices: the curvature's level (at least
 /// kLeastAutomaticLevel), lowered so that the base keeps the preset's fewest vertices.
@@ -106,23 +95,64 @@ bool level_from_curvature(const Settings& settings) {
   return settings.refine == 0 && !settings.max_error && !settings.size_field;
 }
 
+Settings base_settings(const Settings& settings, double edge, int level) {
+  Settings s = settings;
+  s.refine = 1;
+  s.edge_length = edge * level;
+  if (settings.max_error) s.max_error = *settings.max_error * level * level;  // chordal error ~ h^2
+  if (settings.size_field)
+    s.size_field = [field = settings.size_field, level](const Vec3& p) { return level * field(p); };
+  return s;
+}
+
+int first_level(const Settings& settings, double edge, const SizeEstimate* estimate) {
+  const bool graded = settings.max_error.has_value() || static_cast<bool>(settings.size_field);
+  const RefinePreset preset = refine_preset(settings.quality);
+  const int level = settings.refine != 0 ? settings.refine : graded ? kGradedLevel : preset.max_level;
+  if (level_from_curvature(settings) && estimate && estimate->found)
+    return automatic_level(preset, estimate->largest_curvature, edge, estimate->vertices, level);
+  return level;
+}
+
+int resolved_level(const Settings& settings, double edge, double largest_curvature, std::size_t base_vertices,
+                   int level) {
+  if (!level_from_curvature(settings) || level <= 1) return level;
+  // About base_vertices * level^2 output vertices.
+  const double output_vertices = static_cast<double>(base_vertices) * level * level;
+  return automatic_level(refine_preset(settings.quality), largest_curvature, edge, output_vertices, level);
+}
+
+refine::RefineParams refine_params(const Settings& settings, const Box& box, int level) {
+  const RefinePreset preset = refine_preset(settings.quality);
+  refine::RefineParams params;
+  params.level = level;
+  params.sweeps = preset.sweeps;
+  params.angle_sweeps = preset.angle_sweeps;
+  params.angle_target = preset.angle_target;
+  params.box = box;
+  params.region = settings.region;
+  params.max_vertices = settings.max_vertices;
+  params.cancel = settings.cancel;
+  params.progress = settings.progress;
+  return params;
+}
+
+bool refinement_kept(const Settings& settings, double smallest_angle) {
+  return settings.refine != 0 || smallest_angle >= kAngleFloor;
+}
+
 Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
                           const LevelMesher& mesh_level, const SizeEstimate* estimate,
                           const BaseRefinement& bases) {
   const auto start = std::chrono::steady_clock::now();
   const Box box = settings.box.value_or(surface.box());
   const double edge = default_edge_length(settings, box);
-  const bool graded = settings.max_error.has_value() || static_cast<bool>(settings.size_field);  // sizes vary
-  const RefinePreset preset = refine_preset(settings.quality);
   const bool automatic = settings.refine == 0;
   const bool from_curvature = level_from_curvature(settings);
-  int level = !automatic ? settings.refine : graded ? kGradedLevel : preset.max_level;
+  int level = first_level(settings, edge, estimate);
   RefineStats info;
   info.target_edge = edge;
-  if (from_curvature && estimate && estimate->found) {
-    info.estimated_curvature = estimate->largest_curvature;
-    level = automatic_level(preset, estimate->largest_curvature, edge, estimate->vertices, level);
-  }
+  if (from_curvature && estimate && estimate->found) info.estimated_curvature = estimate->largest_curvature;
   info.first_level = level;
   MeshStats spent;       // every attempt's evaluations and times
   MeshStats base_stats;  // the last base's
@@ -168,23 +198,12 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
     if (from_curvature) {
       info.largest_curvature = bases.largest_curvature ? bases.largest_curvature(base)
                                                        : refine::largest_curvature(base.positions, surface);
-      // About base_vertices * level^2 output vertices.
-      const double output_vertices = static_cast<double>(base.vertex_count()) * level * level;
-      const int resolved = automatic_level(preset, info.largest_curvature, edge, output_vertices, level);
+      const int resolved = resolved_level(settings, edge, info.largest_curvature, base.vertex_count(), level);
       if (resolved < level) level = usable_level(resolved);
     }
   }
   while (level > 1) {
-    refine::RefineParams params;
-    params.level = level;
-    params.sweeps = preset.sweeps;
-    params.angle_sweeps = preset.angle_sweeps;
-    params.angle_target = preset.angle_target;
-    params.box = box;
-    params.region = settings.region;
-    params.max_vertices = settings.max_vertices;
-    params.cancel = settings.cancel;
-    params.progress = settings.progress;
+    const refine::RefineParams params = refine_params(settings, box, level);
     const auto refine_start = std::chrono::steady_clock::now();
     refine::RefineResult refined =
         bases.refine ? bases.refine(base, params) : refine::refine_mesh(base, surface, params);
@@ -194,7 +213,7 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
     const bool kept =
         refined.failed_points == 0 &&
         (!automatic ||
-         (refined.smallest_angle >= kAngleFloor &&
+         (refinement_kept(settings, refined.smallest_angle) &&
           (!bases.keep_base_angles ||
            refined.smallest_angle >=
                std::min(kCleanupFloor, refine::smallest_angle_degrees(base) - kBaseAngleSlack))));

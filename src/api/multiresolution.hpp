@@ -34,6 +34,27 @@ struct BaseRefinement {
 /// without an error bound or a size field (which keep one level, docs/algorithms.md 8.4).
 bool level_from_curvature(const Settings& settings);
 
+/// The settings of a base at `level` times the target edge length `edge` (refine 1; an error bound k^2
+/// times, a size field k times).
+Settings base_settings(const Settings& settings, double edge, int level);
+
+/// The level the first base is made at: settings.refine when given; else 1 with an error bound or a
+/// size field; else the automatic level from `estimate` (when found), at most the preset's ceiling.
+int first_level(const Settings& settings, double edge, const SizeEstimate* estimate);
+
+/// The automatic level checked on a base of `base_vertices` vertices whose largest curvature is
+/// `largest_curvature`: at most `level`; `level` itself when the level is not from the curvature.
+int resolved_level(const Settings& settings, double edge, double largest_curvature, std::size_t base_vertices,
+                   int level);
+
+/// The refinement's parameters for `settings` at `level` in `box`: the quality preset's sweeps and
+/// angle target, the box and region that cut the mesh, the vertex budget, cancel and progress.
+refine::RefineParams refine_params(const Settings& settings, const Box& box, int level);
+
+/// Whether a refinement that passed its guard with this smallest angle (degrees) is kept: always at an
+/// explicit level, at the automatic one when it is at least 20 degrees (else the level is halved).
+bool refinement_kept(const Settings& settings, double smallest_angle);
+
 /// The multiresolution mesh of `surface` (settings.refine != 1, projection). `mesh_level` meshes the
 /// bases (and the output itself when the level ends at 1); stats, when given, are those of the final
 /// base with the evaluations and times of every attempt added and MeshStats::refine filled.

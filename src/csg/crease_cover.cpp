@@ -91,6 +91,7 @@ CreaseCover crease_cover(FaceSet& faces, const Box& box, double leaf, std::size_
     CreaseCell c;
     c.box = cell;
     std::vector<int> switches;
+    switches.reserve(open.size());
     for (const int s : open) switches.push_back(f->original[static_cast<std::size_t>(s)]);
     for (const auto& [a, b] : faces.faces_across(switches, cell.centre()))
       if (a != b) c.pairs.emplace_back(std::min(a, b), std::max(a, b));

@@ -124,10 +124,10 @@ RefineResult refine_pieces(const Mesh& base, const RefinePieces& pieces, const R
   const auto triangle_piece = [&](std::size_t t) {
     return pieces.triangle_piece.empty() ? 0u : pieces.triangle_piece[t];
   };
-  const double tolerance = kRelativeTolerance * std::max(bounding_box(base).diagonal(), 1e-300);
+  const double scale = params.scale > 0.0 ? params.scale : std::max(bounding_box(base).diagonal(), 1e-300);
+  const double tolerance = kRelativeTolerance * scale;
   const NewtonLimits limits{tolerance, 12, 0.5};
-  const BoundaryPlanes planes(params.box, params.region,
-                              1e-9 * std::max(bounding_box(base).diagonal(), 1e-300));
+  const BoundaryPlanes planes(params.box, params.region, 1e-9 * scale);
   const std::size_t total_work = layout.vertex_count() * static_cast<std::size_t>(1 + params.sweeps);
   report(params, 0, total_work);
 
@@ -167,7 +167,8 @@ RefineResult refine_pieces(const Mesh& base, const RefinePieces& pieces, const R
     if (!edges.boundary(e) || map.on_curve_edge(e)) continue;
     const auto [a, b] = edges.ends[e];
     motion[a] = motion[b] = Motion::Locked;
-    edge_plane[e] = planes.common(base.positions[a], base.positions[b]);
+    if (!params.seam || !params.seam(a, b))
+      edge_plane[e] = planes.common(base.positions[a], base.positions[b]);
     const Motion points = edge_plane[e] >= 0 ? Motion::Slides : Motion::Locked;
     for (int j = 1; j < k; ++j) motion[layout.edge_point(e, j)] = points;
   }

@@ -58,6 +58,13 @@ struct RefineParams {
   ConvexRegion region;                    ///< region planes the mesh is cut by
   std::size_t max_vertices = 0;           ///< refuse a larger output before any work (0: no limit)
   std::size_t sweep_block = kSweepBlock;  ///< vertices per block of a relaxation sweep (>= 1)
+  /// The length the landing tolerances are relative to; 0: the base's bounding-box diagonal. Blocks of
+  /// one base refined apart pass the whole base's, so a point they share lands the same in each.
+  double scale = 0.0;
+  /// Boundary edges of the base (ends a < b, base vertex numbers) that are seams with another block of
+  /// a larger base: their points are landed from the edge alone and held, even on a box face or region
+  /// plane, so the block across makes the same points. May be empty (no seams).
+  std::function<bool(std::uint32_t a, std::uint32_t b)> seam;
   const std::atomic<bool>* cancel = nullptr;
   std::function<void(const Progress&)> progress;  ///< may be empty
 };

@@ -1,0 +1,105 @@
+#pragma once
+/// \file blocks.hpp
+/// A surface meshed as blocks refined apart (docs/distributed.md): one coarse base of good quality
+/// (the multiresolution base, docs/algorithms.md 8), its triangles cut into blocks along a space-filling
+/// curve, every block refined by the same level on its own (on another process or machine), and the
+/// blocks' pieces put together by global vertex numbers. The rule that makes the seams exact: a point
+/// on a base edge is made from that edge alone (its two ends, their normals from f, and f), and a base
+/// edge between two blocks is held where it lands, so both blocks make the same point to the bit and
+/// either one's copy can be written. The numbers of the output's vertices are known before any block is
+/// refined (a prefix sum of counts the base gives), so every block writes its vertices and triangles in
+/// final numbers and the merged mesh does not depend on the order blocks finish.
+///
+/// Follows the multiresolution refinement (Lee et al. 2000, Guskov et al. 2000; refine/refine_mesh.hpp)
+/// on Sipos & Salvi 2021's projection base, and the global-id scheme of VTK's distributed data (ghost
+/// cells, global point ids) in its simplest form: ownership by the lowest block beside a shared item.
+
+#include <isopatch/geometry.hpp>
+#include <isopatch/mesh.hpp>
+#include <isopatch/settings.hpp>
+#include <isopatch/surface.hpp>
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace isopatch {
+
+/// The base a blocked run refines.
+struct BlockBase {
+  Mesh base;               ///< the coarse mesh (projection and clean-up at `level` times the target edge)
+  int level = 1;           ///< every base edge is cut into `level` segments
+  bool automatic = false;  ///< the level came from the curvature (settings.refine 0)
+};
+
+/// The base of `surface` for `settings` and the level it is refined by, chosen as mesh_surface() chooses
+/// them for the multiresolution mesh: settings.refine when given, else the automatic level from a
+/// coarse estimate of the curvature, checked on the base's own curvature. The guard and angle checks of
+/// the refinement itself come later, per block (BlockMesh::failed_points, smallest_angle): the caller
+/// halves the level (settings.refine = level / 2) when a block fails them.
+/// \throw SettingError for the Marching Cubes method, or ("creases") when the base is a formula meshed
+///        along exact creases (blocks do not keep them yet: --creases off meshes the shape as smooth);
+///        the errors of mesh_surface().
+BlockBase block_base(const Surface& surface, const Settings& settings);
+
+/// How a base is cut into blocks and how the output is numbered.
+struct BlockPlan {
+  int level = 1;
+  int blocks = 1;
+  std::vector<std::uint32_t> triangle_block;  ///< per base triangle, its block
+  /// Per block: the first output vertex number it owns and how many it owns, and its first output
+  /// triangle and triangle count (k^2 per base triangle). A block owns the base vertices and base edges
+  /// of which it is the lowest block among the triangles around them, and the inner points of its own
+  /// triangles; its vertices are numbered in that order (base vertices ascending, then the k - 1 points
+  /// of each owned edge, edges ascending, then the inner points of its triangles, ascending).
+  std::vector<std::uint64_t> first_vertex, vertex_count, first_triangle, triangle_count;
+  /// Per block: the base vertices and the base edges it owns.
+  std::vector<std::uint64_t> owned_base_vertices, owned_edges;
+  std::uint64_t vertices = 0;   ///< in the whole output
+  std::uint64_t triangles = 0;  ///< in the whole output
+};
+
+/// Cuts `base` into `blocks` blocks of about equal numbers of triangles, contiguous along the Morton
+/// curve of the triangles' centroids in the base's bounding box, and numbers the output of refinement
+/// by `level`. Depends on the base's bytes, `level` and `blocks` alone (every worker can recompute it).
+/// \throw InputError when the base has no triangles, blocks < 1 or more than the base's triangles, or
+///        level is outside 1..32; LimitError when the output would need more than 2^63 numbers.
+BlockPlan plan_blocks(const Mesh& base, int level, int blocks);
+
+/// One block of the output, in the output's numbers.
+struct BlockMesh {
+  int block = 0;
+  /// The vertices the block owns, numbers first_vertex .. first_vertex + count - 1 in order.
+  std::vector<Vec3> positions;
+  /// The block's triangles in output numbers (k^2 per base triangle, base triangles in ascending order).
+  std::vector<std::array<std::uint64_t, 3>> triangles;
+  /// The vertices it uses but another block owns (on its seams), with its own copies of them: equal to
+  /// the owner's bit for bit (assemble_blocks() checks).
+  std::vector<std::uint64_t> seam_ids;
+  std::vector<Vec3> seam_positions;
+  /// Points or triangles that failed the refinement's guard (then positions and triangles are empty).
+  std::size_t failed_points = 0;
+  double smallest_angle = 0.0;  ///< degrees, over the block's triangles
+  /// The block's vertices within one base edge of a seam (the band where it could not relax across).
+  std::size_t seam_band_vertices = 0;
+};
+
+/// Refines block `block` of `plan` on `surface` with the preset of `settings` (the multiresolution
+/// refinement's sweeps and angle repair; the box and region cut it): base edges between this block and
+/// another are landed from the edge alone and held. The same bytes for any thread count and on any
+/// machine with the same build.
+/// \pre plan == plan_blocks(base, level, blocks) for this base.
+/// \throw InputError for a block outside 0..blocks-1 or a plan that does not fit the base; the errors
+///        of the refinement (LimitError for settings.max_vertices or cancel, EvaluationError).
+BlockMesh refine_block(const Surface& surface, const Settings& settings, const Mesh& base,
+                       const BlockPlan& plan, int block);
+
+/// The whole output from every block's mesh (in any order; each block once), checking that every seam
+/// copy equals its owner's vertex bit for bit.
+/// \throw InputError when a block is missing, repeated, does not match the plan's counts, or a seam copy
+///        differs from its owner (the blocks were made from different bases or builds); LimitError when
+///        the output has more than 2^32 - 1 vertices (Mesh numbers are 32-bit).
+Mesh assemble_blocks(const BlockPlan& plan, std::span<const BlockMesh> blocks);
+
+}  // namespace isopatch

@@ -1,0 +1,259 @@
+"""Meshing one surface as blocks on a Dask cluster (docs/distributed.md).
+
+The driver makes the coarse base once (the multiresolution base of one process), cuts its triangles
+into blocks along a space-filling curve and asks Dask to refine every block on a worker. A point on a
+base edge between two blocks is made from that edge alone and held, so both blocks make it to the bit;
+the numbers of the output's vertices are fixed before any block runs, so the merged mesh is the same
+bytes with any number of workers and any order of tasks. Every task writes its file under a temporary
+name and renames it; a task run twice, or a driver run again with the same settings, reuses what is
+there.
+
+Command line: ``python3 -m isopatch.distributed SURFACE --tiles N --out-dir DIR [-o FILE] ...`` (the
+``isopatch mesh ... --tiles N`` command runs it).
+"""
+
+import argparse
+import json
+import os
+import sys
+import time
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+from . import _blocks
+from ._api import BoxLike, _box
+from ._errors import (CreaseError, Error, EvaluationError, InputError, IoError, LimitError, NoSurfaceError,
+                      ParseError, SingularSurfaceError, UnknownSurfaceError)
+
+#: How long the driver waits for the workers of a cluster to start.
+WORKER_START_SECONDS = 120
+
+#: Settings a blocked run passes to the library (the keyword arguments of isopatch.mesh that apply).
+_OPTIONS = ("edge_length", "quality", "refine", "remesh", "resolution", "max_evaluations", "time_limit",
+            "creases")
+
+
+def _job(source: Dict[str, Any], box: Any, options: Dict[str, Any], tiles: int, out_dir: str) -> Dict[str, Any]:
+    if not isinstance(tiles, int) or tiles < 1:
+        raise InputError("tiles must be a whole number of at least 1", "tiles")
+    os.makedirs(out_dir, exist_ok=True)
+    job = {"source": source, "box": box, "options": options, "blocks": tiles, "out_dir": os.path.abspath(out_dir)}
+    job["hash"] = _blocks.job_hash(job)
+    return job
+
+
+def _start_client(scheduler: Any, workers: int, memory_limit: Union[str, int, None]):
+    """A Dask client: the one given, one connected to tcp://HOST:PORT, or a LocalCluster of `workers`
+    processes of one thread each on 127.0.0.1 without a dashboard ("local"). Returns (client, cluster)."""
+    try:
+        from distributed import Client, LocalCluster
+    except ImportError as e:  # pragma: no cover - the set-up script installs it
+        raise InputError("isopatch.distributed needs Dask distributed (apt-get install python3-distributed)") from e
+    if not isinstance(scheduler, str):
+        return scheduler, None
+    if scheduler == "local":
+        if not isinstance(workers, int) or workers < 1:
+            raise InputError("workers must be a whole number of at least 1", "workers")
+        # No dashboard; the scheduler's small HTTP server (health, metrics) on a free loopback port. Dask
+        # starts workers with glibc's trim threshold at 64 KiB, which made the refinement's allocations
+        # 1.5-2 times slower (docs/distributed.md); the workers isopatch starts keep glibc's own.
+        import dask
+        environ = dict(dask.config.get("distributed.nanny.pre-spawn-environ", {}) or {})
+        environ.pop("MALLOC_TRIM_THRESHOLD_", None)
+        with dask.config.set({"distributed.nanny.pre-spawn-environ": environ}):
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                   dashboard_address="127.0.0.1:0", scheduler_kwargs={"dashboard": False},
+                                   memory_limit=memory_limit if memory_limit else "auto")
+        client = Client(cluster)
+        _wait_for_workers(client, workers, cluster)
+        return client, cluster
+    if scheduler.startswith("tcp://") or scheduler.startswith("tls://"):
+        client = Client(scheduler, timeout=30)
+        _wait_for_workers(client, 1, None)
+        return client, None
+    raise InputError("the scheduler must be 'local' or tcp://HOST:PORT, not %r" % scheduler, "scheduler")
+
+
+def _wait_for_workers(client: Any, count: int, cluster: Any) -> None:
+    """Waits (at most WORKER_START_SECONDS) until `count` workers are there, instead of waiting forever
+    for tasks no worker runs."""
+    try:
+        client.wait_for_workers(count, timeout=WORKER_START_SECONDS)
+    except Exception:  # distributed raises TimeoutError of several modules
+        client.close()
+        if cluster is not None:
+            cluster.close()
+        raise Error("the Dask cluster has fewer than %d worker%s after %d s (a script that starts a local "
+                    "cluster must run its main code under if __name__ == '__main__')"
+                    % (count, "s" if count > 1 else "", WORKER_START_SECONDS)) from None
+
+
+def _run_blocks(client: Any, job: Dict[str, Any]) -> List[Dict[str, Any]]:
+    """Every block's task on the cluster (Dask retries a task whose worker was lost); the summaries in
+    block order. The tests submit them in reverse order too (job["reverse"])."""
+    order = list(range(job["blocks"]))
+    if job.get("reverse"):
+        order.reverse()
+    futures = client.map(_blocks.run_block, [job] * len(order), order, pure=False)
+    return sorted(client.gather(futures), key=lambda s: s["block"])
+
+
+def mesh_blocks(
+    surface: Optional[str] = None,
+    *,
+    tiles: int,
+    out_dir: str,
+    box: Optional[BoxLike] = None,
+    params: Optional[Dict[str, float]] = None,
+    volume: Optional[str] = None,
+    level: float = 0.0,
+    output: Optional[str] = None,
+    scheduler: Any = "local",
+    workers: int = 2,
+    memory_limit: Union[str, int, None] = None,
+    _test: Optional[Dict[str, Any]] = None,
+    **options: Any,
+) -> Dict[str, Any]:
+    """Meshes `surface` (a formula, catalogue name or ``@file``; or ``volume=`` a .npy/.nrrd file at
+    ``level``) as `tiles` blocks refined on Dask workers, writing per-block files and a manifest into
+    `out_dir` and, with `output`, the whole mesh (a .ply streamed block by block; any other format
+    isopatch writes, e.g. .3mf, through one mesh in memory).
+
+    scheduler: "local" (a LocalCluster of `workers` processes with one thread each on 127.0.0.1, with
+    `memory_limit` per worker), "tcp://HOST:PORT" (a running scheduler) or a distributed.Client.
+    options: edge_length, quality, refine, remesh, resolution, max_evaluations, time_limit, creases.
+
+    Returns the manifest (a dict; also in out_dir/manifest-HASH.json) with "manifest" (its path),
+    "computed" and "reused" block counts and "seconds".
+
+    Raises the library's errors (InputError, SettingError, LimitError "use more blocks" when a block is
+    larger than its worker's memory limit, ...), from the driver or from the worker that met them.
+    """
+    unknown = sorted(set(options) - set(_OPTIONS))
+    if unknown:
+        raise InputError("unknown setting %r for a blocked run" % unknown[0], unknown[0])
+    if (surface is None) == (volume is None):
+        raise InputError("give a surface or a volume, not both or neither", "surface")
+    source: Dict[str, Any] = {"spec": surface, "params": dict(params or {})} if surface is not None else {
+        "volume": os.path.abspath(volume), "level": float(level)}  # type: ignore[arg-type]
+    opts = {k: v for k, v in options.items() if v is not None}
+    start = time.perf_counter()
+    client, cluster = _start_client(scheduler, workers, memory_limit)
+    phases = {"cluster": time.perf_counter() - start, "base": 0.0, "blocks": 0.0}
+    try:
+        while True:
+            job = _job(source, _box(box), opts, tiles, out_dir)
+            job.update(_test or {})
+            mark = time.perf_counter()
+            base = _blocks.make_base(job)
+            job["level"] = base["level"]
+            if tiles > base["triangles"].shape[0]:
+                raise InputError("%d blocks for a base of %d triangles: use fewer blocks"
+                                 % (tiles, base["triangles"].shape[0]), "tiles")
+            job["plan"] = _blocks._isopatch.plan_blocks(base["positions"], base["triangles"], base["level"], tiles)
+            phases["base"] += time.perf_counter() - mark
+            mark = time.perf_counter()
+            summaries = _run_blocks(client, job)
+            phases["blocks"] += time.perf_counter() - mark
+            failed = [s for s in summaries if s["failed_points"] > 0 or (base["automatic"] and s["smallest_angle"] < 20.0)]
+            if not failed:
+                break
+            if base["level"] <= 1:
+                raise LimitError("block %d failed the refinement's guard at level 1" % failed[0]["block"])
+            # As one process does: a refinement that fails its guard is made again at half the level.
+            opts["refine"] = base["level"] // 2
+        plan = job["plan"]
+        mark = time.perf_counter()
+        extra: Dict[str, Any] = {"seam_copies_checked": _blocks.check_seams(job, plan)}
+        if output:
+            if output.lower().endswith(".ply"):
+                _blocks.write_ply(job, plan, output)
+            else:
+                _blocks.write_other(job, plan, output)
+            extra["output"] = {"file": os.path.abspath(output), "sha256": _blocks.file_digest(output)}
+        extra["computed"] = sum(1 for s in summaries if not s["reused"])
+        extra["reused"] = sum(1 for s in summaries if s["reused"])
+        phases["merge"] = time.perf_counter() - mark
+        extra["seconds"] = time.perf_counter() - start
+        extra["phase_seconds"] = phases
+        extra["seam_band_vertices"] = sum(s["seam_band_vertices"] for s in summaries)
+        path = _blocks.write_manifest(job, plan, summaries, extra)
+        with open(path) as f:
+            manifest = json.load(f)
+        manifest["manifest"] = path
+        return manifest
+    finally:
+        if cluster is not None:
+            client.close()
+            cluster.close()
+
+
+def _triple(text: str, name: str) -> Tuple[float, ...]:
+    try:
+        values = tuple(float(v) for v in text.split(","))
+    except ValueError:
+        raise InputError("%s must be numbers separated by commas" % name, name) from None
+    return values
+
+
+#: Exit codes as the command-line tool's (apps/isopatch/error_report.hpp); 2 is a usage error.
+_EXIT_CODES = ((UnknownSurfaceError, 4), (ParseError, 5), (IoError, 6), (EvaluationError, 7), (NoSurfaceError, 8),
+               (LimitError, 9), (SingularSurfaceError, 10), (CreaseError, 11), (InputError, 3))
+
+
+def _exit_code(error: Error) -> int:
+    for kind, code in _EXIT_CODES:
+        if isinstance(error, kind):
+            return code
+    return 1
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """The command line; exit codes as `isopatch mesh`'s (3 bad input, 9 a limit, ...)."""
+    p = argparse.ArgumentParser(prog="isopatch mesh --tiles", description=__doc__.split("\n\n")[0])
+    p.add_argument("surface", help="formula, catalogue name, @file, or a .npy/.nrrd volume")
+    p.add_argument("--tiles", type=int, required=True, help="number of blocks")
+    p.add_argument("--out-dir", required=True, help="directory of the block files and the manifest")
+    p.add_argument("-o", "--output", help="also write the whole mesh here (.ply streamed; .3mf, .stl, ...)")
+    p.add_argument("--scheduler", default="local", help="'local' or tcp://HOST:PORT")
+    p.add_argument("--workers", type=int, default=2, help="worker processes of a local cluster")
+    p.add_argument("--memory-limit", default=None, help="per local worker, e.g. 2GB")
+    p.add_argument("--box", help="xmin,ymin,zmin,xmax,ymax,zmax")
+    p.add_argument("--param", action="append", default=[], help="NAME=VALUE")
+    p.add_argument("--level", type=float, default=0.0, help="level of a volume")
+    p.add_argument("--edge-length", type=float)
+    p.add_argument("--quality")
+    p.add_argument("--refine", type=int)
+    p.add_argument("--creases")
+    a = p.parse_args(argv)
+    try:
+        box = None
+        if a.box:
+            v = _triple(a.box, "box")
+            if len(v) != 6:
+                raise InputError("box must be six numbers", "box")
+            box = (v[:3], v[3:])
+        params = {}
+        for item in a.param:
+            name, _, value = item.partition("=")
+            try:
+                params[name] = float(value)
+            except ValueError:
+                raise InputError("--param wants NAME=VALUE, not %r" % item, "param") from None
+        is_volume = a.surface.lower().endswith((".npy", ".nrrd"))
+        manifest = mesh_blocks(None if is_volume else a.surface, volume=a.surface if is_volume else None,
+                               level=a.level, tiles=a.tiles, out_dir=a.out_dir, box=box, params=params,
+                               output=a.output, scheduler=a.scheduler, workers=a.workers,
+                               memory_limit=a.memory_limit, edge_length=a.edge_length, quality=a.quality,
+                               refine=a.refine, creases=a.creases)
+    except Error as e:
+        print("isopatch: error: %s" % e, file=sys.stderr)
+        return _exit_code(e)
+    print("isopatch: %d vertices, %d triangles in %d blocks (%d made, %d reused) in %.1f s; manifest %s%s"
+          % (manifest["vertices"], manifest["triangles"], manifest["blocks"], manifest["computed"],
+             manifest["reused"], manifest["seconds"], manifest["manifest"],
+             "; mesh " + manifest["output"]["file"] if "output" in manifest else ""))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,148 @@
+// Blocked meshing for isopatch.distributed (blocks.hpp). A surface is named by a source dict, the same
+// on the driver and on every worker: {"spec": formula, catalogue name or @file, "params": {...}} or
+// {"volume": path of a .npy or .nrrd file, "level": value}.
+#include "blocks.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <isopatch/blocks.hpp>
+#include <isopatch/error.hpp>
+#include <isopatch/mesh_io.hpp>
+#include <isopatch/resolve_surface.hpp>
+#include <isopatch/volume_io.hpp>
+#include <isopatch/volume_surface.hpp>
+
+#include <map>
+#include <string>
+
+#include "run_released.hpp"
+#include "settings_args.hpp"
+
+namespace py = pybind11;
+
+namespace isopatch::python {
+namespace {
+
+using Positions = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Indices = py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>;
+
+SurfacePtr source_surface(const py::dict& source, const std::optional<Box>& box) {
+  if (source.contains("volume")) {
+    const auto path = source["volume"].cast<std::string>();
+    const double level = source.contains("level") ? source["level"].cast<double>() : 0.0;
+    return volume_surface(read_volume(path), level, path);
+  }
+  if (!source.contains("spec")) throw InputError("a source names a 'spec' or a 'volume'", "source");
+  std::map<std::string, double> params;
+  if (source.contains("params")) params = source["params"].cast<std::map<std::string, double>>();
+  return resolve_surface(source["spec"].cast<std::string>(), box, params);
+}
+
+template <typename T>
+py::array_t<T> rows(const std::vector<T>& flat, std::size_t width) {
+  py::array_t<T> out({static_cast<py::ssize_t>(flat.size() / width), static_cast<py::ssize_t>(width)});
+  std::copy(flat.begin(), flat.end(), out.mutable_data());
+  return out;
+}
+
+py::array_t<double> positions_array(const std::vector<Vec3>& points) {
+  py::array_t<double> out({static_cast<py::ssize_t>(points.size()), py::ssize_t{3}});
+  double* d = out.mutable_data();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (int a = 0; a < 3; ++a) d[3 * i + static_cast<std::size_t>(a)] = points[i][a];
+  return out;
+}
+
+Mesh to_mesh(const Positions& positions, const Indices& triangles) {
+  if (positions.ndim() != 2 || positions.shape(1) != 3)
+    throw InputError("base positions must be (V, 3)", "base");
+  if (triangles.ndim() != 2 || triangles.shape(1) != 3)
+    throw InputError("base triangles must be (T, 3)", "base");
+  Mesh mesh;
+  const double* p = positions.data();
+  for (py::ssize_t i = 0; i < positions.shape(0); ++i)
+    mesh.positions.emplace_back(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+  const std::uint32_t* t = triangles.data();
+  for (py::ssize_t i = 0; i < triangles.shape(0); ++i)
+    mesh.triangles.push_back({t[3 * i], t[3 * i + 1], t[3 * i + 2]});
+  mesh.validate();
+  return mesh;
+}
+
+py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& options) {
+  Settings settings = to_settings(options);
+  settings.box = to_box(box);
+  BlockBase base = run_released([&](const std::atomic<bool>* cancel) {
+    settings.cancel = cancel;
+    const SurfacePtr surface = source_surface(source, settings.box);
+    return block_base(*surface, settings);
+  });
+  std::vector<std::uint32_t> flat;
+  for (const Triangle& t : base.base.triangles) flat.insert(flat.end(), t.begin(), t.end());
+  py::dict out;
+  out["positions"] = positions_array(base.base.positions);
+  out["triangles"] = rows(flat, 3);
+  out["level"] = base.level;
+  out["automatic"] = base.automatic;
+  return out;
+}
+
+py::dict plan_of(const Positions& positions, const Indices& triangles, int level, int blocks) {
+  const Mesh base = to_mesh(positions, triangles);
+  const BlockPlan plan = plan_blocks(base, level, blocks);
+  py::dict out;
+  out["vertices"] = plan.vertices;
+  out["triangles"] = plan.triangles;
+  out["first_vertex"] = plan.first_vertex;
+  out["vertex_count"] = plan.vertex_count;
+  out["first_triangle"] = plan.first_triangle;
+  out["triangle_count"] = plan.triangle_count;
+  return out;
+}
+
+py::dict block_of(const py::dict& source, const BoxArg& box, const py::dict& options,
+                  const Positions& positions, const Indices& triangles, int level, int blocks, int block) {
+  Settings settings = to_settings(options);
+  settings.box = to_box(box);
+  const Mesh base = to_mesh(positions, triangles);
+  BlockMesh mesh = run_released([&](const std::atomic<bool>* cancel) {
+    settings.cancel = cancel;
+    const SurfacePtr surface = source_surface(source, settings.box);
+    const BlockPlan plan = plan_blocks(base, level, blocks);
+    return refine_block(*surface, settings, base, plan, block);
+  });
+  std::vector<std::uint64_t> flat;
+  flat.reserve(mesh.triangles.size() * 3);
+  for (const auto& t : mesh.triangles) flat.insert(flat.end(), t.begin(), t.end());
+  py::dict out;
+  out["positions"] = positions_array(mesh.positions);
+  out["triangles"] = rows(flat, 3);
+  out["seam_ids"] =
+      py::array_t<std::uint64_t>(static_cast<py::ssize_t>(mesh.seam_ids.size()), mesh.seam_ids.data());
+  out["seam_positions"] = positions_array(mesh.seam_positions);
+  out["failed_points"] = mesh.failed_points;
+  out["smallest_angle"] = mesh.smallest_angle;
+  out["seam_band_vertices"] = mesh.seam_band_vertices;
+  return out;
+}
+
+void write_arrays(const Positions& positions, const Indices& triangles, const std::string& path) {
+  const Mesh mesh = to_mesh(positions, triangles);
+  run_released([&](const std::atomic<bool>*) {
+    write_mesh(mesh, path);
+    return 0;
+  });
+}
+
+}  // namespace
+
+void bind_blocks(py::module_& m) {
+  m.def("block_base", &base_of, py::arg("source"), py::arg("box"), py::arg("options"));
+  m.def("plan_blocks", &plan_of, py::arg("positions"), py::arg("triangles"), py::arg("level"),
+        py::arg("blocks"));
+  m.def("refine_block", &block_of, py::arg("source"), py::arg("box"), py::arg("options"),
+        py::arg("positions"), py::arg("triangles"), py::arg("level"), py::arg("blocks"), py::arg("block"));
+  m.def("write_arrays", &write_arrays, py::arg("positions"), py::arg("triangles"), py::arg("path"));
+}
+
+}  // namespace isopatch::python

@@ -1,0 +1,193 @@
+"""Blocked meshing on Dask (isopatch.distributed): a closed gyroid lattice of 8 blocks and 100k+
+vertices on a LocalCluster of two worker processes (one thread each, 127.0.0.1, no dashboard) is
+watertight across the seams, on f = 0, of the topology and quality of one process, the same bytes with
+one worker and tasks in reverse order, survives a worker killed in the middle, reuses finished blocks
+when run again, refuses a block larger than its worker's memory, and prints as one manifold part."""
+
+import json
+import os
+import re
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+
+import isopatch
+from isopatch import distributed
+
+distributed_lib = pytest.importorskip("distributed")
+
+CLI = os.environ.get("ISOPATCH_CLI")
+# A gyroid lattice closed by a smooth envelope (f grows past the sphere of radius 9): genus 36.
+LATTICE = "sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x)+((x^2+y^2+z^2)/81)^4"
+BOX = ((-10.5, -10.5, -10.5), (10.5, 10.5, 10.5))
+EDGE = 0.14
+TILES = 8
+
+
+def lattice_f(p: np.ndarray):
+    x, y, z = p[:, 0], p[:, 1], p[:, 2]
+    r = (x * x + y * y + z * z) / 81.0
+    f = np.sin(x) * np.cos(y) + np.sin(y) * np.cos(z) + np.sin(z) * np.cos(x) + r ** 4
+    g = np.stack([
+        np.cos(x) * np.cos(y) - np.sin(z) * np.sin(x) + 8.0 * r ** 3 * x / 81.0,
+        -np.sin(x) * np.sin(y) + np.cos(y) * np.cos(z) + 8.0 * r ** 3 * y / 81.0,
+        -np.sin(y) * np.sin(z) + np.cos(z) * np.cos(x) + 8.0 * r ** 3 * z / 81.0,
+    ], axis=1)
+    return f, g
+
+
+def read_ply(path):
+    """The vertices and faces of a binary PLY as isopatch writes it (double xyz, uchar-int lists)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode()
+    v = int(re.search(r"element vertex (\d+)", header).group(1))
+    t = int(re.search(r"element face (\d+)", header).group(1))
+    vertices = np.frombuffer(data, dtype="<f8", count=3 * v, offset=end).reshape(v, 3)
+    records = np.frombuffer(data, dtype=np.dtype([("n", "u1"), ("v", "<i4", (3,))]), count=t,
+                            offset=end + 24 * v)
+    assert (records["n"] == 3).all()
+    return vertices, records["v"].astype(np.int64)
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed_lib.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                           dashboard_address="127.0.0.1:0", scheduler_kwargs={"dashboard": False})
+    c = distributed_lib.Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+@pytest.fixture(scope="module")
+def clean_run(client, tmp_path_factory):
+    out = tmp_path_factory.mktemp("clean")
+    manifest = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=EDGE, tiles=TILES, out_dir=str(out),
+                                       output=str(out / "lattice.ply"), scheduler=client)
+    return out, manifest
+
+
+def test_the_lattice_is_watertight_across_blocks_on_the_surface_and_as_good_as_one_process(clean_run):
+    out, manifest = clean_run
+    assert manifest["blocks"] == TILES and manifest["computed"] == TILES
+    assert manifest["vertices"] >= 100_000
+    assert manifest["seam_copies_checked"] > 0
+    vertices, faces = read_ply(out / "lattice.ply")
+    assert len(vertices) == manifest["vertices"] and len(faces) == manifest["triangles"]
+    # Every edge in exactly two triangles, once in each direction (consistently oriented).
+    directed = np.concatenate([faces[:, [0, 1]], faces[:, [1, 2]], faces[:, [2, 0]]])
+    keys = directed[:, 0] * len(vertices) + directed[:, 1]
+    assert len(np.unique(keys)) == len(keys), "an edge is traversed twice the same way"
+    reverse = directed[:, 1] * len(vertices) + directed[:, 0]
+    assert np.isin(reverse, keys).all(), "an edge has one triangle (a crack between blocks)"
+    assert len(np.unique(vertices, axis=0)) == len(vertices), "two vertices at one position"
+    f, g = lattice_f(vertices)
+    assert np.max(np.abs(f) / np.linalg.norm(g, axis=1)) < 1e-9
+    # Topology and quality against one process with the same settings.
+    blocked = isopatch.Mesh.from_arrays(vertices, faces, LATTICE, box=BOX).analyze()
+    one = isopatch.mesh(LATTICE, box=BOX, edge_length=EDGE).analyze()
+    assert blocked["topology"]["euler_characteristic"] == one["topology"]["euler_characteristic"]
+    assert blocked["topology"]["components"] == one["topology"]["components"]
+    assert blocked["topology"]["outward_oriented"] and blocked["topology"]["watertight"]
+    assert blocked["self_intersections"]["pairs"] == 0
+    assert blocked["valence"]["share_6"] > one["valence"]["share_6"] - 0.01
+    assert blocked["shape"]["min_angle_degrees"]["min"] > min(25.0, one["shape"]["min_angle_degrees"]["min"] - 1.0)
+    # The band along the seams is reported apart, and every block file is in the manifest.
+    assert 0 < manifest["seam_band_vertices"] < manifest["vertices"]
+    on_disk = json.loads(open(manifest["manifest"]).read())
+    for entry in on_disk["block_files"]:
+        assert isopatch._blocks.file_digest(str(out / entry["file"])) == entry["sha256"]
+
+
+def test_one_worker_and_tasks_in_reverse_order_give_the_same_bytes(clean_run, tmp_path):
+    out, _ = clean_run
+    manifest = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=EDGE, tiles=TILES, out_dir=str(tmp_path),
+                                       output=str(tmp_path / "one.ply"), workers=1, _test={"reverse": True})
+    assert manifest["computed"] == TILES
+    assert (tmp_path / "one.ply").read_bytes() == (out / "lattice.ply").read_bytes()
+
+
+def test_a_worker_killed_in_the_middle_is_replaced_and_the_job_completes(client, clean_run, tmp_path):
+    out, _ = clean_run
+    marker = tmp_path / "killed"
+    manifest = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=EDGE, tiles=TILES, out_dir=str(tmp_path),
+                                       output=str(tmp_path / "after_kill.ply"), scheduler=client,
+                                       _test={"kill_marker": str(marker), "kill_block": 3})
+    assert marker.exists(), "the task did not kill its worker"
+    # The lost worker's finished results are lost with it and run again: their files are found.
+    assert manifest["computed"] + manifest["reused"] == TILES and manifest["computed"] >= 1
+    assert (tmp_path / "after_kill.ply").read_bytes() == (out / "lattice.ply").read_bytes()
+
+
+def test_a_driver_run_again_reuses_finished_blocks(client, clean_run, tmp_path):
+    out, first = clean_run
+    for name in os.listdir(out):
+        if name.startswith(("base-", "block-")):
+            shutil.copy(out / name, tmp_path / name)
+    os.remove(tmp_path / first["block_files"][5]["file"])  # as if the driver stopped before block 5
+    again = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=EDGE, tiles=TILES, out_dir=str(tmp_path),
+                                    output=str(tmp_path / "again.ply"), scheduler=client)
+    assert (again["computed"], again["reused"]) == (1, TILES - 1)
+    assert (tmp_path / "again.ply").read_bytes() == (out / "lattice.ply").read_bytes()
+    # Other settings are another job: nothing reused.
+    other = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=0.3, tiles=TILES, out_dir=str(tmp_path),
+                                    scheduler=client)
+    assert other["reused"] == 0 and other["hash"] != again["hash"]
+
+
+def test_a_block_larger_than_its_workers_memory_is_refused_with_advice(tmp_path):
+    with pytest.raises(isopatch.LimitError, match="use more blocks"):
+        distributed.mesh_blocks(LATTICE, box=BOX, edge_length=0.05, tiles=1, out_dir=str(tmp_path), workers=1,
+                                memory_limit="200MB")
+
+
+def test_bad_requests_are_refused_in_one_line(client, tmp_path):
+    with pytest.raises(isopatch.InputError):
+        distributed.mesh_blocks(LATTICE, box=BOX, tiles=0, out_dir=str(tmp_path), scheduler=client)
+    with pytest.raises(isopatch.InputError, match="scheduler"):
+        distributed.mesh_blocks(LATTICE, box=BOX, tiles=2, out_dir=str(tmp_path), scheduler="udp://x")
+    with pytest.raises(isopatch.ParseError):
+        distributed.mesh_blocks("x^2+", box=BOX, tiles=2, out_dir=str(tmp_path), scheduler=client)
+    with pytest.raises(isopatch.SettingError, match="creases"):
+        distributed.mesh_blocks("max(max(abs(x),abs(y)),abs(z))-1", box=((-2, -2, -2), (2, 2, 2)), tiles=2,
+                                out_dir=str(tmp_path), scheduler=client)
+    with pytest.raises(isopatch.InputError, match="unknown setting"):
+        distributed.mesh_blocks(LATTICE, box=BOX, tiles=2, out_dir=str(tmp_path), scheduler=client, grid=3)
+
+
+@pytest.mark.skipif(not CLI, reason="ISOPATCH_CLI names the command-line tool")
+def test_the_command_line_writes_a_3mf_the_slicer_takes_as_one_manifold_part(tmp_path):
+    slicer = shutil.which("prusa-slicer")
+    assert slicer, "prusa-slicer is missing (scripts/install-deps.sh installs it)"
+    part = tmp_path / "lattice.3mf"
+    run = subprocess.run([CLI, "mesh", LATTICE, "--box", "-10.5,-10.5,-10.5,10.5,10.5,10.5", "--edge-length",
+                          "0.3", "--tiles", "4", "--out-dir", str(tmp_path / "blocks"), "-o", str(part),
+                          "--workers", "2"], capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0, run.stderr[-2000:]
+    manifest = json.loads(open(re.search(r"manifest (\S+?);", run.stdout).group(1)).read())
+    ply = tmp_path / "lattice.ply"
+    distributed.mesh_blocks(LATTICE, box=BOX, edge_length=0.3, tiles=4, out_dir=str(tmp_path / "blocks"),
+                            output=str(ply), workers=1)
+    vertices, faces = read_ply(ply)
+    a, b, c = (vertices[faces[:, k]] for k in range(3))
+    volume = float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
+    info = subprocess.run([slicer, "--info", str(part)], capture_output=True, text=True, timeout=300)
+    assert info.returncode == 0, info.stderr[-2000:]
+    fields = dict(re.findall(r"^(\w+) = *(\S+)$", info.stdout, re.M))
+    assert fields.get("manifold") == "yes", fields
+    assert int(fields["number_of_parts"]) == 1, fields
+    assert float(fields["volume"]) == pytest.approx(volume, rel=2e-5), fields
+    assert manifest["vertices"] == len(vertices)
+
+
+@pytest.mark.skipif(not CLI, reason="ISOPATCH_CLI names the command-line tool")
+def test_the_command_line_refuses_what_blocks_do_not_keep(tmp_path):
+    run = subprocess.run([CLI, "mesh", "torus", "--tiles", "2", "--out-dir", str(tmp_path), "--region",
+                          "sphere:0,0,0,1"], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 3 and "--tiles" in run.stderr
+    run = subprocess.run([CLI, "mesh", "torus", "--tiles", "2"], capture_output=True, text=True, timeout=60)
+    assert run.returncode == 3 and "--out-dir" in run.stderr

@@ -1,0 +1,150 @@
+// One block of a blocked base refined on its own, its output in the whole output's numbers (blocks.hpp).
+#include <isopatch/blocks.hpp>
+#include <isopatch/error.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "api/multiresolution.hpp"
+#include "api/task_arena_run.hpp"
+#include "blocks/block_ownership.hpp"
+#include "refine/base_edges.hpp"
+#include "refine/lattice_layout.hpp"
+#include "refine/refine_mesh.hpp"
+
+namespace isopatch {
+namespace {
+
+constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
+
+/// A block's triangles as a mesh of their own, its vertices numbered in the base's order (so every edge
+/// runs from its lower to its higher end in both numberings and its points are made the same way).
+struct BlockPiece {
+  Mesh mesh;
+  std::vector<std::uint32_t> triangles;  ///< base triangle of each local triangle, ascending
+  std::vector<std::uint32_t> vertices;   ///< base vertex of each local vertex, ascending
+};
+
+BlockPiece block_piece(const Mesh& base, const BlockPlan& plan, int block) {
+  BlockPiece piece;
+  std::vector<std::uint32_t> local(base.vertex_count(), kUnused);
+  for (std::size_t t = 0; t < base.triangle_count(); ++t)
+    if (plan.triangle_block[t] == static_cast<std::uint32_t>(block)) {
+      piece.triangles.push_back(static_cast<std::uint32_t>(t));
+      for (const std::uint32_t v : base.triangles[t]) local[v] = 0;
+    }
+  for (std::size_t v = 0; v < base.vertex_count(); ++v)
+    if (local[v] != kUnused) {
+      local[v] = static_cast<std::uint32_t>(piece.vertices.size());
+      piece.vertices.push_back(static_cast<std::uint32_t>(v));
+      piece.mesh.positions.push_back(base.positions[v]);
+    }
+  for (const std::uint32_t t : piece.triangles) {
+    const Triangle& tri = base.triangles[t];
+    piece.mesh.triangles.push_back({local[tri[0]], local[tri[1]], local[tri[2]]});
+  }
+  return piece;
+}
+
+/// The base edge from a to b (base numbers, a < b). \pre it is an edge of the base.
+std::uint32_t find_edge(const refine::BaseEdges& edges, std::uint32_t a, std::uint32_t b) {
+  const std::array<std::uint32_t, 2> key{a, b};
+  const auto it = std::lower_bound(edges.ends.begin(), edges.ends.end(), key);
+  return static_cast<std::uint32_t>(it - edges.ends.begin());
+}
+
+void check_block_input(const Mesh& base, const BlockPlan& plan, int block) {
+  if (block < 0 || block >= plan.blocks)
+    throw InputError("block " + std::to_string(block) + " is not one of the plan's " +
+                         std::to_string(plan.blocks) + " blocks",
+                     "block");
+  if (plan.triangle_block.size() != base.triangle_count() ||
+      plan.first_vertex.size() != static_cast<std::size_t>(plan.blocks))
+    throw InputError("the block plan was made for another base", "block");
+}
+
+}  // namespace
+
+BlockMesh refine_block(const Surface& surface, const Settings& settings, const Mesh& base,
+                       const BlockPlan& plan, int block) {
+  check_block_input(base, plan, block);
+  const refine::BaseEdges edges = refine::base_edges(base);
+  const blocks::Ownership own = blocks::ownership(base, edges, plan.triangle_block, plan.blocks);
+  const BlockPiece piece = block_piece(base, plan, block);
+  const refine::BaseEdges local_edges = refine::base_edges(piece.mesh);
+  std::vector<std::uint32_t> global_edge(local_edges.size());
+  for (std::size_t e = 0; e < local_edges.size(); ++e)
+    global_edge[e] =
+        find_edge(edges, piece.vertices[local_edges.ends[e][0]], piece.vertices[local_edges.ends[e][1]]);
+
+  const int k = plan.level;
+  refine::RefineParams params = refine_params(settings, settings.box.value_or(surface.box()), k);
+  params.max_vertices = 0;  // the whole output's budget is the caller's (BlockPlan::vertices)
+  params.scale = std::max(bounding_box(base).diagonal(), 1e-300);
+  params.seam = [&](std::uint32_t a, std::uint32_t b) {
+    return edges.uses[find_edge(edges, piece.vertices[a], piece.vertices[b])] > 1;
+  };
+  refine::RefineResult refined =
+      run_in_task_arena(settings, nullptr, [&] { return refine::refine_mesh(piece.mesh, surface, params); });
+  BlockMesh out;
+  out.block = block;
+  out.failed_points = refined.failed_points;
+  if (refined.failed_points > 0) return out;
+  out.smallest_angle = refined.smallest_angle;
+
+  // The output number of every local vertex (blocks.hpp: the owner's first number, then its base
+  // vertices, edge points and inner points).
+  const auto b = static_cast<std::size_t>(block);
+  const auto km1 = static_cast<std::uint64_t>(k - 1);
+  const refine::LatticeLayout layout(piece.mesh, local_edges, k);
+  std::vector<std::uint64_t> id(refined.mesh.vertex_count());
+  for (std::size_t v = 0; v < piece.vertices.size(); ++v) {
+    const std::uint32_t g = piece.vertices[v];
+    id[v] = plan.first_vertex[own.vertex_owner[g]] + own.vertex_rank[g];
+  }
+  for (std::uint32_t e = 0; e < local_edges.size(); ++e) {
+    const std::uint32_t g = global_edge[e];
+    const std::uint32_t o = own.edge_owner[g];
+    for (int j = 1; j < k; ++j)
+      id[layout.edge_point(e, j)] = plan.first_vertex[o] + plan.owned_base_vertices[o] +
+                                    own.edge_rank[g] * km1 + static_cast<std::uint64_t>(j - 1);
+  }
+  const std::uint64_t inner_first =
+      plan.first_vertex[b] + plan.owned_base_vertices[b] + plan.owned_edges[b] * km1;
+  for (std::size_t t = 0; t < piece.triangles.size(); ++t)
+    for (std::size_t m = 0; m < layout.inner_per_triangle(); ++m)
+      id[layout.inner_start(t) + m] =
+          inner_first + own.triangle_rank[piece.triangles[t]] * layout.inner_per_triangle() + m;
+
+  out.positions.resize(plan.vertex_count[b]);
+  const std::uint64_t first = plan.first_vertex[b], end = first + plan.vertex_count[b];
+  for (std::size_t v = 0; v < id.size(); ++v) {
+    if (id[v] >= first && id[v] < end) {
+      out.positions[id[v] - first] = refined.mesh.positions[v];
+    } else {
+      out.seam_ids.push_back(id[v]);
+      out.seam_positions.push_back(refined.mesh.positions[v]);
+    }
+  }
+  out.triangles.reserve(refined.mesh.triangle_count());
+  for (const Triangle& t : refined.mesh.triangles) out.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
+
+  // The seam band: the output vertices of base triangles with a corner on a seam.
+  std::vector<std::uint8_t> on_seam(piece.vertices.size(), 0);
+  for (std::uint32_t e = 0; e < local_edges.size(); ++e)
+    if (local_edges.boundary(e) && edges.uses[global_edge[e]] > 1)
+      on_seam[local_edges.ends[e][0]] = on_seam[local_edges.ends[e][1]] = 1;
+  std::vector<std::uint8_t> band(refined.mesh.vertex_count(), 0);
+  const auto kk = static_cast<std::size_t>(k * k);
+  for (std::size_t t = 0; t < piece.triangles.size(); ++t) {
+    const Triangle& tri = piece.mesh.triangles[t];
+    if (!on_seam[tri[0]] && !on_seam[tri[1]] && !on_seam[tri[2]]) continue;
+    for (std::size_t i = 0; i < kk; ++i)
+      for (const std::uint32_t v : refined.mesh.triangles[t * kk + i]) band[v] = 1;
+  }
+  out.seam_band_vertices = static_cast<std::size_t>(std::count(band.begin(), band.end(), std::uint8_t{1}));
+  return out;
+}
+
+}  // namespace isopatch
