@@ -13,6 +13,7 @@ import json
 import os
 import resource
 import time
+import zipfile
 from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
@@ -161,10 +162,16 @@ def run_block(job: Dict[str, Any], block: int) -> Dict[str, Any]:
     Raises LimitError when the block would need more memory than the worker's limit (more blocks make
     each smaller), and the library's errors of the refinement."""
     path = block_path(job, block)
-    if os.path.exists(path):
-        return _summary(job, block, path, True, _load(path), 0.0)
-    _kill_once(job, block)
     expected = int(job["plan"]["vertex_count"][block])
+    if os.path.exists(path):
+        try:
+            found = _load(path)
+            # A block that failed the guard fails again with the same settings: its file stands too.
+            if int(found["failed_points"]) > 0 or found["positions"].shape == (expected, 3):
+                return _summary(job, block, path, True, found, 0.0)
+        except (OSError, ValueError, KeyError, zipfile.BadZipFile):
+            pass  # not a block file of this job (damaged or foreign): made again below
+    _kill_once(job, block)
     limit = _worker_memory_limit()
     base = _load(base_path(job))
     need = BYTES_PER_VERTEX * expected + 4 * base["positions"].nbytes + 4 * base["triangles"].nbytes

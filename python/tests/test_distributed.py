@@ -73,7 +73,8 @@ def clean_run(client, tmp_path_factory):
 
 def test_the_lattice_is_watertight_across_blocks_on_the_surface_and_as_good_as_one_process(clean_run):
     out, manifest = clean_run
-    assert manifest["blocks"] == TILES and manifest["computed"] == TILES
+    # Dask may run a task twice (a stolen task, a lost result): the second run finds the first's file.
+    assert manifest["blocks"] == TILES and manifest["computed"] + manifest["reused"] == TILES
     assert manifest["vertices"] >= 100_000
     assert manifest["seam_copies_checked"] > 0
     vertices, faces = read_ply(out / "lattice.ply")
@@ -107,7 +108,7 @@ def test_one_worker_and_tasks_in_reverse_order_give_the_same_bytes(clean_run, tm
     out, _ = clean_run
     manifest = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=EDGE, tiles=TILES, out_dir=str(tmp_path),
                                        output=str(tmp_path / "one.ply"), workers=1, _test={"reverse": True})
-    assert manifest["computed"] == TILES
+    assert manifest["computed"] + manifest["reused"] == TILES and manifest["computed"] >= 1
     assert (tmp_path / "one.ply").read_bytes() == (out / "lattice.ply").read_bytes()
 
 
@@ -129,9 +130,14 @@ def test_a_driver_run_again_reuses_finished_blocks(client, clean_run, tmp_path):
         if name.startswith(("base-", "block-")):
             shutil.copy(out / name, tmp_path / name)
     os.remove(tmp_path / first["block_files"][5]["file"])  # as if the driver stopped before block 5
+    (tmp_path / first["block_files"][6]["file"]).write_bytes(b"not a block")  # a damaged file is made again
     again = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=EDGE, tiles=TILES, out_dir=str(tmp_path),
                                     output=str(tmp_path / "again.ply"), scheduler=client)
-    assert (again["computed"], again["reused"]) == (1, TILES - 1)
+    made = {b["block"] for b in again["block_files"] if not b["reused"]}
+    assert made <= {5, 6}, again["block_files"]  # every other block reused
+    for block in (5, 6):  # made again: whole block files now
+        with np.load(tmp_path / first["block_files"][block]["file"]) as data:
+            assert data["positions"].shape[0] == again["block_files"][block]["vertices"] > 0
     assert (tmp_path / "again.ply").read_bytes() == (out / "lattice.ply").read_bytes()
     # Other settings are another job: nothing reused.
     other = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=0.3, tiles=TILES, out_dir=str(tmp_path),
