@@ -28,16 +28,15 @@ namespace isopatch {
 
 /// The base a blocked run refines.
 struct BlockBase {
-  Mesh base;               ///< the coarse mesh (projection and clean-up at `level` times the target edge)
-  int level = 1;           ///< every base edge is cut into `level` segments
-  bool automatic = false;  ///< the level came from the curvature (settings.refine 0)
+  Mesh base;      ///< the coarse mesh (projection and clean-up at `level` times the target edge)
+  int level = 1;  ///< every base edge is cut into `level` segments
 };
 
 /// The base of `surface` for `settings` and the level it is refined by, chosen as mesh_surface() chooses
 /// them for the multiresolution mesh: settings.refine when given, else the automatic level from a
 /// coarse estimate of the curvature, checked on the base's own curvature. The guard and angle checks of
-/// the refinement itself come later, per block (BlockMesh::failed_points, smallest_angle): the caller
-/// halves the level (settings.refine = level / 2) when a block fails them.
+/// the refinement itself come later, per block (BlockMesh::kept): the caller halves the level
+/// (settings.refine = level / 2) when a block is not kept.
 /// \throw SettingError for the Marching Cubes method, or ("creases") when the base is a formula meshed
 ///        along exact creases (blocks do not keep them yet: --creases off meshes the shape as smooth);
 ///        the errors of mesh_surface().
@@ -58,6 +57,15 @@ struct BlockPlan {
   std::vector<std::uint64_t> owned_base_vertices, owned_edges;
   std::uint64_t vertices = 0;   ///< in the whole output
   std::uint64_t triangles = 0;  ///< in the whole output
+  /// The output's number of every point the refinement makes, by what it is made from: per base vertex
+  /// its number; per base edge (edge_ends: its lower and higher base vertex, in ascending order) the
+  /// number of its first point (the k - 1 points follow from the lower end) and whether it lies between
+  /// two blocks (a seam); per base triangle the number of its first inner point (the rest follow).
+  std::vector<std::uint64_t> vertex_number;
+  std::vector<std::array<std::uint32_t, 2>> edge_ends;
+  std::vector<std::uint64_t> edge_first_number;
+  std::vector<std::uint8_t> edge_between_blocks;
+  std::vector<std::uint64_t> triangle_first_inner;
 };
 
 /// Cuts `base` into `blocks` blocks of about equal numbers of triangles, contiguous along the Morton
@@ -81,6 +89,9 @@ struct BlockMesh {
   /// Points or triangles that failed the refinement's guard (then positions and triangles are empty).
   std::size_t failed_points = 0;
   double smallest_angle = 0.0;  ///< degrees, over the block's triangles
+  /// Whether the refinement is kept as one process would keep it: no failed point and, at the automatic
+  /// level, a smallest angle of at least 20 degrees. When a block is not, the caller halves the level.
+  bool kept = false;
   /// The block's vertices within one base edge of a seam (the band where it could not relax across).
   std::size_t seam_band_vertices = 0;
 };
@@ -89,6 +100,7 @@ struct BlockMesh {
 /// refinement's sweeps and angle repair; the box and region cut it): base edges between this block and
 /// another are landed from the edge alone and held. The same bytes for any thread count and on any
 /// machine with the same build.
+/// Uses the plan's numbers: nothing of the whole base is computed again.
 /// \pre plan == plan_blocks(base, level, blocks) for this base.
 /// \throw InputError for a block outside 0..blocks-1 or a plan that does not fit the base; the errors
 ///        of the refinement (LimitError for settings.max_vertices or cancel, EvaluationError).

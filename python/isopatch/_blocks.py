@@ -89,21 +89,37 @@ def _write_npz(path: str, arrays: Dict[str, np.ndarray]) -> None:
     os.replace(tmp, path)
 
 
-def _load(path: str) -> Dict[str, np.ndarray]:
+def _load(path: str, keys: Optional[Sequence[str]] = None) -> Dict[str, np.ndarray]:
+    """The arrays of an .npz file (only `keys` when given: the others are not read)."""
     with np.load(path, allow_pickle=False) as data:
-        return {k: data[k] for k in data.files}
+        return {k: data[k] for k in (data.files if keys is None else keys)}
 
 
-def make_base(job: Dict[str, Any]) -> Dict[str, Any]:
-    """The job's base (made once; reused when its file exists): positions, triangles, level."""
+#: This process's BlockJob (the base, its plan and its surface), by job hash: a worker reads and plans
+#: the base and compiles the formula (or prefilters the volume) once per job, not once per block.
+_STATE: Dict[str, Any] = {}
+
+
+def job_state(job: Dict[str, Any]) -> Any:
+    """The job's _isopatch.BlockJob in this process (made on first use; one job is kept)."""
+    state = _STATE.get(job["hash"])
+    if state is None:
+        base = _load(base_path(job), ("positions", "triangles"))
+        state = _isopatch.BlockJob(job["source"], job["box"], base["positions"], base["triangles"], job["level"],
+                                   job["blocks"])
+        _STATE.clear()
+        _STATE[job["hash"]] = state
+    return state
+
+
+def make_base(job: Dict[str, Any]) -> int:
+    """Makes the job's base file (once; reused when it exists) and returns its refinement level."""
     path = base_path(job)
     if not os.path.exists(path):
         base = _isopatch.block_base(job["source"], job["box"], job["options"])
         _write_npz(path, {"positions": base["positions"], "triangles": base["triangles"],
-                          "level": np.array(base["level"]), "automatic": np.array(base["automatic"])})
-    data = _load(path)
-    return {"positions": data["positions"], "triangles": data["triangles"],
-            "level": int(data["level"]), "automatic": bool(data["automatic"])}
+                          "level": np.array(base["level"])})
+    return int(_load(path, ("level",))["level"])
 
 
 def _worker_memory_limit() -> Optional[int]:
@@ -149,6 +165,7 @@ def _summary(job: Dict[str, Any], block: int, path: str, reused: bool, data: Dic
         "triangles": int(data["triangles"].shape[0]),
         "failed_points": int(data["failed_points"]),
         "smallest_angle": float(data["smallest_angle"]),
+        "kept": bool(data["kept"]),
         "seam_band_vertices": int(data["seam_band_vertices"]),
         "seconds": seconds,
         "peak_rss_bytes": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024,
@@ -166,15 +183,15 @@ def run_block(job: Dict[str, Any], block: int) -> Dict[str, Any]:
     if os.path.exists(path):
         try:
             found = _load(path)
-            # A block that failed the guard fails again with the same settings: its file stands too.
-            if int(found["failed_points"]) > 0 or found["positions"].shape == (expected, 3):
+            # A block that was not kept is not kept again with the same settings: its file stands too.
+            if not bool(found["kept"]) or found["positions"].shape == (expected, 3):
                 return _summary(job, block, path, True, found, 0.0)
         except (OSError, ValueError, KeyError, zipfile.BadZipFile):
             pass  # not a block file of this job (damaged or foreign): made again below
     _kill_once(job, block)
     limit = _worker_memory_limit()
-    base = _load(base_path(job))
-    need = BYTES_PER_VERTEX * expected + 4 * base["positions"].nbytes + 4 * base["triangles"].nbytes
+    # The block, and the base with its plan (about four times its file).
+    need = BYTES_PER_VERTEX * expected + 4 * os.path.getsize(base_path(job))
     if limit is not None and need > limit:
         raise LimitError(
             "block %d of %d needs about %d MB but its worker's memory limit is %d MB: use more blocks "
@@ -185,8 +202,7 @@ def run_block(job: Dict[str, Any], block: int) -> Dict[str, Any]:
     if threads > 0:
         options["threads"] = threads
     start = time.perf_counter()
-    result = _isopatch.refine_block(job["source"], job["box"], options, base["positions"], base["triangles"],
-                                    job["level"], job["blocks"], block)
+    result = job_state(job).refine(options, block)
     arrays = {k: (v if isinstance(v, np.ndarray) else np.array(v)) for k, v in result.items()}
     _write_npz(path, arrays)
     return _summary(job, block, path, False, arrays, time.perf_counter() - start)
@@ -201,10 +217,10 @@ def check_seams(job: Dict[str, Any], plan: Dict[str, Any]) -> int:
     # The owner of a seam vertex is a lower block, mostly a recent one along the Morton curve.
     @functools.lru_cache(maxsize=8)
     def positions(block: int) -> np.ndarray:
-        return _load(block_path(job, block))["positions"]
+        return _load(block_path(job, block), ("positions",))["positions"]
 
     for block in range(job["blocks"]):
-        data = _load(block_path(job, block))
+        data = _load(block_path(job, block), ("seam_ids", "seam_positions"))
         ids = data["seam_ids"].astype(np.uint64)
         owner = np.searchsorted(first, ids, side="right") - 1
         for o in np.unique(owner):
@@ -231,9 +247,9 @@ def write_ply(job: Dict[str, Any], plan: Dict[str, Any], path: str) -> None:
     with open(tmp, "wb") as f:
         f.write(_PLY_HEADER.format(v=vertices, t=triangles, index=index).encode())
         for block in range(job["blocks"]):
-            f.write(_load(block_path(job, block))["positions"].astype("<f8").tobytes())
+            f.write(_load(block_path(job, block), ("positions",))["positions"].astype("<f8").tobytes())
         for block in range(job["blocks"]):
-            t = _load(block_path(job, block))["triangles"]
+            t = _load(block_path(job, block), ("triangles",))["triangles"]
             records = np.empty(t.shape[0], dtype=face)
             records["n"] = 3
             records["v"] = t
@@ -249,15 +265,16 @@ def write_other(job: Dict[str, Any], plan: Dict[str, Any], path: str) -> None:
     positions: List[np.ndarray] = []
     faces: List[np.ndarray] = []
     for block in range(job["blocks"]):
-        data = _load(block_path(job, block))
+        data = _load(block_path(job, block), ("positions", "triangles"))
         positions.append(data["positions"])
         faces.append(data["triangles"].astype(np.uint32))
     _isopatch.write_arrays(np.concatenate(positions), np.concatenate(faces), path)
 
 
 def write_manifest(job: Dict[str, Any], plan: Dict[str, Any], summaries: Sequence[Dict[str, Any]],
-                   extra: Dict[str, Any]) -> str:
-    """The manifest: settings, blocks with counts and checksums, the output; written by renaming."""
+                   extra: Dict[str, Any]) -> Dict[str, Any]:
+    """The manifest: settings, blocks with counts and checksums, the output; written by renaming and
+    returned with its path ("manifest")."""
     manifest = {
         "format": FORMAT,
         "version": _isopatch.__version__,
@@ -282,4 +299,4 @@ def write_manifest(job: Dict[str, Any], plan: Dict[str, Any], summaries: Sequenc
     with open(tmp, "w") as f:
         json.dump(manifest, f, indent=1, sort_keys=True)
     os.replace(tmp, path)
-    return path
+    return dict(manifest, manifest=path)

@@ -13,7 +13,6 @@ Command line: ``python3 -m isopatch.distributed SURFACE --tiles N --out-dir DIR 
 """
 
 import argparse
-import json
 import os
 import sys
 import time
@@ -144,23 +143,19 @@ def mesh_blocks(
             job = _job(source, _box(box), opts, tiles, out_dir)
             job.update(_test or {})
             mark = time.perf_counter()
-            base = _blocks.make_base(job)
-            job["level"] = base["level"]
-            if tiles > base["triangles"].shape[0]:
-                raise InputError("%d blocks for a base of %d triangles: use fewer blocks"
-                                 % (tiles, base["triangles"].shape[0]), "tiles")
-            job["plan"] = _blocks._isopatch.plan_blocks(base["positions"], base["triangles"], base["level"], tiles)
+            job["level"] = _blocks.make_base(job)
+            job["plan"] = _blocks.job_state(job).counts()
             phases["base"] += time.perf_counter() - mark
             mark = time.perf_counter()
             summaries = _run_blocks(client, job)
             phases["blocks"] += time.perf_counter() - mark
-            failed = [s for s in summaries if s["failed_points"] > 0 or (base["automatic"] and s["smallest_angle"] < 20.0)]
+            failed = [s for s in summaries if not s["kept"]]
             if not failed:
                 break
-            if base["level"] <= 1:
+            if job["level"] <= 1:
                 raise LimitError("block %d failed the refinement's guard at level 1" % failed[0]["block"])
             # As one process does: a refinement that fails its guard is made again at half the level.
-            opts["refine"] = base["level"] // 2
+            opts["refine"] = job["level"] // 2
         plan = job["plan"]
         mark = time.perf_counter()
         extra: Dict[str, Any] = {"seam_copies_checked": _blocks.check_seams(job, plan)}
@@ -176,11 +171,7 @@ def mesh_blocks(
         extra["seconds"] = time.perf_counter() - start
         extra["phase_seconds"] = phases
         extra["seam_band_vertices"] = sum(s["seam_band_vertices"] for s in summaries)
-        path = _blocks.write_manifest(job, plan, summaries, extra)
-        with open(path) as f:
-            manifest = json.load(f)
-        manifest["manifest"] = path
-        return manifest
+        return _blocks.write_manifest(job, plan, summaries, extra)
     finally:
         if cluster is not None:
             client.close()

@@ -13,6 +13,7 @@
 #include <isopatch/volume_surface.hpp>
 
 #include <map>
+#include <mutex>
 #include <string>
 
 #include "run_released.hpp"
@@ -26,17 +27,29 @@ namespace {
 using Positions = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using Indices = py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>;
 
-SurfacePtr source_surface(const py::dict& source, const std::optional<Box>& box) {
-  if (source.contains("volume")) {
-    const auto path = source["volume"].cast<std::string>();
-    const double level = source.contains("level") ? source["level"].cast<double>() : 0.0;
-    return volume_surface(read_volume(path), level, path);
-  }
-  if (!source.contains("spec")) throw InputError("a source names a 'spec' or a 'volume'", "source");
+/// A surface as a source dict names it, read while holding the GIL so that it can be resolved without.
+struct Source {
+  std::string spec, volume;
   std::map<std::string, double> params;
-  if (source.contains("params")) params = source["params"].cast<std::map<std::string, double>>();
-  return resolve_surface(source["spec"].cast<std::string>(), box, params);
-}
+  double level = 0.0;
+
+  explicit Source(const py::dict& source) {
+    if (source.contains("volume")) {
+      volume = source["volume"].cast<std::string>();
+      if (source.contains("level")) level = source["level"].cast<double>();
+      return;
+    }
+    if (!source.contains("spec")) throw InputError("a source names a 'spec' or a 'volume'", "source");
+    spec = source["spec"].cast<std::string>();
+    if (source.contains("params")) params = source["params"].cast<std::map<std::string, double>>();
+  }
+
+  /// The surface (the volume read and prefiltered, or the formula compiled). Needs no GIL.
+  SurfacePtr surface(const std::optional<Box>& box) const {
+    if (!volume.empty()) return volume_surface(read_volume(volume), level, volume);
+    return resolve_surface(spec, box, params);
+  }
+};
 
 template <typename T>
 py::array_t<T> rows(const std::vector<T>& flat, std::size_t width) {
@@ -72,9 +85,10 @@ Mesh to_mesh(const Positions& positions, const Indices& triangles) {
 py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& options) {
   Settings settings = to_settings(options);
   settings.box = to_box(box);
+  const Source named(source);
   BlockBase base = run_released([&](const std::atomic<bool>* cancel) {
     settings.cancel = cancel;
-    const SurfacePtr surface = source_surface(source, settings.box);
+    const SurfacePtr surface = named.surface(settings.box);
     return block_base(*surface, settings);
   });
   std::vector<std::uint32_t> flat;
@@ -83,48 +97,69 @@ py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& opti
   out["positions"] = positions_array(base.base.positions);
   out["triangles"] = rows(flat, 3);
   out["level"] = base.level;
-  out["automatic"] = base.automatic;
   return out;
 }
 
-py::dict plan_of(const Positions& positions, const Indices& triangles, int level, int blocks) {
-  const Mesh base = to_mesh(positions, triangles);
-  const BlockPlan plan = plan_blocks(base, level, blocks);
-  py::dict out;
-  out["vertices"] = plan.vertices;
-  out["triangles"] = plan.triangles;
-  out["first_vertex"] = plan.first_vertex;
-  out["vertex_count"] = plan.vertex_count;
-  out["first_triangle"] = plan.first_triangle;
-  out["triangle_count"] = plan.triangle_count;
-  return out;
-}
+/// A blocked job as a process holds it: the base, its plan and, made on first use, the surface (a
+/// worker refines all its blocks of a job with one: the formula compiled and a volume prefiltered once).
+class BlockJob {
+ public:
+  BlockJob(const py::dict& source, const BoxArg& box, const Positions& positions, const Indices& triangles,
+           int level, int blocks)
+      : source_(source), box_(to_box(box)), base_(to_mesh(positions, triangles)) {
+    plan_ = run_released([&](const std::atomic<bool>*) { return plan_blocks(base_, level, blocks); });
+  }
 
-py::dict block_of(const py::dict& source, const BoxArg& box, const py::dict& options,
-                  const Positions& positions, const Indices& triangles, int level, int blocks, int block) {
-  Settings settings = to_settings(options);
-  settings.box = to_box(box);
-  const Mesh base = to_mesh(positions, triangles);
-  BlockMesh mesh = run_released([&](const std::atomic<bool>* cancel) {
-    settings.cancel = cancel;
-    const SurfacePtr surface = source_surface(source, settings.box);
-    const BlockPlan plan = plan_blocks(base, level, blocks);
-    return refine_block(*surface, settings, base, plan, block);
-  });
-  std::vector<std::uint64_t> flat;
-  flat.reserve(mesh.triangles.size() * 3);
-  for (const auto& t : mesh.triangles) flat.insert(flat.end(), t.begin(), t.end());
-  py::dict out;
-  out["positions"] = positions_array(mesh.positions);
-  out["triangles"] = rows(flat, 3);
-  out["seam_ids"] =
-      py::array_t<std::uint64_t>(static_cast<py::ssize_t>(mesh.seam_ids.size()), mesh.seam_ids.data());
-  out["seam_positions"] = positions_array(mesh.seam_positions);
-  out["failed_points"] = mesh.failed_points;
-  out["smallest_angle"] = mesh.smallest_angle;
-  out["seam_band_vertices"] = mesh.seam_band_vertices;
-  return out;
-}
+  /// The output's counts and where each block's numbers begin.
+  py::dict counts() const {
+    py::dict out;
+    out["vertices"] = plan_.vertices;
+    out["triangles"] = plan_.triangles;
+    out["first_vertex"] = plan_.first_vertex;
+    out["vertex_count"] = plan_.vertex_count;
+    out["first_triangle"] = plan_.first_triangle;
+    out["triangle_count"] = plan_.triangle_count;
+    return out;
+  }
+
+  /// Block `block` refined with `options` (refine_block), as arrays.
+  py::dict refine(const py::dict& options, int block) {
+    Settings settings = to_settings(options);
+    settings.box = box_;
+    BlockMesh mesh = run_released([&](const std::atomic<bool>* cancel) {
+      settings.cancel = cancel;
+      return refine_block(*surface(), settings, base_, plan_, block);
+    });
+    std::vector<std::uint64_t> flat;
+    flat.reserve(mesh.triangles.size() * 3);
+    for (const auto& t : mesh.triangles) flat.insert(flat.end(), t.begin(), t.end());
+    py::dict out;
+    out["positions"] = positions_array(mesh.positions);
+    out["triangles"] = rows(flat, 3);
+    out["seam_ids"] =
+        py::array_t<std::uint64_t>(static_cast<py::ssize_t>(mesh.seam_ids.size()), mesh.seam_ids.data());
+    out["seam_positions"] = positions_array(mesh.seam_positions);
+    out["failed_points"] = mesh.failed_points;
+    out["smallest_angle"] = mesh.smallest_angle;
+    out["kept"] = mesh.kept;
+    out["seam_band_vertices"] = mesh.seam_band_vertices;
+    return out;
+  }
+
+ private:
+  Source source_;
+  std::optional<Box> box_;
+  Mesh base_;
+  BlockPlan plan_;
+  std::mutex surface_mutex_;  // a worker of several threads may refine two blocks at once
+  SurfacePtr surface_;
+
+  SurfacePtr surface() {
+    const std::lock_guard<std::mutex> lock(surface_mutex_);
+    if (!surface_) surface_ = source_.surface(box_);
+    return surface_;
+  }
+};
 
 void write_arrays(const Positions& positions, const Indices& triangles, const std::string& path) {
   const Mesh mesh = to_mesh(positions, triangles);
@@ -138,10 +173,12 @@ void write_arrays(const Positions& positions, const Indices& triangles, const st
 
 void bind_blocks(py::module_& m) {
   m.def("block_base", &base_of, py::arg("source"), py::arg("box"), py::arg("options"));
-  m.def("plan_blocks", &plan_of, py::arg("positions"), py::arg("triangles"), py::arg("level"),
-        py::arg("blocks"));
-  m.def("refine_block", &block_of, py::arg("source"), py::arg("box"), py::arg("options"),
-        py::arg("positions"), py::arg("triangles"), py::arg("level"), py::arg("blocks"), py::arg("block"));
+  py::class_<BlockJob>(m, "BlockJob")
+      .def(py::init<const py::dict&, const BoxArg&, const Positions&, const Indices&, int, int>(),
+           py::arg("source"), py::arg("box"), py::arg("positions"), py::arg("triangles"), py::arg("level"),
+           py::arg("blocks"))
+      .def("counts", &BlockJob::counts)
+      .def("refine", &BlockJob::refine, py::arg("options"), py::arg("block"));
   m.def("write_arrays", &write_arrays, py::arg("positions"), py::arg("triangles"), py::arg("path"));
 }
 

@@ -6,7 +6,7 @@
 
 namespace isopatch::python {
 
-/// Binds block_base, plan_blocks and refine_block.
+/// Binds block_base, BlockJob (a base, its plan and its blocks refined) and write_arrays.
 void bind_blocks(pybind11::module_& m);
 
 }  // namespace isopatch::python

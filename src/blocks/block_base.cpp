@@ -26,9 +26,9 @@ BlockBase block_base(const Surface& surface, const Settings& settings) {
   const Box box = settings.box.value_or(surface.box());
   const double edge = default_edge_length(settings, box);
   BlockBase out;
-  out.automatic = level_from_curvature(settings);
+  const bool automatic = level_from_curvature(settings);
   SizeEstimate estimate;
-  if (out.automatic) estimate = estimate_size(surface, settings, box, true);
+  if (automatic) estimate = estimate_size(surface, settings, box, true);
   const auto make = [&](int level) {
     MeshStats stats;
     Mesh base = mesh_surface(surface, base_settings(settings, edge, level), &stats);
@@ -39,9 +39,9 @@ BlockBase block_base(const Surface& surface, const Settings& settings) {
           "surface with creases off");
     return base;
   };
-  out.level = first_level(settings, edge, out.automatic ? &estimate : nullptr);
+  out.level = first_level(settings, edge, automatic ? &estimate : nullptr);
   out.base = make(out.level);
-  if (out.automatic && out.level > 1) {
+  if (automatic && out.level > 1) {
     const double kappa = refine::largest_curvature(out.base.positions, surface);
     const int resolved = resolved_level(settings, edge, kappa, out.base.vertex_count(), out.level);
     if (resolved < out.level) {

@@ -8,7 +8,6 @@
 #include <numeric>
 #include <string>
 
-#include "blocks/block_ownership.hpp"
 #include "refine/base_edges.hpp"
 #include "refine/lattice_layout.hpp"
 
@@ -52,6 +51,76 @@ void check_plan_input(const Mesh& base, int level, int blocks) {
   base.validate();
 }
 
+/// Numbers the output of `plan` (triangle_block set): the lowest block among the triangles around a
+/// base vertex or edge owns it; a block's numbers are its base vertices, then the points of its edges,
+/// then the inner points of its triangles, each in ascending base order (blocks.hpp).
+void number_output(const Mesh& base, int level, BlockPlan& plan) {
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+  const refine::BaseEdges edges = refine::base_edges(base);
+  const auto n = static_cast<std::size_t>(plan.blocks);
+  const auto k = static_cast<std::uint64_t>(level);
+  const std::uint64_t inner = (k - 1) * (k >= 2 ? k - 2 : 0) / 2;
+  std::vector<std::uint32_t> vertex_owner(base.vertex_count(), kNone), edge_owner(edges.size(), kNone);
+  for (std::size_t t = 0; t < base.triangle_count(); ++t)
+    for (std::size_t c = 0; c < 3; ++c) {
+      std::uint32_t& v = vertex_owner[base.triangles[t][c]];
+      v = std::min(v, plan.triangle_block[t]);
+      std::uint32_t& e = edge_owner[edges.of_triangle[t][c]];
+      e = std::min(e, plan.triangle_block[t]);
+    }
+  for (std::uint32_t& v : vertex_owner)
+    if (v == kNone) v = 0;  // a vertex no triangle uses
+  // Per block, how many of each it owns, then the numbers, block by block.
+  std::vector<std::uint64_t> owned_triangles(n, 0);
+  plan.owned_base_vertices.assign(n, 0);
+  plan.owned_edges.assign(n, 0);
+  for (const std::uint32_t o : vertex_owner) ++plan.owned_base_vertices[o];
+  for (const std::uint32_t o : edge_owner) ++plan.owned_edges[o];
+  for (const std::uint32_t b : plan.triangle_block) ++owned_triangles[b];
+  plan.first_vertex.resize(n);
+  plan.vertex_count.resize(n);
+  plan.first_triangle.resize(n);
+  plan.triangle_count.resize(n);
+  constexpr std::uint64_t kMost = std::numeric_limits<std::uint64_t>::max() / 2;
+  for (std::size_t b = 0; b < n; ++b) {
+    plan.vertex_count[b] =
+        plan.owned_base_vertices[b] + plan.owned_edges[b] * (k - 1) + owned_triangles[b] * inner;
+    plan.triangle_count[b] = owned_triangles[b] * k * k;
+    plan.first_vertex[b] = plan.vertices;
+    plan.first_triangle[b] = plan.triangles;
+    plan.vertices += plan.vertex_count[b];
+    plan.triangles += plan.triangle_count[b];
+    if (plan.vertices > kMost || plan.triangles > kMost)
+      throw LimitError("the blocked output would need more than 2^63 vertex numbers", "tiles");
+  }
+  // The next number of each block's base vertices, edge points and inner points.
+  std::vector<std::uint64_t> next_vertex(plan.first_vertex), next_edge(n), next_inner(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    next_edge[b] = plan.first_vertex[b] + plan.owned_base_vertices[b];
+    next_inner[b] = next_edge[b] + plan.owned_edges[b] * (k - 1);
+  }
+  plan.vertex_number.resize(base.vertex_count());
+  for (std::size_t v = 0; v < base.vertex_count(); ++v)
+    plan.vertex_number[v] = next_vertex[vertex_owner[v]]++;
+  plan.edge_ends = edges.ends;
+  plan.edge_first_number.resize(edges.size());
+  plan.edge_between_blocks.assign(edges.size(), 0);
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    plan.edge_first_number[e] = next_edge[edge_owner[e]];
+    next_edge[edge_owner[e]] += k - 1;
+  }
+  for (std::size_t t = 0; t < base.triangle_count(); ++t)
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::uint32_t e = edges.of_triangle[t][c];
+      if (plan.triangle_block[t] != edge_owner[e]) plan.edge_between_blocks[e] = 1;
+    }
+  plan.triangle_first_inner.resize(base.triangle_count());
+  for (std::size_t t = 0; t < base.triangle_count(); ++t) {
+    plan.triangle_first_inner[t] = next_inner[plan.triangle_block[t]];
+    next_inner[plan.triangle_block[t]] += inner;
+  }
+}
+
 }  // namespace
 
 BlockPlan plan_blocks(const Mesh& base, int level, int blocks) {
@@ -76,28 +145,7 @@ BlockPlan plan_blocks(const Mesh& base, int level, int blocks) {
     block_of[order[i]] = static_cast<std::uint32_t>(i * static_cast<std::size_t>(blocks) / count);
   plan.triangle_block = std::move(block_of);
 
-  const refine::BaseEdges edges = refine::base_edges(base);
-  const blocks::Ownership own = blocks::ownership(base, edges, plan.triangle_block, blocks);
-  const auto k = static_cast<std::uint64_t>(level);
-  const std::uint64_t inner = (k - 1) * (k >= 2 ? k - 2 : 0) / 2;
-  const auto n = static_cast<std::size_t>(blocks);
-  plan.owned_base_vertices = own.vertices;
-  plan.owned_edges = own.edges;
-  plan.first_vertex.resize(n);
-  plan.vertex_count.resize(n);
-  plan.first_triangle.resize(n);
-  plan.triangle_count.resize(n);
-  constexpr std::uint64_t kMost = std::numeric_limits<std::uint64_t>::max() / 2;
-  for (std::size_t b = 0; b < n; ++b) {
-    plan.vertex_count[b] = own.vertices[b] + own.edges[b] * (k - 1) + own.triangles[b] * inner;
-    plan.triangle_count[b] = own.triangles[b] * k * k;
-    plan.first_vertex[b] = plan.vertices;
-    plan.first_triangle[b] = plan.triangles;
-    plan.vertices += plan.vertex_count[b];
-    plan.triangles += plan.triangle_count[b];
-    if (plan.vertices > kMost || plan.triangles > kMost)
-      throw LimitError("the blocked output would need more than 2^63 vertex numbers", "tiles");
-  }
+  number_output(base, level, plan);
   return plan;
 }
 

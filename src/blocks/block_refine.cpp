@@ -8,7 +8,6 @@
 
 #include "api/multiresolution.hpp"
 #include "api/task_arena_run.hpp"
-#include "blocks/block_ownership.hpp"
 #include "refine/base_edges.hpp"
 #include "refine/lattice_layout.hpp"
 #include "refine/refine_mesh.hpp"
@@ -47,11 +46,11 @@ BlockPiece block_piece(const Mesh& base, const BlockPlan& plan, int block) {
   return piece;
 }
 
-/// The base edge from a to b (base numbers, a < b). \pre it is an edge of the base.
-std::uint32_t find_edge(const refine::BaseEdges& edges, std::uint32_t a, std::uint32_t b) {
+/// The edge from a to b (a < b) in `ends` (sorted ascending). \pre it is one of them.
+std::uint32_t find_edge(const std::vector<std::array<std::uint32_t, 2>>& ends, std::uint32_t a,
+                        std::uint32_t b) {
   const std::array<std::uint32_t, 2> key{a, b};
-  const auto it = std::lower_bound(edges.ends.begin(), edges.ends.end(), key);
-  return static_cast<std::uint32_t>(it - edges.ends.begin());
+  return static_cast<std::uint32_t>(std::lower_bound(ends.begin(), ends.end(), key) - ends.begin());
 }
 
 void check_block_input(const Mesh& base, const BlockPlan& plan, int block) {
@@ -60,6 +59,7 @@ void check_block_input(const Mesh& base, const BlockPlan& plan, int block) {
                          std::to_string(plan.blocks) + " blocks",
                      "block");
   if (plan.triangle_block.size() != base.triangle_count() ||
+      plan.vertex_number.size() != base.vertex_count() ||
       plan.first_vertex.size() != static_cast<std::size_t>(plan.blocks))
     throw InputError("the block plan was made for another base", "block");
 }
@@ -69,21 +69,23 @@ void check_block_input(const Mesh& base, const BlockPlan& plan, int block) {
 BlockMesh refine_block(const Surface& surface, const Settings& settings, const Mesh& base,
                        const BlockPlan& plan, int block) {
   check_block_input(base, plan, block);
-  const refine::BaseEdges edges = refine::base_edges(base);
-  const blocks::Ownership own = blocks::ownership(base, edges, plan.triangle_block, plan.blocks);
   const BlockPiece piece = block_piece(base, plan, block);
   const refine::BaseEdges local_edges = refine::base_edges(piece.mesh);
+  // Per local edge: the base edge it is, and whether it is a seam with another block.
   std::vector<std::uint32_t> global_edge(local_edges.size());
-  for (std::size_t e = 0; e < local_edges.size(); ++e)
-    global_edge[e] =
-        find_edge(edges, piece.vertices[local_edges.ends[e][0]], piece.vertices[local_edges.ends[e][1]]);
+  std::vector<std::uint8_t> seam(local_edges.size());
+  for (std::size_t e = 0; e < local_edges.size(); ++e) {
+    global_edge[e] = find_edge(plan.edge_ends, piece.vertices[local_edges.ends[e][0]],
+                               piece.vertices[local_edges.ends[e][1]]);
+    seam[e] = plan.edge_between_blocks[global_edge[e]];
+  }
 
   const int k = plan.level;
   refine::RefineParams params = refine_params(settings, settings.box.value_or(surface.box()), k);
   params.max_vertices = 0;  // the whole output's budget is the caller's (BlockPlan::vertices)
   params.scale = std::max(bounding_box(base).diagonal(), 1e-300);
   params.seam = [&](std::uint32_t a, std::uint32_t b) {
-    return edges.uses[find_edge(edges, piece.vertices[a], piece.vertices[b])] > 1;
+    return seam[find_edge(local_edges.ends, a, b)] != 0;
   };
   refine::RefineResult refined =
       run_in_task_arena(settings, nullptr, [&] { return refine::refine_mesh(piece.mesh, surface, params); });
@@ -92,31 +94,22 @@ BlockMesh refine_block(const Surface& surface, const Settings& settings, const M
   out.failed_points = refined.failed_points;
   if (refined.failed_points > 0) return out;
   out.smallest_angle = refined.smallest_angle;
+  out.kept = refinement_kept(settings, refined.smallest_angle);
 
-  // The output number of every local vertex (blocks.hpp: the owner's first number, then its base
-  // vertices, edge points and inner points).
-  const auto b = static_cast<std::size_t>(block);
-  const auto km1 = static_cast<std::uint64_t>(k - 1);
+  // The output number of every local vertex, from the plan (refine/lattice_layout.hpp gives the local
+  // numbers: base vertices, edge points from the lower end, inner points per triangle).
   const refine::LatticeLayout layout(piece.mesh, local_edges, k);
   std::vector<std::uint64_t> id(refined.mesh.vertex_count());
-  for (std::size_t v = 0; v < piece.vertices.size(); ++v) {
-    const std::uint32_t g = piece.vertices[v];
-    id[v] = plan.first_vertex[own.vertex_owner[g]] + own.vertex_rank[g];
-  }
-  for (std::uint32_t e = 0; e < local_edges.size(); ++e) {
-    const std::uint32_t g = global_edge[e];
-    const std::uint32_t o = own.edge_owner[g];
+  for (std::size_t v = 0; v < piece.vertices.size(); ++v) id[v] = plan.vertex_number[piece.vertices[v]];
+  for (std::uint32_t e = 0; e < local_edges.size(); ++e)
     for (int j = 1; j < k; ++j)
-      id[layout.edge_point(e, j)] = plan.first_vertex[o] + plan.owned_base_vertices[o] +
-                                    own.edge_rank[g] * km1 + static_cast<std::uint64_t>(j - 1);
-  }
-  const std::uint64_t inner_first =
-      plan.first_vertex[b] + plan.owned_base_vertices[b] + plan.owned_edges[b] * km1;
+      id[layout.edge_point(e, j)] =
+          plan.edge_first_number[global_edge[e]] + static_cast<std::uint64_t>(j - 1);
   for (std::size_t t = 0; t < piece.triangles.size(); ++t)
     for (std::size_t m = 0; m < layout.inner_per_triangle(); ++m)
-      id[layout.inner_start(t) + m] =
-          inner_first + own.triangle_rank[piece.triangles[t]] * layout.inner_per_triangle() + m;
+      id[layout.inner_start(t) + m] = plan.triangle_first_inner[piece.triangles[t]] + m;
 
+  const auto b = static_cast<std::size_t>(block);
   out.positions.resize(plan.vertex_count[b]);
   const std::uint64_t first = plan.first_vertex[b], end = first + plan.vertex_count[b];
   for (std::size_t v = 0; v < id.size(); ++v) {
@@ -133,8 +126,7 @@ BlockMesh refine_block(const Surface& surface, const Settings& settings, const M
   // The seam band: the output vertices of base triangles with a corner on a seam.
   std::vector<std::uint8_t> on_seam(piece.vertices.size(), 0);
   for (std::uint32_t e = 0; e < local_edges.size(); ++e)
-    if (local_edges.boundary(e) && edges.uses[global_edge[e]] > 1)
-      on_seam[local_edges.ends[e][0]] = on_seam[local_edges.ends[e][1]] = 1;
+    if (seam[e]) on_seam[local_edges.ends[e][0]] = on_seam[local_edges.ends[e][1]] = 1;
   std::vector<std::uint8_t> band(refined.mesh.vertex_count(), 0);
   const auto kk = static_cast<std::size_t>(k * k);
   for (std::size_t t = 0; t < piece.triangles.size(); ++t) {

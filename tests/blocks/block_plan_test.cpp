@@ -6,7 +6,9 @@
 #include <isopatch/isopatch.hpp>
 #include <isopatch/resolve_surface.hpp>
 
+#include <algorithm>
 #include <numeric>
+#include <vector>
 
 namespace isopatch {
 namespace {
@@ -40,6 +42,31 @@ TEST(BlockPlan, CountsAddUpToTheRefinedMeshAndEveryBlockGetsAboutAsManyTriangles
       std::accumulate(plan.owned_base_vertices.begin(), plan.owned_base_vertices.end(), std::uint64_t{0}),
       base.vertex_count());
   EXPECT_EQ(std::accumulate(plan.owned_edges.begin(), plan.owned_edges.end(), std::uint64_t{0}), edges);
+}
+
+TEST(BlockPlan, EveryOutputNumberIsGivenOnceAndInItsOwnersRange) {
+  const Mesh base = torus_base();
+  const int k = 4;
+  const BlockPlan plan = plan_blocks(base, k, 8);
+  std::vector<int> seen(plan.vertices, 0);
+  for (const std::uint64_t v : plan.vertex_number) ++seen[v];
+  for (const std::uint64_t first : plan.edge_first_number)
+    for (int j = 0; j < k - 1; ++j) ++seen[first + static_cast<std::uint64_t>(j)];
+  const std::uint64_t inner = (k - 1) * (k - 2) / 2;
+  for (const std::uint64_t first : plan.triangle_first_inner)
+    for (std::uint64_t m = 0; m < inner; ++m) ++seen[first + m];
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(plan.vertices));
+  // A triangle's inner points are numbered in its own block's range.
+  for (std::size_t t = 0; t < base.triangle_count(); ++t) {
+    const std::size_t b = plan.triangle_block[t];
+    EXPECT_GE(plan.triangle_first_inner[t], plan.first_vertex[b]);
+    EXPECT_LE(plan.triangle_first_inner[t] + inner, plan.first_vertex[b] + plan.vertex_count[b]);
+  }
+  // Seams: exactly the edges whose two triangles are in different blocks.
+  std::size_t between = 0;
+  for (const std::uint8_t s : plan.edge_between_blocks) between += s;
+  EXPECT_GT(between, 0U);
+  EXPECT_LT(between, plan.edge_ends.size());
 }
 
 TEST(BlockPlan, BlocksAreCompactAlongTheMortonCurve) {
