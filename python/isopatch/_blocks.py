@@ -46,10 +46,10 @@ def file_digest(path: str) -> str:
 def job_hash(job: Dict[str, Any]) -> str:
     """A hash of everything that decides a job's bytes: the library version, the source (and the bytes
     of a file it names), the box, the settings and the number of blocks."""
-    source = dict(job["source"])
-    for key in ("volume",):
-        if key in source:
-            source[key + "_sha256"] = file_digest(source[key])
+    # A volume's coefficients and grid are made from its bytes (hashed) and the prefilter window.
+    source = {k: v for k, v in job["source"].items() if k not in ("coefficients", "spacing", "origin")}
+    if "volume" in source and "volume_sha256" not in source:
+        source["volume_sha256"] = file_digest(source["volume"])
     spec = source.get("spec", "")
     if isinstance(spec, str) and spec.startswith("@"):
         source["spec_sha256"] = file_digest(spec[1:])
@@ -96,7 +96,7 @@ def _load(path: str, keys: Optional[Sequence[str]] = None) -> Dict[str, np.ndarr
 
 
 #: This process's BlockJob (the base, its plan and its surface), by job hash: a worker reads and plans
-#: the base and compiles the formula (or prefilters the volume) once per job, not once per block.
+#: the base and compiles the formula (or maps a volume's coefficients) once per job, not once per block.
 _STATE: Dict[str, Any] = {}
 
 

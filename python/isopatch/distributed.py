@@ -18,7 +18,7 @@ import sys
 import time
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
-from . import _blocks
+from . import _blocks, _prefilter
 from ._api import BoxLike, _box
 from ._errors import (CreaseError, Error, EvaluationError, InputError, IoError, LimitError, NoSurfaceError,
                       ParseError, SingularSurfaceError, UnknownSurfaceError)
@@ -105,6 +105,7 @@ def mesh_blocks(
     params: Optional[Dict[str, float]] = None,
     volume: Optional[str] = None,
     level: float = 0.0,
+    prefilter_window: int = _prefilter.DEFAULT_WINDOW,
     output: Optional[str] = None,
     scheduler: Any = "local",
     workers: int = 2,
@@ -116,6 +117,11 @@ def mesh_blocks(
     ``level``) as `tiles` blocks refined on Dask workers, writing per-block files and a manifest into
     `out_dir` and, with `output`, the whole mesh (a .ply streamed block by block; any other format
     isopatch writes, e.g. .3mf, through one mesh in memory).
+
+    A volume's B-spline coefficients are made first by a distributed pass over windows of
+    `prefilter_window` samples per side, each read with a halo of 32 (equal to the whole volume's
+    coefficients to rounding), into one .npy file in `out_dir` that every task maps instead of reading
+    the volume; a .npy volume is read by the workers window by window.
 
     scheduler: "local" (a LocalCluster of `workers` processes with one thread each on 127.0.0.1, with
     `memory_limit` per worker), "tcp://HOST:PORT" (a running scheduler) or a distributed.Client.
@@ -132,13 +138,22 @@ def mesh_blocks(
         raise InputError("unknown setting %r for a blocked run" % unknown[0], unknown[0])
     if (surface is None) == (volume is None):
         raise InputError("give a surface or a volume, not both or neither", "surface")
-    source: Dict[str, Any] = {"spec": surface, "params": dict(params or {})} if surface is not None else {
-        "volume": os.path.abspath(volume), "level": float(level)}  # type: ignore[arg-type]
+    source: Dict[str, Any] = {"spec": surface, "params": dict(params or {})}
+    if volume is not None:
+        source = _volume_source(volume, level, prefilter_window)
     opts = {k: v for k, v in options.items() if v is not None}
     start = time.perf_counter()
     client, cluster = _start_client(scheduler, workers, memory_limit)
     phases = {"cluster": time.perf_counter() - start, "base": 0.0, "blocks": 0.0}
     try:
+        prefiltered: Optional[Dict[str, Any]] = None
+        if volume is not None:
+            os.makedirs(out_dir, exist_ok=True)
+            prefiltered = _prefilter.coefficients(client, source["volume"], source["volume_sha256"],
+                                                  source["level"], prefilter_window, os.path.abspath(out_dir))
+            source.update(coefficients=prefiltered["coefficients"], spacing=prefiltered["spacing"],
+                          origin=prefiltered["origin"])
+            phases["prefilter"] = prefiltered["seconds"]
         while True:
             job = _job(source, _box(box), opts, tiles, out_dir)
             job.update(_test or {})
@@ -153,12 +168,23 @@ def mesh_blocks(
             if not failed:
                 break
             if job["level"] <= 1:
-                raise LimitError("block %d failed the refinement's guard at level 1" % failed[0]["block"])
+                worst = failed[0]
+                raise LimitError(
+                    "block %d of this surface fails the refinement's guard even at level 1 (smallest angle %.1f "
+                    "degrees, %d points not landed): mesh it in one process, whose level-1 mesher has the "
+                    "clean-up a block lacks"
+                    % (worst["block"], worst["smallest_angle"], worst["failed_points"]))
             # As one process does: a refinement that fails its guard is made again at half the level.
             opts["refine"] = job["level"] // 2
         plan = job["plan"]
         mark = time.perf_counter()
         extra: Dict[str, Any] = {"seam_copies_checked": _blocks.check_seams(job, plan)}
+        if prefiltered is not None:
+            extra["prefilter"] = {"file": os.path.basename(prefiltered["coefficients"]),
+                                  "windows": prefiltered["windows"], "window": prefiltered["window"],
+                                  "halo": prefiltered["halo"], "reused": prefiltered["reused"],
+                                  "worker_peak_rss_bytes": prefiltered.get("worker_peak_rss_bytes", 0),
+                                  "sample_range": [prefiltered["min"], prefiltered["max"]]}
         if output:
             if output.lower().endswith(".ply"):
                 _blocks.write_ply(job, plan, output)
@@ -176,6 +202,21 @@ def mesh_blocks(
         if cluster is not None:
             client.close()
             cluster.close()
+
+
+def _volume_source(volume: str, level: float, window: int) -> Dict[str, Any]:
+    """The source of a volume file, with the SHA-256 of its bytes. Raises IoError for a file that is
+    not there or not a .npy or .nrrd, InputError for a non-finite level or a bad window."""
+    path = os.path.abspath(volume)
+    if not path.lower().endswith((".npy", ".nrrd")):
+        raise IoError("%s: not a volume file (want .npy or .nrrd)" % volume)
+    if not os.path.isfile(path):
+        raise IoError("%s: cannot open: no such file" % volume)
+    if not isinstance(level, (int, float)) or level != level or abs(level) == float("inf"):
+        raise InputError("the level must be finite", "level")
+    _prefilter.plan_windows((2, 2, 2), window)  # checks the window
+    return {"volume": path, "level": float(level), "volume_sha256": _blocks.file_digest(path),
+            "prefilter_window": window}
 
 
 def _triple(text: str, name: str) -> Tuple[float, ...]:
@@ -211,6 +252,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     p.add_argument("--box", help="xmin,ymin,zmin,xmax,ymax,zmax")
     p.add_argument("--param", action="append", default=[], help="NAME=VALUE")
     p.add_argument("--level", type=float, default=0.0, help="level of a volume")
+    p.add_argument("--prefilter-window", type=int, default=_prefilter.DEFAULT_WINDOW,
+                   help="samples per side of a volume's prefilter windows")
     p.add_argument("--edge-length", type=float)
     p.add_argument("--quality")
     p.add_argument("--refine", type=int)
@@ -232,7 +275,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                 raise InputError("--param wants NAME=VALUE, not %r" % item, "param") from None
         is_volume = a.surface.lower().endswith((".npy", ".nrrd"))
         manifest = mesh_blocks(None if is_volume else a.surface, volume=a.surface if is_volume else None,
-                               level=a.level, tiles=a.tiles, out_dir=a.out_dir, box=box, params=params,
+                               level=a.level, prefilter_window=a.prefilter_window, tiles=a.tiles,
+                               out_dir=a.out_dir, box=box, params=params,
                                output=a.output, scheduler=a.scheduler, workers=a.workers,
                                memory_limit=a.memory_limit, edge_length=a.edge_length, quality=a.quality,
                                refine=a.refine, creases=a.creases)

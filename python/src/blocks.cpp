@@ -1,6 +1,8 @@
 // Blocked meshing for isopatch.distributed (blocks.hpp). A surface is named by a source dict, the same
 // on the driver and on every worker: {"spec": formula, catalogue name or @file, "params": {...}} or
-// {"volume": path of a .npy or .nrrd file, "level": value}.
+// {"volume": path of a .npy or .nrrd file, "level": value}, with "coefficients" (a .npy of its B-spline
+// coefficients made by the distributed prefilter, mapped instead of the volume read), "spacing" and
+// "origin" when a blocked run made them.
 #include "blocks.hpp"
 
 #include <pybind11/numpy.h>
@@ -12,8 +14,10 @@
 #include <isopatch/volume_io.hpp>
 #include <isopatch/volume_surface.hpp>
 
+#include <array>
 #include <map>
 #include <mutex>
+#include <span>
 #include <string>
 
 #include "run_released.hpp"
@@ -29,14 +33,22 @@ using Indices = py::array_t<std::uint32_t, py::array::c_style | py::array::force
 
 /// A surface as a source dict names it, read while holding the GIL so that it can be resolved without.
 struct Source {
-  std::string spec, volume;
+  std::string spec, volume, coefficients;
   std::map<std::string, double> params;
   double level = 0.0;
+  Vec3 spacing = Vec3::Ones(), origin = Vec3::Zero();
 
   explicit Source(const py::dict& source) {
     if (source.contains("volume")) {
       volume = source["volume"].cast<std::string>();
       if (source.contains("level")) level = source["level"].cast<double>();
+      if (source.contains("coefficients")) {
+        coefficients = source["coefficients"].cast<std::string>();
+        const auto s = source["spacing"].cast<std::array<double, 3>>();
+        const auto o = source["origin"].cast<std::array<double, 3>>();
+        spacing = Vec3(s[0], s[1], s[2]);
+        origin = Vec3(o[0], o[1], o[2]);
+      }
       return;
     }
     if (!source.contains("spec")) throw InputError("a source names a 'spec' or a 'volume'", "source");
@@ -44,8 +56,10 @@ struct Source {
     if (source.contains("params")) params = source["params"].cast<std::map<std::string, double>>();
   }
 
-  /// The surface (the volume read and prefiltered, or the formula compiled). Needs no GIL.
+  /// The surface (the coefficients mapped, the volume read and prefiltered, or the formula compiled).
+  /// Needs no GIL.
   SurfacePtr surface(const std::optional<Box>& box) const {
+    if (!coefficients.empty()) return mapped_volume_surface(coefficients, spacing, origin, level, volume);
     if (!volume.empty()) return volume_surface(read_volume(volume), level, volume);
     return resolve_surface(spec, box, params);
   }
@@ -101,7 +115,7 @@ py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& opti
 }
 
 /// A blocked job as a process holds it: the base, its plan and, made on first use, the surface (a
-/// worker refines all its blocks of a job with one: the formula compiled and a volume prefiltered once).
+/// worker refines all its blocks of a job with one: the formula compiled, or the coefficients mapped, once).
 class BlockJob {
  public:
   BlockJob(const py::dict& source, const BoxArg& box, const Positions& positions, const Indices& triangles,
@@ -169,9 +183,26 @@ void write_arrays(const Positions& positions, const Indices& triangles, const st
   });
 }
 
+/// interpolating_coefficients() in place on a C-contiguous float64 array of 3 dimensions.
+void prefilter(py::array_t<double, py::array::c_style> samples) {
+  if (samples.ndim() != 3)
+    throw InputError("a volume window must have 3 dimensions, not " + std::to_string(samples.ndim()),
+                     "volume");
+  const std::array<std::size_t, 3> shape{static_cast<std::size_t>(samples.shape(0)),
+                                         static_cast<std::size_t>(samples.shape(1)),
+                                         static_cast<std::size_t>(samples.shape(2))};
+  const std::span<double> values(samples.mutable_data(), static_cast<std::size_t>(samples.size()));
+  run_released([&](const std::atomic<bool>*) {
+    interpolating_coefficients(values, shape);
+    return 0;
+  });
+}
+
 }  // namespace
 
 void bind_blocks(py::module_& m) {
+  m.attr("PREFILTER_HALO") = kPrefilterHalo;
+  m.def("prefilter", &prefilter, py::arg("samples").noconvert());
   m.def("block_base", &base_of, py::arg("source"), py::arg("box"), py::arg("options"));
   py::class_<BlockJob>(m, "BlockJob")
       .def(py::init<const py::dict&, const BoxArg&, const Positions&, const Indices&, int, int>(),

@@ -1,4 +1,7 @@
-"""Shared helpers of the pytest suite: sampled analytic volumes and their exact normals."""
+"""Shared helpers of the pytest suite: sampled analytic volumes and their exact normals, and the Dask
+cluster of the blocked runs' tests."""
+
+import re
 
 import numpy as np
 import pytest
@@ -47,3 +50,31 @@ def angle_degrees(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 @pytest.fixture
 def unit_box():
     return ((-1.2, -1.2, -1.2), (1.2, 1.2, 1.2))
+
+
+def read_ply(path):
+    """The vertices and faces of a binary PLY as isopatch writes it (double xyz, uchar-int lists)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode()
+    v = int(re.search(r"element vertex (\d+)", header).group(1))
+    t = int(re.search(r"element face (\d+)", header).group(1))
+    vertices = np.frombuffer(data, dtype="<f8", count=3 * v, offset=end).reshape(v, 3)
+    records = np.frombuffer(data, dtype=np.dtype([("n", "u1"), ("v", "<i4", (3,))]), count=t,
+                            offset=end + 24 * v)
+    assert (records["n"] == 3).all()
+    return vertices, records["v"].astype(np.int64)
+
+
+@pytest.fixture(scope="session")
+def client():
+    """A Dask client of a LocalCluster of two worker processes (one thread each, 127.0.0.1, no
+    dashboard), for the tests of blocked runs; closed at the end of the session."""
+    distributed_lib = pytest.importorskip("distributed")
+    cluster = distributed_lib.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                           dashboard_address="127.0.0.1:0", scheduler_kwargs={"dashboard": False})
+    c = distributed_lib.Client(cluster)
+    yield c
+    c.close()
+    cluster.close()

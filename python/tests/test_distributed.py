@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import isopatch
+from conftest import read_ply
 from isopatch import distributed
 
 distributed_lib = pytest.importorskip("distributed")
@@ -36,31 +37,6 @@ def lattice_f(p: np.ndarray):
         -np.sin(y) * np.sin(z) + np.cos(z) * np.cos(x) + 8.0 * r ** 3 * z / 81.0,
     ], axis=1)
     return f, g
-
-
-def read_ply(path):
-    """The vertices and faces of a binary PLY as isopatch writes it (double xyz, uchar-int lists)."""
-    with open(path, "rb") as f:
-        data = f.read()
-    end = data.index(b"end_header\n") + len(b"end_header\n")
-    header = data[:end].decode()
-    v = int(re.search(r"element vertex (\d+)", header).group(1))
-    t = int(re.search(r"element face (\d+)", header).group(1))
-    vertices = np.frombuffer(data, dtype="<f8", count=3 * v, offset=end).reshape(v, 3)
-    records = np.frombuffer(data, dtype=np.dtype([("n", "u1"), ("v", "<i4", (3,))]), count=t,
-                            offset=end + 24 * v)
-    assert (records["n"] == 3).all()
-    return vertices, records["v"].astype(np.int64)
-
-
-@pytest.fixture(scope="module")
-def client():
-    cluster = distributed_lib.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                           dashboard_address="127.0.0.1:0", scheduler_kwargs={"dashboard": False})
-    c = distributed_lib.Client(cluster)
-    yield c
-    c.close()
-    cluster.close()
 
 
 @pytest.fixture(scope="module")

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace isopatch::bspline {
@@ -13,7 +14,7 @@ namespace isopatch::bspline {
 /// Replaces `values` (C order, `shape`) by the coefficients c of the tricubic B-spline that
 /// interpolates them: (c[i-1] + 4 c[i] + c[i+1]) / 6 = value[i] along every axis, with the mirror
 /// boundary. One tridiagonal (Thomas) solve per grid line and axis. \pre every side >= 2.
-void interpolating_coefficients(std::vector<double>& values, const std::array<std::size_t, 3>& shape);
+void interpolating_coefficients(std::span<double> values, const std::array<std::size_t, 3>& shape);
 
 /// Index i of a grid of n >= 2 samples, reflected into [0, n-1] (period 2 (n - 1)).
 inline std::size_t mirror(std::int64_t i, std::size_t n) {

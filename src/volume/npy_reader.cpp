@@ -120,7 +120,7 @@ class HeaderParser {
 
 }  // namespace
 
-Volume decode_npy(std::string_view bytes, const std::string& name) {
+NpyLayout read_npy_layout(std::string_view bytes, const std::string& name, std::size_t max_samples) {
   static constexpr std::string_view kMagic = "\x93NUMPY";
   if (bytes.size() < 10 || bytes.substr(0, 6) != kMagic)
     io::fail(name, "not a .npy file (no \\x93NUMPY magic)");
@@ -138,11 +138,15 @@ Volume decode_npy(std::string_view bytes, const std::string& name) {
   }
   if (header_len > bytes.size() - offset) io::fail(name, "the .npy header is truncated");
   const HeaderParser::Fields f = HeaderParser(bytes.substr(offset, header_len), name).parse();
-  const std::size_t data_offset = offset + header_len;
+  NpyLayout layout;
+  layout.data_offset = offset + header_len;
+  layout.descr = f.descr;
+  layout.fortran_order = f.fortran_order;
 
   const std::string& d = f.descr;
   if (d.size() < 3 || (d[0] != '<' && d[0] != '>' && d[0] != '|' && d[0] != '='))
     io::fail(name, "unsupported dtype " + io::quoted(d) + " (want a scalar type such as '<f8')");
+  layout.big_endian = d[0] == '>';
   std::uint64_t size = 0;
   const auto type = io::parse_uint(std::string_view(d).substr(2), size) && size <= 16
                         ? numpy_scalar_type(d[1], static_cast<std::size_t>(size))
@@ -150,30 +154,36 @@ Volume decode_npy(std::string_view bytes, const std::string& name) {
   if (!type)
     io::fail(name, "unsupported dtype " + io::quoted(d) +
                        " (want bool, a signed or unsigned integer of 1 to 8 bytes, float32 or float64)");
+  layout.type = *type;
   if (f.shape.size() != 3)
     io::fail(name, "the array has " + std::to_string(f.shape.size()) + " dimensions; a volume needs 3");
-  std::array<std::size_t, 3> shape{};
+  std::size_t count = 1;
   for (int a = 0; a < 3; ++a) {
-    if (f.shape[static_cast<std::size_t>(a)] > kMaxVolumeSamples)
-      io::fail(name, "the array is too large (more than " + std::to_string(kMaxVolumeSamples) + " samples)");
-    shape[static_cast<std::size_t>(a)] = static_cast<std::size_t>(f.shape[static_cast<std::size_t>(a)]);
+    const std::uint64_t n = f.shape[static_cast<std::size_t>(a)];
+    layout.shape[static_cast<std::size_t>(a)] = n > max_samples ? 0 : static_cast<std::size_t>(n);
+    count = n == 0 || n > max_samples || count > max_samples / n ? 0 : count * static_cast<std::size_t>(n);
   }
-  const std::size_t count = checked_sample_count(shape);
   const std::string shape_text =
-      std::to_string(shape[0]) + " x " + std::to_string(shape[1]) + " x " + std::to_string(shape[2]);
+      std::to_string(f.shape[0]) + " x " + std::to_string(f.shape[1]) + " x " + std::to_string(f.shape[2]);
   if (count == 0)
-    io::fail(name, "the array is " + shape_text + ": empty, or more than " +
-                       std::to_string(kMaxVolumeSamples) + " samples");
+    io::fail(name, "the array is " + shape_text + ": empty, or more than " + std::to_string(max_samples) +
+                       " samples");
+  layout.count = count;
   const std::size_t need = count * scalar_size(*type);
-  if (bytes.size() - data_offset != need)
+  if (bytes.size() - layout.data_offset != need)
     io::fail(name, "the array is " + shape_text + " of " + io::quoted(d) + " (" + std::to_string(need) +
-                       " bytes) but the file holds " + std::to_string(bytes.size() - data_offset) +
+                       " bytes) but the file holds " + std::to_string(bytes.size() - layout.data_offset) +
                        " bytes of data");
+  return layout;
+}
+
+Volume decode_npy(std::string_view bytes, const std::string& name) {
+  const NpyLayout layout = read_npy_layout(bytes, name, kMaxVolumeSamples);
   Volume v;
-  v.shape = shape;
-  v.samples = decode_scalars(bytes.data() + data_offset, count, *type, d[0] == '>');
-  if (f.fortran_order) {
-    const std::size_t dims[3] = {shape[0], shape[1], shape[2]};
+  v.shape = layout.shape;
+  v.samples = decode_scalars(bytes.data() + layout.data_offset, layout.count, layout.type, layout.big_endian);
+  if (layout.fortran_order) {
+    const std::size_t dims[3] = {layout.shape[0], layout.shape[1], layout.shape[2]};
     v.samples = fastest_first_to_c_order(v.samples, dims);
   }
   return v;
