@@ -120,6 +120,16 @@ SurfacePtr surface_in_region(const std::string& spec, const Settings& settings,
 
 int run_mesh(const MeshOptions& o) {
   if (o.tiles.tiles != 0) run_mesh_in_tiles(o);
+  // The blocked run's own flags mean nothing to one process: refused, not dropped.
+  const TilesOptions d;
+  for (const auto& [given, flag] :
+       {std::pair{!o.tiles.out_dir.empty(), "--out-dir"},
+        std::pair{o.tiles.scheduler != d.scheduler, "--scheduler"},
+        std::pair{o.tiles.workers != d.workers, "--workers"},
+        std::pair{!o.tiles.memory_limit.empty(), "--memory-limit"},
+        std::pair{o.tiles.prefilter_window != d.prefilter_window, "--prefilter-window"}})
+    if (given)
+      throw InputError(std::string(flag) + " needs --tiles (a blocked run, docs/distributed.md)", "tiles");
   Settings settings;
   settings.method = parse_method(o.method);
   if (!o.box.empty()) settings.box = parse_box(o.box);
@@ -344,6 +354,8 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--workers", o->tiles.workers, "--tiles: worker processes of the local cluster")
       ->capture_default_str();
   cmd->add_option("--memory-limit", o->tiles.memory_limit, "--tiles: memory per local worker, e.g. 2GB");
+  cmd->add_option("--prefilter-window", o->tiles.prefilter_window,
+                  "--tiles with a volume: samples per side of the prefilter's windows (default 192)");
   cmd->add_option("--stats-json", o->stats_json,
                   "Also write every statistic of the run to this file as JSON (by stage, by name)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success (and no progress line)");

@@ -16,6 +16,7 @@ struct TilesOptions {
   std::string scheduler = "local";
   int workers = 2;
   std::string memory_limit;
+  int prefilter_window = 0;  ///< a volume's prefilter windows (samples per side); 0: the driver's own
 };
 
 /// What a blocked run is given from `isopatch mesh`'s own options.

@@ -5,6 +5,7 @@ one process's topology; bad volumes are refused with the library's errors."""
 
 import json
 import os
+import re
 import subprocess
 
 import numpy as np
@@ -174,11 +175,16 @@ def test_bad_volumes_are_refused_with_the_librarys_errors(client, tmp_path, case
 def test_the_command_line_meshes_a_volume_in_blocks(volume_file, tmp_path):
     out = tmp_path / "blobs.ply"
     run = subprocess.run([CLI, "mesh", str(volume_file), "--level", "500", "--refine", "2", "--tiles", "2",
-                          "--out-dir", str(tmp_path / "blocks"), "-o", str(out)], capture_output=True, text=True,
-                         timeout=300)
+                          "--prefilter-window", "40", "--out-dir", str(tmp_path / "blocks"), "-o", str(out)],
+                         capture_output=True, text=True, timeout=300)
     assert run.returncode == 0, run.stderr
     assert "vertices" in run.stdout and out.exists()
     assert edges_in_two_triangles(read_ply(out)[1])
+    with open(re.search(r"manifest (\S+?);", run.stdout).group(1)) as f:
+        assert json.load(f)["prefilter"]["windows"] == 8  # 2 x 2 x 2 windows of 40
+    alone = subprocess.run([CLI, "mesh", str(volume_file), "--level", "500", "--prefilter-window", "40", "-o",
+                            str(tmp_path / "one.ply")], capture_output=True, text=True, timeout=300)
+    assert alone.returncode == 3 and "--prefilter-window needs --tiles" in alone.stderr
 
 
 @pytest.mark.parametrize("window", [24, 64, 100])

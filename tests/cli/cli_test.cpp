@@ -101,6 +101,8 @@ TEST(Cli, BadInputGivesOneLineAndDistinctExitCode) {
       {"mesh torus --method mc --grid 100000000" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --method mc --grid 0" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --valence-search -1" + ok_out, ErrorKind::InvalidArgument},
+      {"mesh torus --workers 3" + ok_out, ErrorKind::InvalidArgument},  // a blocked run's flag alone
+      {"mesh torus --out-dir " + dir.string() + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --valence-search 20000" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --curvature-sweeps -1" + ok_out, ErrorKind::InvalidArgument},
       {"mesh torus --curvature-sweeps 1001" + ok_out, ErrorKind::InvalidArgument},
