@@ -35,6 +35,9 @@ struct Volume {
   /// \throw InputError naming the first violation ("the volume has NaN at index (3, 4, 5)"); the
   ///        setting is "volume", "spacing" or "origin".
   void validate() const;
+  /// The part of validate() that needs no samples: spacing and origin finite, spacing > 0, a finite
+  /// extent. \throw InputError as validate() (setting "spacing" or "origin").
+  void validate_geometry() const;
 };
 
 /// The product of `shape`, or 0 when it exceeds kMaxVolumeSamples (so no product can overflow).

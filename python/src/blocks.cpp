@@ -20,6 +20,7 @@
 #include <span>
 #include <string>
 
+#include "arrays.hpp"
 #include "run_released.hpp"
 #include "settings_args.hpp"
 
@@ -72,14 +73,6 @@ py::array_t<T> rows(const std::vector<T>& flat, std::size_t width) {
   return out;
 }
 
-py::array_t<double> positions_array(const std::vector<Vec3>& points) {
-  py::array_t<double> out({static_cast<py::ssize_t>(points.size()), py::ssize_t{3}});
-  double* d = out.mutable_data();
-  for (std::size_t i = 0; i < points.size(); ++i)
-    for (int a = 0; a < 3; ++a) d[3 * i + static_cast<std::size_t>(a)] = points[i][a];
-  return out;
-}
-
 Mesh to_mesh(const Positions& positions, const Indices& triangles) {
   if (positions.ndim() != 2 || positions.shape(1) != 3)
     throw InputError("base positions must be (V, 3)", "base");
@@ -108,7 +101,7 @@ py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& opti
   std::vector<std::uint32_t> flat;
   for (const Triangle& t : base.base.triangles) flat.insert(flat.end(), t.begin(), t.end());
   py::dict out;
-  out["positions"] = positions_array(base.base.positions);
+  out["positions"] = vec3_array(base.base.positions);
   out["triangles"] = rows(flat, 3);
   out["level"] = base.level;
   return out;
@@ -148,11 +141,11 @@ class BlockJob {
     flat.reserve(mesh.triangles.size() * 3);
     for (const auto& t : mesh.triangles) flat.insert(flat.end(), t.begin(), t.end());
     py::dict out;
-    out["positions"] = positions_array(mesh.positions);
+    out["positions"] = vec3_array(mesh.positions);
     out["triangles"] = rows(flat, 3);
     out["seam_ids"] =
         py::array_t<std::uint64_t>(static_cast<py::ssize_t>(mesh.seam_ids.size()), mesh.seam_ids.data());
-    out["seam_positions"] = positions_array(mesh.seam_positions);
+    out["seam_positions"] = vec3_array(mesh.seam_positions);
     out["failed_points"] = mesh.failed_points;
     out["smallest_angle"] = mesh.smallest_angle;
     out["kept"] = mesh.kept;

@@ -7,6 +7,7 @@
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/render.hpp>
 
+#include "arrays.hpp"
 #include "report_dict.hpp"
 
 namespace py = pybind11;
@@ -14,14 +15,6 @@ namespace py = pybind11;
 namespace isopatch::python {
 
 namespace {
-
-py::array_t<double> vec3_array(const std::vector<Vec3>& v) {
-  py::array_t<double> a({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}});
-  auto m = a.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < v.size(); ++i)
-    for (int c = 0; c < 3; ++c) m(static_cast<py::ssize_t>(i), c) = v[i][c];
-  return a;
-}
 
 py::array_t<double> double_array(const std::vector<double>& v) {
   py::array_t<double> a(static_cast<py::ssize_t>(v.size()));

@@ -12,19 +12,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-double CoefficientBounds::at(int kind, std::size_t i, std::size_t j, std::size_t k) const {
-  const std::size_t n1 = shape_[1], n2 = shape_[2];
-  const double* p = c_ + (i * n1 + j) * n2 + k;
-  switch (kind) {
-    case 1:
-      return p[n1 * n2] - p[0];
-    case 2:
-      return p[n2] - p[0];
-    case 3:
-      return p[1] - p[0];
-    default:
-      return p[0];
-  }
+std::size_t CoefficientBounds::step(int kind) const {
+  return kind == 1 ? shape_[1] * shape_[2] : kind == 2 ? shape_[2] : kind == 3 ? 1 : 0;
 }
 
 CoefficientBounds::CoefficientBounds(const double* c, const std::array<std::size_t, 3>& shape)
@@ -43,7 +32,8 @@ CoefficientBounds::CoefficientBounds(const double* c, const std::array<std::size
           if (kind > 0 &&
               p[static_cast<std::size_t>(kind - 1)] + 1 >= shape_[static_cast<std::size_t>(kind - 1)])
             continue;  // no neighbour after it along that axis
-          const double v = at(kind, i, j, k);
+          const double* at = c_ + (i * shape_[1] + j) * shape_[2] + k;
+          const double v = kind == 0 ? *at : at[step(kind)] - *at;
           Summary& s = summary_[static_cast<std::size_t>(kind)][b];
           s.lo = std::min(s.lo, v);
           s.hi = std::max(s.hi, v);
@@ -54,14 +44,13 @@ CoefficientBounds::CoefficientBounds(const double* c, const std::array<std::size
 
 std::pair<double, double> CoefficientBounds::scan(int kind, const IndexBox& box) const {
   const std::size_t n1 = shape_[1], n2 = shape_[2];
-  // The neighbour a difference subtracts from: one step along its axis (none for values).
-  const std::size_t step = kind == 1 ? n1 * n2 : kind == 2 ? n2 : kind == 3 ? 1 : 0;
+  const std::size_t next = step(kind);
   double lo = kInf, hi = -kInf;
   for (std::size_t i = box[0].lo; i <= box[0].hi; ++i)
     for (std::size_t j = box[1].lo; j <= box[1].hi; ++j) {
       const double* row = c_ + (i * n1 + j) * n2;
       for (std::size_t k = box[2].lo; k <= box[2].hi; ++k) {
-        const double v = step == 0 ? row[k] : row[k + step] - row[k];
+        const double v = next == 0 ? row[k] : row[k + next] - row[k];
         lo = std::min(lo, v);
         hi = std::max(hi, v);
       }

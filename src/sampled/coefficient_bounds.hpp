@@ -39,7 +39,8 @@ class CoefficientBounds {
   /// query 0: values; 1 + axis: differences along that axis.
   std::pair<double, double> query(int kind, const IndexBox& box) const;
   std::pair<double, double> scan(int kind, const IndexBox& box) const;
-  double at(int kind, std::size_t i, std::size_t j, std::size_t k) const;
+  /// The offset from a coefficient to the neighbour its difference of `kind` subtracts (0: values).
+  std::size_t step(int kind) const;
 
   const double* c_;
   std::array<std::size_t, 3> shape_, bricks_;

@@ -250,17 +250,6 @@ class VolumeSurface final : public Surface {
   }
 };
 
-/// Checks what volume_surface() checks of a grid without its samples: spacing, origin, extent, level.
-void check_grid(const Volume& grid, double level) {
-  for (int a = 0; a < 3; ++a) {
-    if (!std::isfinite(grid.spacing[a]) || grid.spacing[a] <= 0.0)
-      throw InputError("the spacing must be finite and > 0 on every axis", "spacing");
-    if (!std::isfinite(grid.origin[a])) throw InputError("the origin must be finite", "origin");
-  }
-  if (!grid.extent().valid()) throw InputError("the volume's extent is not a finite box", "spacing");
-  if (!std::isfinite(level)) throw InputError("the level must be finite", "level");
-}
-
 }  // namespace
 
 void interpolating_coefficients(std::span<double> samples, const std::array<std::size_t, 3>& shape) {
@@ -303,7 +292,8 @@ SurfacePtr mapped_volume_surface(const std::string& path, const Vec3& spacing, c
   if (layout.data_offset % alignof(double) != 0)
     throw IoError(path + ": the coefficients do not start at a multiple of 8 bytes");
   grid.shape = layout.shape;
-  check_grid(grid, level);
+  grid.validate_geometry();
+  if (!std::isfinite(level)) throw InputError("the level must be finite", "level");
   Coefficients coefficients{reinterpret_cast<const double*>(file->bytes().data() + layout.data_offset), file};
   return std::make_shared<VolumeSurface>(grid, std::move(coefficients), level, std::move(name));
 }

@@ -40,12 +40,7 @@ void Volume::validate() const {
     throw InputError(
         "the volume is " + shape_text() + " but holds " + std::to_string(samples.size()) + " samples",
         "volume");
-  for (int a = 0; a < 3; ++a) {
-    if (!std::isfinite(spacing[a]) || spacing[a] <= 0.0)
-      throw InputError("the spacing must be finite and > 0 on every axis", "spacing");
-    if (!std::isfinite(origin[a])) throw InputError("the origin must be finite", "origin");
-  }
-  if (!extent().valid()) throw InputError("the volume's extent is not a finite box", "spacing");
+  validate_geometry();
   for (std::size_t n = 0; n < count; ++n)
     if (!std::isfinite(samples[n])) {
       const std::size_t k = n % shape[2], j = (n / shape[2]) % shape[1], i = n / (shape[2] * shape[1]);
@@ -54,6 +49,15 @@ void Volume::validate() const {
                            std::to_string(k) + ")",
                        "volume");
     }
+}
+
+void Volume::validate_geometry() const {
+  for (int a = 0; a < 3; ++a) {
+    if (!std::isfinite(spacing[a]) || spacing[a] <= 0.0)
+      throw InputError("the spacing must be finite and > 0 on every axis", "spacing");
+    if (!std::isfinite(origin[a])) throw InputError("the origin must be finite", "origin");
+  }
+  if (!extent().valid()) throw InputError("the volume's extent is not a finite box", "spacing");
 }
 
 }  // namespace isopatch
