@@ -104,7 +104,6 @@ SurfacePtr surface_in_region(const std::string& spec, const Settings& settings,
   refuse(o.max_error.has_value(), "--max-error");
   refuse(o.fields || o.vertex_roles, "--fields and --vertex-roles");
   refuse(!o.stats_json.empty(), "--stats-json (the manifest in --out-dir has the figures)");
-  refuse(is_composite_path(o.surface), "a composite surface (.ipatch)");
   TilesJob job;
   job.surface = o.surface;
   job.output = o.output == "-" ? "" : o.output;

@@ -26,10 +26,24 @@
 
 namespace isopatch {
 
+class CompositeModel;  // isopatch/composite_mesh.hpp
+
+/// What a composite's base is made of (all empty for a surface of one function): the patch of every
+/// base triangle, and per curve of the composite the segments the base sampled it with and its base
+/// vertices from its start to its end (segments + 1 of them, or none for a curve no patch uses). A
+/// refined base edge on a curve takes the curve's own points, sampled at `level` times its segments
+/// from the curve alone, so the two blocks beside it make them to the bit.
+struct BasePatches {
+  std::vector<std::uint32_t> triangle_patch;
+  std::vector<int> curve_segments;
+  std::vector<std::vector<std::uint32_t>> curve_vertices;
+};
+
 /// The base a blocked run refines.
 struct BlockBase {
-  Mesh base;      ///< the coarse mesh (projection and clean-up at `level` times the target edge)
-  int level = 1;  ///< every base edge is cut into `level` segments
+  Mesh base;            ///< the coarse mesh (projection and clean-up at `level` times the target edge)
+  int level = 1;        ///< every base edge is cut into `level` segments
+  BasePatches patches;  ///< a composite's patches and curves (empty for one function)
 };
 
 /// The base of `surface` for `settings` and the level it is refined by, chosen as mesh_surface() chooses
@@ -41,6 +55,15 @@ struct BlockBase {
 ///        along exact creases (blocks do not keep them yet: --creases off meshes the shape as smooth);
 ///        the errors of mesh_surface().
 BlockBase block_base(const Surface& surface, const Settings& settings);
+
+/// The base of a composite surface (.ipatch: I-patches, setback vertex blends) for `settings` and its
+/// level, as mesh_composite() chooses them along the composite's curves: its projection mesh at `level`
+/// times the target edge (every curve sampled once and shared by the patches beside it), the automatic
+/// level checked on the base's curvature patch by patch; BlockBase::patches filled.
+/// \throw SettingError for the Marching Cubes method, a frame, a region or given cells (a blocked
+///        composite is meshed along its curves), or the octree's settings (as mesh_composite()); the
+///        errors of mesh_composite() (EvaluationError, LimitError for budgets).
+BlockBase block_base(const CompositeModel& model, const Settings& settings);
 
 /// How a base is cut into blocks and how the output is numbered.
 struct BlockPlan {
@@ -70,10 +93,18 @@ struct BlockPlan {
 
 /// Cuts `base` into `blocks` blocks of about equal numbers of triangles, contiguous along the Morton
 /// curve of the triangles' centroids in the base's bounding box, and numbers the output of refinement
-/// by `level`. Depends on the base's bytes, `level` and `blocks` alone (every worker can recompute it).
-/// \throw InputError when the base has no triangles, blocks < 1 or more than the base's triangles, or
-///        level is outside 1..32; LimitError when the output would need more than 2^63 numbers.
-BlockPlan plan_blocks(const Mesh& base, int level, int blocks);
+/// by `level`. A composite's base (`patches` given) is cut patch by patch: its triangles ordered by
+/// patch, each cut moved to the nearest patch boundary within a quarter of a block (a seam along a curve
+/// takes the curve's own points, held in one process too, so such a seam costs nothing), and a corner's
+/// triangles in one patch never cut apart (a seam through a corner would hold the refined triangle
+/// between a curve and the seam as it lands: 11 to 16 degrees on the blend examples where one process
+/// relaxes it to 25). Depends on the base's bytes, `level`, `blocks` and `patches` alone (every worker
+/// can recompute it).
+/// \throw InputError when the base has no triangles, blocks < 1 or more than the base's triangles (or
+///        so many that a block would be empty), level is outside 1..32, or `patches` names another
+///        number of triangles or a vertex the base does not have; LimitError when the output would need
+///        more than 2^63 numbers.
+BlockPlan plan_blocks(const Mesh& base, int level, int blocks, const BasePatches& patches = {});
 
 /// One block of the output, in the output's numbers.
 struct BlockMesh {
@@ -106,6 +137,17 @@ struct BlockMesh {
 ///        of the refinement (LimitError for settings.max_vertices or cancel, EvaluationError).
 BlockMesh refine_block(const Surface& surface, const Settings& settings, const Mesh& base,
                        const BlockPlan& plan, int block);
+
+/// refine_block() for a composite's base (block_base(CompositeModel, ...)): every point lands on, and
+/// relaxes on, its own patch's function; a base edge on a curve takes the curve's own points (the same
+/// in every block); a curve vertex's normal is its patch's in the whole base (the lowest-numbered base
+/// triangle's), so a seam edge that ends on a curve starts the same in both blocks. BlockMesh::kept as
+/// one process keeps a composite's level (also within half a degree of the whole base's smallest angle,
+/// or at least 25 degrees).
+/// \pre plan == plan_blocks(base, level, blocks) and `patches` is the BlockBase's for this base.
+/// \throw InputError when `patches` does not describe a base of the composite, and as refine_block().
+BlockMesh refine_block(const CompositeModel& model, const BasePatches& patches, const Settings& settings,
+                       const Mesh& base, const BlockPlan& plan, int block);
 
 /// The whole output from every block's mesh (in any order; each block once), checking that every seam
 /// copy equals its owner's vertex bit for bit.

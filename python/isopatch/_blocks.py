@@ -43,6 +43,16 @@ def file_digest(path: str) -> str:
     return h.hexdigest()
 
 
+#: A composite base's arrays (the patch of every triangle, the curves' segments and vertices).
+_PATCH_KEYS = ("triangle_patch", "curve_segments", "curve_offsets", "curve_vertices")
+
+
+def is_composite(source: Dict[str, Any]) -> bool:
+    """Whether the source names a composite surface (a .ipatch file)."""
+    spec = source.get("spec", "")
+    return "volume" not in source and isinstance(spec, str) and spec.endswith(".ipatch") and len(spec) > 7
+
+
 def job_hash(job: Dict[str, Any]) -> str:
     """A hash of everything that decides a job's bytes: the library version, the source (and the bytes
     of a file it names), the box, the settings and the number of blocks."""
@@ -53,6 +63,8 @@ def job_hash(job: Dict[str, Any]) -> str:
     spec = source.get("spec", "")
     if isinstance(spec, str) and spec.startswith("@"):
         source["spec_sha256"] = file_digest(spec[1:])
+    elif is_composite(source):
+        source["spec_sha256"] = file_digest(spec)
     described = {
         "format": FORMAT,
         "version": _isopatch.__version__,
@@ -104,9 +116,11 @@ def job_state(job: Dict[str, Any]) -> Any:
     """The job's _isopatch.BlockJob in this process (made on first use; one job is kept)."""
     state = _STATE.get(job["hash"])
     if state is None:
-        base = _load(base_path(job), ("positions", "triangles"))
+        composite = is_composite(job["source"])
+        base = _load(base_path(job), ("positions", "triangles") + (_PATCH_KEYS if composite else ()))
+        patches = {k: base[k] for k in _PATCH_KEYS} if composite else None
         state = _isopatch.BlockJob(job["source"], job["box"], base["positions"], base["triangles"], job["level"],
-                                   job["blocks"])
+                                   job["blocks"], patches)
         _STATE.clear()
         _STATE[job["hash"]] = state
     return state
@@ -117,8 +131,9 @@ def make_base(job: Dict[str, Any]) -> int:
     path = base_path(job)
     if not os.path.exists(path):
         base = _isopatch.block_base(job["source"], job["box"], job["options"])
-        _write_npz(path, {"positions": base["positions"], "triangles": base["triangles"],
-                          "level": np.array(base["level"])})
+        arrays = {"positions": base["positions"], "triangles": base["triangles"], "level": np.array(base["level"])}
+        arrays.update(base.get("patches", {}))
+        _write_npz(path, arrays)
     return int(_load(path, ("level",))["level"])
 
 

@@ -113,8 +113,8 @@ def mesh_blocks(
     _test: Optional[Dict[str, Any]] = None,
     **options: Any,
 ) -> Dict[str, Any]:
-    """Meshes `surface` (a formula, catalogue name or ``@file``; or ``volume=`` a .npy/.nrrd file at
-    ``level``) as `tiles` blocks refined on Dask workers, writing per-block files and a manifest into
+    """Meshes `surface` (a formula, catalogue name, ``@file`` or a composite's ``.ipatch`` file; or
+    ``volume=`` a .npy/.nrrd file at ``level``) as `tiles` blocks refined on Dask workers, writing per-block files and a manifest into
     `out_dir` and, with `output`, the whole mesh (a .ply streamed block by block; any other format
     isopatch writes, e.g. .3mf, through one mesh in memory).
 
@@ -138,7 +138,7 @@ def mesh_blocks(
         raise InputError("unknown setting %r for a blocked run" % unknown[0], unknown[0])
     if (surface is None) == (volume is None):
         raise InputError("give a surface or a volume, not both or neither", "surface")
-    source: Dict[str, Any] = {"spec": surface, "params": dict(params or {})}
+    source: Dict[str, Any] = {"spec": _spec_source(surface), "params": dict(params or {})}
     if volume is not None:
         source = _volume_source(volume, level, prefilter_window)
     opts = {k: v for k, v in options.items() if v is not None}
@@ -202,6 +202,20 @@ def mesh_blocks(
         if cluster is not None:
             client.close()
             cluster.close()
+
+
+def _spec_source(surface: Optional[str]) -> Optional[str]:
+    """A surface spec as the workers read it: a file it names (``@file``, a ``.ipatch`` composite) made
+    absolute. Raises IoError for a named file that is not there."""
+    if not isinstance(surface, str):
+        return surface
+    named = surface[1:] if surface.startswith("@") else surface if surface.endswith(".ipatch") else None
+    if named is None:
+        return surface
+    if not os.path.isfile(named):
+        raise IoError("%s: cannot open: no such file" % named)
+    path = os.path.abspath(named)
+    return "@" + path if surface.startswith("@") else path
 
 
 def _volume_source(volume: str, level: float, window: int) -> Dict[str, Any]:

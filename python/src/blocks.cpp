@@ -1,5 +1,6 @@
 // Blocked meshing for isopatch.distributed (blocks.hpp). A surface is named by a source dict, the same
-// on the driver and on every worker: {"spec": formula, catalogue name or @file, "params": {...}} or
+// on the driver and on every worker: {"spec": formula, catalogue name, @file or a composite's .ipatch
+// file, "params": {...}} or
 // {"volume": path of a .npy or .nrrd file, "level": value}, with "coefficients" (a .npy of its B-spline
 // coefficients made by the distributed prefilter, mapped instead of the volume read), "spacing" and
 // "origin" when a blocked run made them.
@@ -8,6 +9,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <isopatch/blocks.hpp>
+#include <isopatch/composite_mesh.hpp>
 #include <isopatch/error.hpp>
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/resolve_surface.hpp>
@@ -17,8 +19,11 @@
 #include <array>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include "arrays.hpp"
 #include "run_released.hpp"
@@ -57,6 +62,15 @@ struct Source {
     if (source.contains("params")) params = source["params"].cast<std::map<std::string, double>>();
   }
 
+  bool composite() const { return volume.empty() && is_composite_path(spec); }
+
+  /// The composite a .ipatch spec names (read). Needs no GIL. \throw InputError when it has params.
+  CompositeModel read_model() const {
+    if (!params.empty())
+      throw InputError("params are for formulas, not composite surfaces (.ipatch)", "params");
+    return read_composite(spec);
+  }
+
   /// The surface (the coefficients mapped, the volume read and prefiltered, or the formula compiled).
   /// Needs no GIL.
   SurfacePtr surface(const std::optional<Box>& box) const {
@@ -89,12 +103,64 @@ Mesh to_mesh(const Positions& positions, const Indices& triangles) {
   return mesh;
 }
 
+/// A composite base's patches as arrays: triangle_patch, curve_segments, and the curves' vertices
+/// flattened (curve_vertices) with where each curve's begin (curve_offsets, one more than the curves).
+py::dict patches_dict(const BasePatches& patches) {
+  std::vector<std::int64_t> offsets{0};
+  std::vector<std::uint32_t> vertices;
+  for (const auto& curve : patches.curve_vertices) {
+    vertices.insert(vertices.end(), curve.begin(), curve.end());
+    offsets.push_back(static_cast<std::int64_t>(vertices.size()));
+  }
+  const auto array = [](const auto& v) {
+    using T = typename std::decay_t<decltype(v)>::value_type;
+    return py::array_t<T>(static_cast<py::ssize_t>(v.size()), v.data());
+  };
+  py::dict out;
+  out["triangle_patch"] = array(patches.triangle_patch);
+  out["curve_segments"] =
+      array(std::vector<std::int32_t>(patches.curve_segments.begin(), patches.curve_segments.end()));
+  out["curve_offsets"] = array(offsets);
+  out["curve_vertices"] = array(vertices);
+  return out;
+}
+
+/// patches_dict() read back. \throw InputError when the arrays do not fit together.
+BasePatches to_patches(const py::dict& arrays) {
+  const auto get = [&](const char* key) {
+    if (!arrays.contains(key))
+      throw InputError(std::string("the base's patches have no '") + key + "'", "base");
+    return arrays[key];
+  };
+  BasePatches out;
+  const auto patch =
+      get("triangle_patch").cast<py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>>();
+  out.triangle_patch.assign(patch.data(), patch.data() + patch.size());
+  const auto segments =
+      get("curve_segments").cast<py::array_t<std::int32_t, py::array::c_style | py::array::forcecast>>();
+  out.curve_segments.assign(segments.data(), segments.data() + segments.size());
+  const auto offsets =
+      get("curve_offsets").cast<py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>>();
+  const auto vertices =
+      get("curve_vertices").cast<py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>>();
+  if (offsets.size() != segments.size() + 1 || offsets.data()[0] != 0 ||
+      offsets.data()[offsets.size() - 1] != vertices.size())
+    throw InputError("the base's curve offsets do not fit its curves", "base");
+  for (py::ssize_t c = 0; c + 1 < offsets.size(); ++c) {
+    const std::int64_t begin = offsets.data()[c], end = offsets.data()[c + 1];
+    if (begin > end) throw InputError("the base's curve offsets do not rise", "base");
+    out.curve_vertices.emplace_back(vertices.data() + begin, vertices.data() + end);
+  }
+  return out;
+}
+
 py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& options) {
   Settings settings = to_settings(options);
   settings.box = to_box(box);
   const Source named(source);
   BlockBase base = run_released([&](const std::atomic<bool>* cancel) {
     settings.cancel = cancel;
+    if (named.composite()) return block_base(named.read_model(), settings);
     const SurfacePtr surface = named.surface(settings.box);
     return block_base(*surface, settings);
   });
@@ -104,6 +170,7 @@ py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& opti
   out["positions"] = vec3_array(base.base.positions);
   out["triangles"] = rows(flat, 3);
   out["level"] = base.level;
+  if (named.composite()) out["patches"] = patches_dict(base.patches);
   return out;
 }
 
@@ -111,10 +178,17 @@ py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& opti
 /// worker refines all its blocks of a job with one: the formula compiled, or the coefficients mapped, once).
 class BlockJob {
  public:
+  /// `patches`: a composite base's (patches_dict()), None for a surface of one function.
   BlockJob(const py::dict& source, const BoxArg& box, const Positions& positions, const Indices& triangles,
-           int level, int blocks)
+           int level, int blocks, const py::object& patches)
       : source_(source), box_(to_box(box)), base_(to_mesh(positions, triangles)) {
-    plan_ = run_released([&](const std::atomic<bool>*) { return plan_blocks(base_, level, blocks); });
+    if (source_.composite() != !patches.is_none())
+      throw InputError(
+          source_.composite() ? "a composite's base needs its patches" : "patches are for a composite's base",
+          "base");
+    if (!patches.is_none()) patches_ = to_patches(patches.cast<py::dict>());
+    plan_ =
+        run_released([&](const std::atomic<bool>*) { return plan_blocks(base_, level, blocks, patches_); });
   }
 
   /// The output's counts and where each block's numbers begin.
@@ -135,6 +209,7 @@ class BlockJob {
     settings.box = box_;
     BlockMesh mesh = run_released([&](const std::atomic<bool>* cancel) {
       settings.cancel = cancel;
+      if (source_.composite()) return refine_block(*model(), patches_, settings, base_, plan_, block);
       return refine_block(*surface(), settings, base_, plan_, block);
     });
     std::vector<std::uint64_t> flat;
@@ -157,9 +232,17 @@ class BlockJob {
   Source source_;
   std::optional<Box> box_;
   Mesh base_;
+  BasePatches patches_;
   BlockPlan plan_;
   std::mutex surface_mutex_;  // a worker of several threads may refine two blocks at once
   SurfacePtr surface_;
+  std::optional<CompositeModel> model_;
+
+  const CompositeModel* model() {
+    const std::lock_guard<std::mutex> lock(surface_mutex_);
+    if (!model_) model_.emplace(source_.read_model());
+    return &*model_;
+  }
 
   SurfacePtr surface() {
     const std::lock_guard<std::mutex> lock(surface_mutex_);
@@ -198,9 +281,10 @@ void bind_blocks(py::module_& m) {
   m.def("prefilter", &prefilter, py::arg("samples").noconvert());
   m.def("block_base", &base_of, py::arg("source"), py::arg("box"), py::arg("options"));
   py::class_<BlockJob>(m, "BlockJob")
-      .def(py::init<const py::dict&, const BoxArg&, const Positions&, const Indices&, int, int>(),
+      .def(py::init<const py::dict&, const BoxArg&, const Positions&, const Indices&, int, int,
+                    const py::object&>(),
            py::arg("source"), py::arg("box"), py::arg("positions"), py::arg("triangles"), py::arg("level"),
-           py::arg("blocks"))
+           py::arg("blocks"), py::arg("patches") = py::none())
       .def("counts", &BlockJob::counts)
       .def("refine", &BlockJob::refine, py::arg("options"), py::arg("block"));
   m.def("write_arrays", &write_arrays, py::arg("positions"), py::arg("triangles"), py::arg("path"));

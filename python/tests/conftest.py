@@ -2,6 +2,8 @@
 cluster of the blocked runs' tests."""
 
 import re
+import shutil
+import subprocess
 
 import numpy as np
 import pytest
@@ -65,6 +67,21 @@ def read_ply(path):
                             offset=end + 24 * v)
     assert (records["n"] == 3).all()
     return vertices, records["v"].astype(np.int64)
+
+
+def expect_one_manifold_part(part, vertices, faces) -> None:
+    """Asserts that Debian's prusa-slicer reads the 3MF `part` as one manifold part whose volume is the
+    signed volume of the mesh (vertices, faces)."""
+    slicer = shutil.which("prusa-slicer")
+    assert slicer, "prusa-slicer is missing (scripts/install-deps.sh installs it)"
+    a, b, c = (vertices[faces[:, k]] for k in range(3))
+    volume = float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
+    info = subprocess.run([slicer, "--info", str(part)], capture_output=True, text=True, timeout=300)
+    assert info.returncode == 0, info.stderr[-2000:]
+    fields = dict(re.findall(r"^(\w+) = *(\S+)$", info.stdout, re.M))
+    assert fields.get("manifold") == "yes", fields
+    assert int(fields["number_of_parts"]) == 1, fields
+    assert float(fields["volume"]) == pytest.approx(volume, rel=2e-5), fields
 
 
 @pytest.fixture(scope="session")

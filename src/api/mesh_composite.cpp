@@ -10,36 +10,20 @@
 #include <utility>
 #include <vector>
 
+#include "api/composite_settings.hpp"
 #include "api/crease_meshing.hpp"
 #include "api/multiresolution.hpp"
 #include "api/task_arena_run.hpp"
 #include "composite_mesher/composite_mesher.hpp"
 #include "composite_mesher/composite_refinement.hpp"
+#include "composite_mesher/patch_curvature.hpp"
 #include "composite_model/budgeted_composite.hpp"
 #include "composite_model/composite_surface.hpp"
 #include "composite_model/ipatch_file.hpp"
 #include "composite_model/patch_validity.hpp"
-#include "refine/refinement_level.hpp"
 
 namespace isopatch {
-namespace {
 
-/// The largest curvature of the composite at the vertices of `base` inside patches, each on its own
-/// patch's function (the corners, where I-patch functions are 0/0, and the other curve vertices left
-/// out; a vertex where the curvature is not finite is skipped).
-double patch_curvature(const Composite& c, const CompositeMesh& patches, const Mesh& base) {
-  double largest = 0.0;
-  std::vector<std::vector<Vec3>> inside(c.patches.size());
-  for (std::size_t v = 0; v < base.vertex_count(); ++v)
-    if (patches.vertex_patch[v] >= 0)
-      inside[static_cast<std::size_t>(patches.vertex_patch[v])].push_back(base.positions[v]);
-  for (std::size_t p = 0; p < c.patches.size(); ++p)
-    largest = std::max(largest, refine::largest_curvature(inside[p], *c.patches[p].surface, true));
-  return largest;
-}
-
-/// Settings that describe the octree, which the construction's curves replace: refused rather than
-/// ignored when set to other than their defaults. \throw SettingError naming the first such field.
 void refuse_octree_settings(const Settings& settings) {
   const Settings defaults;
   const auto refuse = [](const char* field) {
@@ -54,8 +38,6 @@ void refuse_octree_settings(const Settings& settings) {
   if (settings.max_cell_curvature != defaults.max_cell_curvature) refuse("max_cell_curvature");
   if (!settings.refine_around.empty()) refuse("refine_around");
 }
-
-}  // namespace
 
 bool meshed_through_partition(const Settings& settings) {
   return !settings.region.empty() || settings.frame.has_value() || !settings.cells.empty();
@@ -117,7 +99,9 @@ Mesh mesh_composite_along_curves(const CompositeModel& model, const Settings& se
     };
     BaseRefinement bases;
     bases.keep_base_angles = true;
-    bases.largest_curvature = [&](const Mesh& base) { return patch_curvature(c, last, base); };
+    bases.largest_curvature = [&](const Mesh& base) {
+      return largest_patch_curvature(c, last.vertex_patch, base);
+    };
     bases.refine = [&](const Mesh& base, const refine::RefineParams& params) {
       last.mesh = base;
       refine::RefineResult refined = refine_composite(c, last, params);

@@ -141,13 +141,18 @@ bool refinement_kept(const Settings& settings, double smallest_angle) {
   return settings.refine != 0 || smallest_angle >= kAngleFloor;
 }
 
+bool refinement_kept(const Settings& settings, double smallest_angle, double base_smallest_angle) {
+  return refinement_kept(settings, smallest_angle) &&
+         (settings.refine != 0 ||
+          smallest_angle >= std::min(kCleanupFloor, base_smallest_angle - kBaseAngleSlack));
+}
+
 Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, MeshStats* stats,
                           const LevelMesher& mesh_level, const SizeEstimate* estimate,
                           const BaseRefinement& bases) {
   const auto start = std::chrono::steady_clock::now();
   const Box box = settings.box.value_or(surface.box());
   const double edge = default_edge_length(settings, box);
-  const bool automatic = settings.refine == 0;
   const bool from_curvature = level_from_curvature(settings);
   int level = first_level(settings, edge, estimate);
   RefineStats info;
@@ -210,13 +215,10 @@ Mesh mesh_multiresolution(const Surface& surface, const Settings& settings, Mesh
     spent.gradient_evaluations += refined.gradient_evaluations;
     spent.times.add("refine",
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - refine_start).count());
-    const bool kept =
-        refined.failed_points == 0 &&
-        (!automatic ||
-         (refinement_kept(settings, refined.smallest_angle) &&
-          (!bases.keep_base_angles ||
-           refined.smallest_angle >=
-               std::min(kCleanupFloor, refine::smallest_angle_degrees(base) - kBaseAngleSlack))));
+    const bool kept = refined.failed_points == 0 &&
+                      (bases.keep_base_angles ? refinement_kept(settings, refined.smallest_angle,
+                                                                refine::smallest_angle_degrees(base))
+                                              : refinement_kept(settings, refined.smallest_angle));
     if (kept) {
       info.level = level;
       info.base_vertices = base.vertex_count();

@@ -55,6 +55,11 @@ refine::RefineParams refine_params(const Settings& settings, const Box& box, int
 /// explicit level, at the automatic one when it is at least 20 degrees (else the level is halved).
 bool refinement_kept(const Settings& settings, double smallest_angle);
 
+/// refinement_kept() for a base made of patches whose refinement keeps the base's angles
+/// (BaseRefinement::keep_base_angles): at the automatic level the smallest angle must also be at least
+/// the clean-up's floor (25 degrees) or within half a degree of the base's own, `base_smallest_angle`.
+bool refinement_kept(const Settings& settings, double smallest_angle, double base_smallest_angle);
+
 /// The multiresolution mesh of `surface` (settings.refine != 1, projection). `mesh_level` meshes the
 /// bases (and the output itself when the level ends at 1); stats, when given, are those of the final
 /// base with the evaluations and times of every attempt added and MeshStats::refine filled.

@@ -1,6 +1,7 @@
-// One block of a blocked base refined on its own, its output in the whole output's numbers (blocks.hpp).
-#include <isopatch/blocks.hpp>
+// One block of a blocked base refined on its own, its output in the whole output's numbers (blocks.hpp,
+// block_piece.hpp).
 #include <isopatch/error.hpp>
+#include "blocks/block_piece.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -13,38 +14,10 @@
 #include "refine/refine_mesh.hpp"
 
 namespace isopatch {
+namespace blocks {
 namespace {
 
 constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
-
-/// A block's triangles as a mesh of their own, its vertices numbered in the base's order (so every edge
-/// runs from its lower to its higher end in both numberings and its points are made the same way).
-struct BlockPiece {
-  Mesh mesh;
-  std::vector<std::uint32_t> triangles;  ///< base triangle of each local triangle, ascending
-  std::vector<std::uint32_t> vertices;   ///< base vertex of each local vertex, ascending
-};
-
-BlockPiece block_piece(const Mesh& base, const BlockPlan& plan, int block) {
-  BlockPiece piece;
-  std::vector<std::uint32_t> local(base.vertex_count(), kUnused);
-  for (std::size_t t = 0; t < base.triangle_count(); ++t)
-    if (plan.triangle_block[t] == static_cast<std::uint32_t>(block)) {
-      piece.triangles.push_back(static_cast<std::uint32_t>(t));
-      for (const std::uint32_t v : base.triangles[t]) local[v] = 0;
-    }
-  for (std::size_t v = 0; v < base.vertex_count(); ++v)
-    if (local[v] != kUnused) {
-      local[v] = static_cast<std::uint32_t>(piece.vertices.size());
-      piece.vertices.push_back(static_cast<std::uint32_t>(v));
-      piece.mesh.positions.push_back(base.positions[v]);
-    }
-  for (const std::uint32_t t : piece.triangles) {
-    const Triangle& tri = base.triangles[t];
-    piece.mesh.triangles.push_back({local[tri[0]], local[tri[1]], local[tri[2]]});
-  }
-  return piece;
-}
 
 /// The edge from a to b (a < b) in `ends` (sorted ascending). \pre it is one of them.
 std::uint32_t find_edge(const std::vector<std::array<std::uint32_t, 2>>& ends, std::uint32_t a,
@@ -66,10 +39,31 @@ void check_block_input(const Mesh& base, const BlockPlan& plan, int block) {
 
 }  // namespace
 
-BlockMesh refine_block(const Surface& surface, const Settings& settings, const Mesh& base,
-                       const BlockPlan& plan, int block) {
+BlockPiece block_piece(const Mesh& base, const BlockPlan& plan, int block) {
   check_block_input(base, plan, block);
-  const BlockPiece piece = block_piece(base, plan, block);
+  BlockPiece piece;
+  std::vector<std::uint32_t> local(base.vertex_count(), kUnused);
+  for (std::size_t t = 0; t < base.triangle_count(); ++t)
+    if (plan.triangle_block[t] == static_cast<std::uint32_t>(block)) {
+      piece.triangles.push_back(static_cast<std::uint32_t>(t));
+      for (const std::uint32_t v : base.triangles[t]) local[v] = 0;
+    }
+  for (std::size_t v = 0; v < base.vertex_count(); ++v)
+    if (local[v] != kUnused) {
+      local[v] = static_cast<std::uint32_t>(piece.vertices.size());
+      piece.vertices.push_back(static_cast<std::uint32_t>(v));
+      piece.mesh.positions.push_back(base.positions[v]);
+    }
+  for (const std::uint32_t t : piece.triangles) {
+    const Triangle& tri = base.triangles[t];
+    piece.mesh.triangles.push_back({local[tri[0]], local[tri[1]], local[tri[2]]});
+  }
+  return piece;
+}
+
+BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& base, const BlockPlan& plan,
+                       int block, const BlockPiece& piece, const PieceRefiner& refine,
+                       std::optional<double> base_smallest_angle) {
   const refine::BaseEdges local_edges = refine::base_edges(piece.mesh);
   // Per local edge: the base edge it is, and whether it is a seam with another block.
   std::vector<std::uint32_t> global_edge(local_edges.size());
@@ -81,20 +75,21 @@ BlockMesh refine_block(const Surface& surface, const Settings& settings, const M
   }
 
   const int k = plan.level;
-  refine::RefineParams params = refine_params(settings, settings.box.value_or(surface.box()), k);
+  refine::RefineParams params = refine_params(settings, box, k);
   params.max_vertices = 0;  // the whole output's budget is the caller's (BlockPlan::vertices)
   params.scale = std::max(bounding_box(base).diagonal(), 1e-300);
   params.seam = [&](std::uint32_t a, std::uint32_t b) {
     return seam[find_edge(local_edges.ends, a, b)] != 0;
   };
   refine::RefineResult refined =
-      run_in_task_arena(settings, nullptr, [&] { return refine::refine_mesh(piece.mesh, surface, params); });
+      run_in_task_arena(settings, nullptr, [&] { return refine(piece.mesh, params); });
   BlockMesh out;
   out.block = block;
   out.failed_points = refined.failed_points;
   if (refined.failed_points > 0) return out;
   out.smallest_angle = refined.smallest_angle;
-  out.kept = refinement_kept(settings, refined.smallest_angle);
+  out.kept = base_smallest_angle ? refinement_kept(settings, refined.smallest_angle, *base_smallest_angle)
+                                 : refinement_kept(settings, refined.smallest_angle);
 
   // The output number of every local vertex, from the plan (refine/lattice_layout.hpp gives the local
   // numbers: base vertices, edge points from the lower end, inner points per triangle).
@@ -137,6 +132,19 @@ BlockMesh refine_block(const Surface& surface, const Settings& settings, const M
   }
   out.seam_band_vertices = static_cast<std::size_t>(std::count(band.begin(), band.end(), std::uint8_t{1}));
   return out;
+}
+
+}  // namespace blocks
+
+BlockMesh refine_block(const Surface& surface, const Settings& settings, const Mesh& base,
+                       const BlockPlan& plan, int block) {
+  const blocks::BlockPiece piece = blocks::block_piece(base, plan, block);
+  return blocks::refine_piece(
+      settings, settings.box.value_or(surface.box()), base, plan, block, piece,
+      [&](const Mesh& mesh, const refine::RefineParams& params) {
+        return refine::refine_mesh(mesh, surface, params);
+      },
+      std::nullopt);
 }
 
 }  // namespace isopatch

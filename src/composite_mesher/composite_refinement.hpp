@@ -12,6 +12,19 @@
 
 namespace isopatch {
 
+/// \throw InputError unless `triangle_patch` (one per base triangle, each a patch of `composite`),
+///        `curve_segments` (one per curve, 0..kMaxPatchResolution times refine::kMaxLevel) and
+///        `curve_vertices` (one list per curve, empty or curve_segments + 1 vertices of `base`) describe a
+///        base of `composite`.
+void check_composite_parts(const Composite& composite, const Mesh& base,
+                           const std::vector<std::uint32_t>& triangle_patch,
+                           const std::vector<int>& curve_segments,
+                           const std::vector<std::vector<std::uint32_t>>& curve_vertices);
+
+/// `params` as a composite is refined with: the relaxation may not lower a triangle under the angle
+/// target further (the curves' held vertices would otherwise close the triangles beside them).
+refine::RefineParams composite_refine_params(const refine::RefineParams& params);
+
 /// `base` (mesh_composite_projection(composite, ...)) refined by params.level: every base triangle cut
 /// into level^2 triangles of its patch. The result's mesh is empty when the refinement failed its guard
 /// (result.failed_points > 0; the caller then uses a smaller level). Otherwise `refined`, when given,

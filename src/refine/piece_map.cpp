@@ -28,6 +28,7 @@ PieceMap map_pieces(const Mesh& base, const BaseEdges& edges, const RefinePieces
   }
   for (std::uint32_t& p : map.vertex_piece)
     if (p == kUnset) p = 0;
+  if (!pieces.vertex_piece.empty()) map.vertex_piece = pieces.vertex_piece;
 
   map.curve_first.assign(edges.size(), -1);
   map.on_curve.assign(base.vertex_count(), 0);

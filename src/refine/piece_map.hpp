@@ -15,7 +15,7 @@ namespace isopatch::refine {
 
 struct PieceMap {
   /// Per base vertex and per base edge: the piece of the lowest-numbered triangle that uses it (0 for a
-  /// vertex no triangle uses).
+  /// vertex no triangle uses); per vertex RefinePieces::vertex_piece instead when given.
   std::vector<std::uint32_t> vertex_piece;
   std::vector<std::uint32_t> edge_piece;
   /// Per base edge: the index in curve_points of its k - 1 points, or -1 for an edge off the curves.
@@ -32,7 +32,7 @@ struct PieceMap {
 
 /// The map of `base` (whose edges are `edges`) refined by `level`.
 /// \pre pieces.triangle_piece is empty (every triangle on piece 0) or one entry per base triangle, each
-///      below pieces.functions.size().
+///      below pieces.functions.size(); pieces.vertex_piece likewise per base vertex.
 /// \throw InputError when pieces.curve_points returns points that are not finite.
 PieceMap map_pieces(const Mesh& base, const BaseEdges& edges, const RefinePieces& pieces, int level);
 

@@ -82,6 +82,15 @@ void check_pieces(const Mesh& base, const RefinePieces& pieces) {
   if (pieces.functions.empty()) throw InputError("refine: no function to refine on");
   for (const Surface* s : pieces.functions)
     if (!s) throw InputError("refine: a piece has no function");
+  if (!pieces.vertex_piece.empty()) {
+    if (pieces.vertex_piece.size() != base.vertex_count())
+      throw InputError("refine: " + std::to_string(pieces.vertex_piece.size()) + " vertex pieces for " +
+                       std::to_string(base.vertex_count()) + " base vertices");
+    for (const std::uint32_t p : pieces.vertex_piece)
+      if (p >= pieces.functions.size())
+        throw InputError("refine: a base vertex names piece " + std::to_string(p) + " of " +
+                         std::to_string(pieces.functions.size()));
+  }
   if (pieces.triangle_piece.empty()) return;
   if (pieces.triangle_piece.size() != base.triangle_count())
     throw InputError("refine: " + std::to_string(pieces.triangle_piece.size()) + " triangle pieces for " +

@@ -73,6 +73,10 @@ struct RefineParams {
 struct RefinePieces {
   std::vector<const Surface*> functions;      ///< per piece, not null; they outlive the call
   std::vector<std::uint32_t> triangle_piece;  ///< per base triangle: its piece (< functions.size())
+  /// Per base vertex: the piece whose function gives its normal (a vertex on a curve lies on several),
+  /// or empty: the piece of the lowest-numbered triangle that uses it. A part of a larger base refined
+  /// alone passes the whole base's, so a vertex it shares starts its edges as the whole base's does.
+  std::vector<std::uint32_t> vertex_piece;
   /// The points of a base edge that lies on a curve the pieces meet along (or that bounds an open
   /// piece): given the edge's ends a < b (base vertex numbers) and k, writes the k - 1 points at j/k of
   /// the way from a to b along the curve (j = 1..k-1) into `out` (size k - 1) and returns true; returns
@@ -106,7 +110,8 @@ RefineResult refine_mesh(const Mesh& base, const Surface& surface, const RefineP
 /// meeting only along edges on which pieces.curve_points gives the points), as refine_mesh(). An edge
 /// between two pieces that is not on a curve fails the guard (failed_points). Output triangle t*k^2 + i
 /// belongs to base triangle t's piece. The same bytes for any thread count.
-/// \throw InputError when pieces has no function, a null one, or triangle_piece does not match the base;
+/// \throw InputError when pieces has no function, a null one, or triangle_piece or vertex_piece does not
+///        match the base;
 ///        otherwise as refine_mesh().
 RefineResult refine_pieces(const Mesh& base, const RefinePieces& pieces, const RefineParams& params);
 

@@ -133,6 +133,13 @@ TEST(RefinePieces, RefusesMalformedPieces) {
   RefinePieces out_of_range = two.pieces;
   out_of_range.triangle_piece[0] = 2;
   EXPECT_THROW(refine_pieces(two.base, out_of_range, p), InputError);
+  RefinePieces short_vertices = two.pieces;
+  short_vertices.vertex_piece.assign(two.base.vertex_count() - 1, 0);
+  EXPECT_THROW(refine_pieces(two.base, short_vertices, p), InputError);
+  RefinePieces vertex_out_of_range = two.pieces;
+  vertex_out_of_range.vertex_piece.assign(two.base.vertex_count(), 0);
+  vertex_out_of_range.vertex_piece.back() = 2;
+  EXPECT_THROW(refine_pieces(two.base, vertex_out_of_range, p), InputError);
   RefinePieces not_finite = two.pieces;
   not_finite.curve_points = [](std::uint32_t, std::uint32_t, int, std::span<Vec3> out) {
     for (Vec3& q : out) q = Vec3::Constant(std::nan(""));

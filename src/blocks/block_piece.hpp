@@ -1,0 +1,44 @@
+#pragma once
+// One block of a blocked base as a mesh of its own, and its refinement put in the output's numbers
+// (isopatch/blocks.hpp): shared by the blocks of one function and of a composite's patches.
+
+#include <isopatch/blocks.hpp>
+#include <isopatch/geometry.hpp>
+#include <isopatch/mesh.hpp>
+#include <isopatch/settings.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "refine/refine_mesh.hpp"
+
+namespace isopatch::blocks {
+
+/// A block's triangles as a mesh of their own, its vertices numbered in the base's order (so every edge
+/// runs from its lower to its higher end in both numberings and its points are made the same way).
+struct BlockPiece {
+  Mesh mesh;
+  std::vector<std::uint32_t> triangles;  ///< base triangle of each local triangle, ascending
+  std::vector<std::uint32_t> vertices;   ///< base vertex of each local vertex, ascending
+};
+
+/// Block `block` of `plan` cut out of `base`.
+/// \throw InputError for a block outside 0..plan.blocks-1 or a plan that does not fit the base.
+BlockPiece block_piece(const Mesh& base, const BlockPlan& plan, int block);
+
+/// Refines a piece's mesh with the given parameters (refine_mesh or refine_pieces on its functions).
+using PieceRefiner =
+    std::function<refine::RefineResult(const Mesh& piece, const refine::RefineParams& params)>;
+
+/// Refines `piece` (block `block` of `plan` on `base`) with `refine` and the preset of `settings` in
+/// `box`, its seams with other blocks landed from the edge alone and held, and gives the block in the
+/// output's numbers. The block is kept as refinement_kept() keeps it; with `base_smallest_angle` (a
+/// composite's base) as the overload that also asks for the base's angles.
+/// \throw as refine_block().
+BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& base, const BlockPlan& plan,
+                       int block, const BlockPiece& piece, const PieceRefiner& refine,
+                       std::optional<double> base_smallest_angle);
+
+}  // namespace isopatch::blocks

@@ -1,0 +1,186 @@
+// A composite surface (.ipatch) meshed as blocks (isopatch/blocks.hpp): with one block the mesh of one
+// process; with several, watertight across the seams, every curve point the curve's own sample to the
+// bit, every vertex on its patch's function, of the same topology and nearly the same quality; the
+// plan cuts along patches where it can and never through a corner.
+#include <gtest/gtest.h>
+
+#include <isopatch/blocks.hpp>
+#include <isopatch/composite_mesh.hpp>
+#include <isopatch/error.hpp>
+#include <isopatch/metrics.hpp>
+#include <isopatch/topology.hpp>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "composite_mesher/curve_samples.hpp"
+
+namespace isopatch {
+namespace {
+
+const std::string kCompositeExamples = std::string(ISOPATCH_SOURCE_DIR) + "/examples/";
+
+Settings composite_settings(int level = 3) {
+  Settings s;
+  s.refine = level;
+  s.edge_length = 0.06;
+  return s;
+}
+
+/// A composite example's base cut into `count` blocks, every block refined (in reverse order).
+struct BlockedComposite {
+  CompositeModel model;
+  Settings settings;
+  BlockBase base;
+  BlockPlan plan;
+  std::vector<BlockMesh> blocks;
+
+  BlockedComposite(const std::string& name, int count, int level)
+      : model(read_composite(kCompositeExamples + name)),
+        settings(composite_settings(level)),
+        base(block_base(model, settings)),
+        plan(plan_blocks(base.base, base.level, count, base.patches)) {
+    for (int b = plan.blocks - 1; b >= 0; --b)
+      blocks.push_back(refine_block(model, base.patches, settings, base.base, plan, b));
+  }
+};
+
+struct Example {
+  const char* file;
+  int level;  ///< a level one process keeps on it at edge 0.06
+};
+
+class CompositeBlocks : public ::testing::TestWithParam<Example> {};
+
+TEST_P(CompositeBlocks, OneBlockIsTheMeshOfOneProcess) {
+  const BlockedComposite one(GetParam().file, 1, GetParam().level);
+  ASSERT_EQ(one.base.level, GetParam().level);
+  ASSERT_FALSE(one.base.patches.triangle_patch.empty());
+  const Mesh blocked = assemble_blocks(one.plan, one.blocks);
+  const Mesh whole = mesh_composite(one.model, one.settings);
+  EXPECT_EQ(blocked.positions, whole.positions);
+  EXPECT_EQ(blocked.triangles, whole.triangles);
+}
+
+TEST_P(CompositeBlocks, SixBlocksAreWatertightWithTheCurvesOwnPointsAndAsGoodAsOneProcess) {
+  const BlockedComposite six(GetParam().file, 6, GetParam().level);
+  std::size_t seam_copies = 0;
+  for (const BlockMesh& b : six.blocks) {
+    EXPECT_EQ(b.failed_points, 0U);
+    EXPECT_TRUE(b.kept);
+    seam_copies += b.seam_ids.size();
+  }
+  EXPECT_GT(seam_copies, 0U);  // assemble_blocks checks every copy's bits against its owner's
+  const Mesh mesh = assemble_blocks(six.plan, six.blocks);
+  const Mesh whole = mesh_composite(six.model, six.settings);
+  EXPECT_EQ(mesh.vertex_count(), whole.vertex_count());
+  const QualityReport q = analyze_quality(mesh, six.model.surface().get());
+  const QualityReport one = analyze_quality(whole, six.model.surface().get());
+  EXPECT_TRUE(q.topology.watertight());
+  EXPECT_TRUE(q.topology.consistently_oriented());
+  EXPECT_TRUE(q.topology.outward_oriented());
+  EXPECT_EQ(q.topology.duplicate_vertices, 0U);
+  EXPECT_EQ(q.topology.euler_characteristic, one.topology.euler_characteristic);
+  EXPECT_EQ(q.topology.components.size(), one.topology.components.size());
+  EXPECT_EQ(q.self_intersections.pairs, 0U);
+  ASSERT_TRUE(q.accuracy);
+  EXPECT_LT(q.accuracy->vertex_distance.max, 1e-9);
+  EXPECT_GT(q.valence.share_6, one.valence.share_6 - 0.02);
+  // Most seams run along curves, whose points one process holds too.
+  EXPECT_GT(q.shape.min_angle.min, std::min(24.0, one.shape.min_angle.min - 1.0));
+
+  // Every curve's samples at level times its base segments between its base samples are vertices, bit
+  // for bit (no vertex is repeated, above): both blocks beside a curve edge took the curve's own points.
+  std::vector<std::array<double, 3>> positions;
+  for (const Vec3& p : mesh.positions) positions.push_back({p.x(), p.y(), p.z()});
+  std::sort(positions.begin(), positions.end());
+  const Composite& c = six.model.composite();
+  std::size_t curve_points = 0;
+  for (std::size_t i = 0; i < c.curves.size(); ++i) {
+    if (six.base.patches.curve_vertices[i].empty()) continue;
+    const std::vector<Vec3> samples = sample_curve(c, i, six.base.patches.curve_segments[i] * six.base.level);
+    for (std::size_t m = 0; m < samples.size(); ++m) {
+      if (m % static_cast<std::size_t>(six.base.level) == 0) continue;  // a base sample
+      const Vec3& p = samples[m];
+      EXPECT_TRUE(
+          std::binary_search(positions.begin(), positions.end(), std::array<double, 3>{p.x(), p.y(), p.z()}));
+      ++curve_points;
+    }
+  }
+  EXPECT_GT(curve_points, 0U);
+}
+
+TEST(CompositeBlocks, PlansCutAlongPatchesAndNeverThroughACorner) {
+  const CompositeModel model = read_composite(kCompositeExamples + "rounded_box.ipatch");
+  const BlockBase base = block_base(model, composite_settings());
+  const std::size_t triangles = base.base.triangle_count();
+  for (const int count : {2, 6, 20, 60}) {
+    const BlockPlan plan = plan_blocks(base.base, base.level, count, base.patches);
+    // Patches split between blocks: at most one per cut.
+    std::map<std::uint32_t, std::set<std::uint32_t>> blocks_of_patch;
+    for (std::size_t t = 0; t < triangles; ++t)
+      blocks_of_patch[base.patches.triangle_patch[t]].insert(plan.triangle_block[t]);
+    std::size_t split = 0;
+    for (const auto& [patch, in] : blocks_of_patch) split += in.size() - 1;
+    EXPECT_LE(split, static_cast<std::size_t>(count - 1));
+    // Blocks within half a block of the even share.
+    for (const std::uint64_t n : plan.triangle_count)
+      EXPECT_NEAR(static_cast<double>(n) / (base.level * base.level), static_cast<double>(triangles) / count,
+                  0.5 * static_cast<double>(triangles) / count + 12.0);
+    // A corner's triangles of one patch are in one block.
+    for (const auto& curve : base.patches.curve_vertices) {
+      if (curve.empty()) continue;
+      for (const std::uint32_t corner : {curve.front(), curve.back()}) {
+        std::map<std::uint32_t, std::set<std::uint32_t>> around;
+        for (std::size_t t = 0; t < triangles; ++t)
+          for (const std::uint32_t v : base.base.triangles[t])
+            if (v == corner) around[base.patches.triangle_patch[t]].insert(plan.triangle_block[t]);
+        for (const auto& [patch, in] : around) EXPECT_EQ(in.size(), 1U);
+      }
+    }
+  }
+  // A base of one function is cut as before: evenly along the Morton curve.
+  const BlockPlan plain = plan_blocks(base.base, base.level, 6);
+  for (const std::uint64_t n : plain.triangle_count)
+    EXPECT_NEAR(static_cast<double>(n) / (base.level * base.level), static_cast<double>(triangles) / 6, 1.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, CompositeBlocks,
+                         ::testing::Values(Example{"cube.ipatch", 3}, Example{"rounded_box.ipatch", 3},
+                                           Example{"octahedron_blend.ipatch", 2}));
+
+TEST(CompositeBlocks, RefusesPatchesOfAnotherBaseAndPartitionSettings) {
+  const CompositeModel model = read_composite(kCompositeExamples + "cube.ipatch");
+  const Settings settings = composite_settings();
+  const BlockBase base = block_base(model, settings);
+  const BlockPlan plan = plan_blocks(base.base, base.level, 2, base.patches);
+  BasePatches wrong = base.patches;
+  wrong.triangle_patch.pop_back();
+  EXPECT_THROW(refine_block(model, wrong, settings, base.base, plan, 0), InputError);
+  wrong = base.patches;
+  wrong.triangle_patch[0] = 1000;
+  EXPECT_THROW(refine_block(model, wrong, settings, base.base, plan, 0), InputError);
+  wrong = base.patches;
+  wrong.curve_segments[0] = 1 << 20;
+  EXPECT_THROW(refine_block(model, wrong, settings, base.base, plan, 0), InputError);
+  Settings region = settings;
+  region.region = {HalfSpace{1.0, 0.0, 0.0, -0.5}};
+  EXPECT_THROW(block_base(model, region), SettingError);
+  Settings octree = settings;
+  octree.max_depth = 3;
+  EXPECT_THROW(block_base(model, octree), SettingError);
+  BasePatches far = base.patches;
+  far.curve_vertices[0].back() = static_cast<std::uint32_t>(base.base.vertex_count());
+  EXPECT_THROW(plan_blocks(base.base, base.level, 2, far), InputError);
+  BasePatches short_patches = base.patches;
+  short_patches.triangle_patch.pop_back();
+  EXPECT_THROW(plan_blocks(base.base, base.level, 2, short_patches), InputError);
+  EXPECT_THROW(plan_blocks(base.base, base.level, static_cast<int>(base.base.triangle_count()), base.patches),
+               InputError);  // a block would be empty: the corners keep their triangles together
+}
+
+}  // namespace
+}  // namespace isopatch
