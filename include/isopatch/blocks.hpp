@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -51,9 +52,9 @@ struct BlockBase {
 /// coarse estimate of the curvature, checked on the base's own curvature. The guard and angle checks of
 /// the refinement itself come later, per block (BlockMesh::kept): the caller halves the level
 /// (settings.refine = level / 2) when a block is not kept.
-/// \throw SettingError for the Marching Cubes method, or ("creases") when the base is a formula meshed
-///        along exact creases (blocks do not keep them yet: --creases off meshes the shape as smooth);
-///        the errors of mesh_surface().
+/// \throw SettingError for the Marching Cubes method, or ("creases") when the surface is a formula meshed
+///        along exact creases (creased_pieces() gives the pieces blocks mesh it with); the errors of
+///        mesh_surface().
 BlockBase block_base(const Surface& surface, const Settings& settings);
 
 /// The base of a composite surface (.ipatch: I-patches, setback vertex blends) for `settings` and its
@@ -147,6 +148,31 @@ BlockMesh refine_block(const Surface& surface, const Settings& settings, const M
 /// \pre plan == plan_blocks(base, level, blocks) and `patches` is the BlockBase's for this base.
 /// \throw InputError when `patches` does not describe a base of the composite, and as refine_block().
 BlockMesh refine_block(const CompositeModel& model, const BasePatches& patches, const Settings& settings,
+                       const Mesh& base, const BlockPlan& plan, int block);
+
+/// A formula with exact creases (a CSG shape, docs/creases.md) as blocks mesh it: the composite of its
+/// pieces, bounded by its creases and seams, and the face functions the last angle repair keeps its
+/// vertices on. Opaque; made by creased_pieces().
+struct CreasedPieces;
+
+/// The crease analysis of `surface` with `settings`, as one process makes it (src/csg: the same
+/// settings give the same analysis, bit for bit, in every process), or null when the surface is meshed
+/// as a smooth one: creases off, another method, a region, frame or given cells, not a formula, no
+/// crease in the box, or a crease that leaves the box (one process then meshes it smooth and warns).
+/// \throw CreaseError for a shape whose creases cannot be meshed (docs/creases.md); EvaluationError.
+std::shared_ptr<const CreasedPieces> creased_pieces(const Surface& surface, const Settings& settings);
+
+/// The base of a formula with creases and its level, as mesh_surface() makes them along its creases:
+/// the composite of its pieces meshed along its creases and seams (BlockBase::patches filled).
+/// \pre `pieces` is creased_pieces(surface, settings) for these settings.
+/// \throw as block_base(CompositeModel, ...) but without its checks of the settings (the formula's).
+BlockBase block_base(const CreasedPieces& pieces, const Settings& settings);
+
+/// refine_block() for a formula with creases: as a composite's block, then the crease angle repair of
+/// one process (triangles under 27 degrees, vertices moved on their faces or along their crease) with
+/// the block's seam vertices held. BlockMesh::kept from the refinement, before the repair.
+/// \throw as refine_block(CompositeModel, ...).
+BlockMesh refine_block(const CreasedPieces& pieces, const BasePatches& patches, const Settings& settings,
                        const Mesh& base, const BlockPlan& plan, int block);
 
 /// The whole output from every block's mesh (in any order; each block once), checking that every seam

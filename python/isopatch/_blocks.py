@@ -116,9 +116,9 @@ def job_state(job: Dict[str, Any]) -> Any:
     """The job's _isopatch.BlockJob in this process (made on first use; one job is kept)."""
     state = _STATE.get(job["hash"])
     if state is None:
-        composite = is_composite(job["source"])
-        base = _load(base_path(job), ("positions", "triangles") + (_PATCH_KEYS if composite else ()))
-        patches = {k: base[k] for k in _PATCH_KEYS} if composite else None
+        # A composite's base, or a formula's meshed along its creases, has its pieces' arrays too.
+        base = _load(base_path(job))
+        patches = {k: base[k] for k in _PATCH_KEYS} if "triangle_patch" in base else None
         state = _isopatch.BlockJob(job["source"], job["box"], base["positions"], base["triangles"], job["level"],
                                    job["blocks"], patches)
         _STATE.clear()

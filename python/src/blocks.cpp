@@ -18,6 +18,7 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <span>
@@ -162,6 +163,7 @@ py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& opti
     settings.cancel = cancel;
     if (named.composite()) return block_base(named.read_model(), settings);
     const SurfacePtr surface = named.surface(settings.box);
+    if (const auto creased = creased_pieces(*surface, settings)) return block_base(*creased, settings);
     return block_base(*surface, settings);
   });
   std::vector<std::uint32_t> flat;
@@ -170,7 +172,7 @@ py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& opti
   out["positions"] = vec3_array(base.base.positions);
   out["triangles"] = rows(flat, 3);
   out["level"] = base.level;
-  if (named.composite()) out["patches"] = patches_dict(base.patches);
+  if (!base.patches.triangle_patch.empty()) out["patches"] = patches_dict(base.patches);
   return out;
 }
 
@@ -182,9 +184,10 @@ class BlockJob {
   BlockJob(const py::dict& source, const BoxArg& box, const Positions& positions, const Indices& triangles,
            int level, int blocks, const py::object& patches)
       : source_(source), box_(to_box(box)), base_(to_mesh(positions, triangles)) {
-    if (source_.composite() != !patches.is_none())
+    // A composite's base has patches; a formula's has them when it is meshed along its creases.
+    if (patches.is_none() ? source_.composite() : !source_.volume.empty())
       throw InputError(
-          source_.composite() ? "a composite's base needs its patches" : "patches are for a composite's base",
+          patches.is_none() ? "a composite's base needs its patches" : "a volume's base has no patches",
           "base");
     if (!patches.is_none()) patches_ = to_patches(patches.cast<py::dict>());
     plan_ =
@@ -210,6 +213,8 @@ class BlockJob {
     BlockMesh mesh = run_released([&](const std::atomic<bool>* cancel) {
       settings.cancel = cancel;
       if (source_.composite()) return refine_block(*model(), patches_, settings, base_, plan_, block);
+      if (!patches_.triangle_patch.empty())
+        return refine_block(*creased(settings), patches_, settings, base_, plan_, block);
       return refine_block(*surface(), settings, base_, plan_, block);
     });
     std::vector<std::uint64_t> flat;
@@ -237,6 +242,18 @@ class BlockJob {
   std::mutex surface_mutex_;  // a worker of several threads may refine two blocks at once
   SurfacePtr surface_;
   std::optional<CompositeModel> model_;
+
+  std::shared_ptr<const CreasedPieces> creased_;
+
+  /// The formula's crease analysis (made once: the job's settings are the same for every block; the
+  /// level a retry halves does not enter it). \throw InputError when the formula has no creases now.
+  std::shared_ptr<const CreasedPieces> creased(const Settings& settings) {
+    const SurfacePtr f = surface();
+    const std::lock_guard<std::mutex> lock(surface_mutex_);
+    if (!creased_) creased_ = creased_pieces(*f, settings);
+    if (!creased_) throw InputError("the base has crease pieces but the formula has no creases here", "base");
+    return creased_;
+  }
 
   const CompositeModel* model() {
     const std::lock_guard<std::mutex> lock(surface_mutex_);

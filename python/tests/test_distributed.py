@@ -134,9 +134,6 @@ def test_bad_requests_are_refused_in_one_line(client, tmp_path):
         distributed.mesh_blocks(LATTICE, box=BOX, tiles=2, out_dir=str(tmp_path), scheduler="udp://x")
     with pytest.raises(isopatch.ParseError):
         distributed.mesh_blocks("x^2+", box=BOX, tiles=2, out_dir=str(tmp_path), scheduler=client)
-    with pytest.raises(isopatch.SettingError, match="creases"):
-        distributed.mesh_blocks("max(max(abs(x),abs(y)),abs(z))-1", box=((-2, -2, -2), (2, 2, 2)), tiles=2,
-                                out_dir=str(tmp_path), scheduler=client)
     with pytest.raises(isopatch.InputError, match="unknown setting"):
         distributed.mesh_blocks(LATTICE, box=BOX, tiles=2, out_dir=str(tmp_path), scheduler=client, grid=3)
 

@@ -9,9 +9,6 @@
 #include <memory>
 #include <utility>
 
-#include "csg/crease_angle_repair.hpp"
-#include "csg/csg_composite.hpp"
-
 namespace isopatch {
 
 namespace {
@@ -27,24 +24,34 @@ constexpr double kCreaseRepairTolerance = 1e-14;
 
 }  // namespace
 
-CreasedMesh mesh_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats) {
+std::optional<CsgShape> analyse_creases(const Surface& surface, const Settings& settings,
+                                        std::optional<Vec3>* leaves_box) {
   if (settings.creases == Creases::Off || settings.method != Method::Projection || !settings.region.empty() ||
       settings.frame || !settings.cells.empty() || !surface.expression())
-    return {};
-  const auto start = std::chrono::steady_clock::now();
+    return std::nullopt;
   const Box box = settings.box.value_or(surface.box());
   const TargetSizes sizes = target_sizes(settings, box);
+  return analyse_csg(surface, box, sizes.largest, leaves_box);
+}
+
+AngleRepair repair_crease_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces, const Box& box,
+                                 const std::vector<std::uint8_t>* held) {
+  return repair_small_angles(mesh, faces, kCreaseAngleFloor + kCreaseAngleMargin,
+                             kCreaseOnFace * box.diagonal(), kCreaseRepairTolerance * box.diagonal(), held);
+}
+
+CreasedMesh mesh_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
   std::optional<Vec3> leaves_box;
-  std::optional<CsgShape> shape = analyse_csg(surface, box, sizes.largest, &leaves_box);
+  std::optional<CsgShape> shape = analyse_creases(surface, settings, &leaves_box);
   if (!shape) return {std::nullopt, leaves_box.has_value()};
+  const Box box = settings.box.value_or(surface.box());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const CompositeModel model(std::make_shared<const Composite>(std::move(shape->composite)));
   Mesh mesh = mesh_composite_along_curves(model, settings, stats);
   // Triangles along the pieces' boundaries, which the per-piece clean-up holds, brought over the floor
   // where a seam vertex may move or a crease vertex slide.
-  const AngleRepair repair =
-      repair_small_angles(mesh, shape->face_functions, kCreaseAngleFloor + kCreaseAngleMargin,
-                          kCreaseOnFace * box.diagonal(), kCreaseRepairTolerance * box.diagonal());
+  const AngleRepair repair = repair_crease_angles(mesh, shape->face_functions, box);
   const TopologyReport topology = analyze_topology(mesh);
   if (topology.non_manifold_edges > 0 || topology.non_manifold_vertices > 0 || topology.boundary_edges > 0)
     throw CreaseError("the mesh along the shape's creases is not a closed 2-manifold (" +

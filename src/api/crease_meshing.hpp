@@ -10,7 +10,12 @@
 #include <isopatch/settings.hpp>
 #include <isopatch/surface.hpp>
 
+#include <cstdint>
 #include <optional>
+#include <vector>
+
+#include "csg/crease_angle_repair.hpp"
+#include "csg/csg_composite.hpp"
 
 namespace isopatch {
 
@@ -28,6 +33,19 @@ struct CreasedMesh {
 ///        along an edge, a crease the tracer cannot follow); the
 ///        errors of mesh_composite().
 CreasedMesh mesh_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats);
+
+/// The crease analysis of `surface` as mesh_along_creases() makes it (src/csg: the composite of its
+/// pieces and its face functions), or nullopt when it is not meshed along creases (see there;
+/// `leaves_box`, when given, is set when a crease leaves the box).
+/// \throw as mesh_along_creases().
+std::optional<CsgShape> analyse_creases(const Surface& surface, const Settings& settings,
+                                        std::optional<Vec3>* leaves_box = nullptr);
+
+/// The last pass over a mesh along creases: triangles under the crease floor repaired on the shape's
+/// face functions (csg/crease_angle_repair.hpp) with the tolerances relative to `box`'s diagonal;
+/// vertices with `held` set stay.
+AngleRepair repair_crease_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces, const Box& box,
+                                 const std::vector<std::uint8_t>* held = nullptr);
 
 /// The composite path of mesh_composite() after its checks: projection along the composite's curves,
 /// the clean-up per patch and the multiresolution refinement, in the settings' task arena.

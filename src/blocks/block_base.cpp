@@ -35,8 +35,8 @@ BlockBase block_base(const Surface& surface, const Settings& settings) {
     if (stats.creases)
       throw SettingError(
           "creases",
-          "blocks do not keep exact creases yet: mesh this shape on one machine, or as a smooth "
-          "surface with creases off");
+          "this formula is meshed along its exact creases: make its blocks from creased_pieces() "
+          "(or mesh it as a smooth surface with creases off)");
     return base;
   };
   out.level = first_level(settings, edge, automatic ? &estimate : nullptr);

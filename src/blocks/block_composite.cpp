@@ -59,6 +59,17 @@ std::vector<std::uint32_t> whole_base_vertex_patch(const Mesh& base, const BaseP
 
 BlockBase block_base(const CompositeModel& model, const Settings& settings) {
   check_blocked_composite_settings(settings);
+  return blocks::composite_block_base(model, settings);
+}
+
+BlockMesh refine_block(const CompositeModel& model, const BasePatches& patches, const Settings& settings,
+                       const Mesh& base, const BlockPlan& plan, int block) {
+  return blocks::refine_composite_block(model, patches, settings, base, plan, block, {});
+}
+
+namespace blocks {
+
+BlockBase composite_block_base(const CompositeModel& model, const Settings& settings) {
   return run_in_task_arena(settings, nullptr, [&] {
     std::optional<BudgetedComposite> budgeted;
     if (settings.max_evaluations > 0 || settings.time_limit > 0.0)
@@ -92,8 +103,9 @@ BlockBase block_base(const CompositeModel& model, const Settings& settings) {
   });
 }
 
-BlockMesh refine_block(const CompositeModel& model, const BasePatches& patches, const Settings& settings,
-                       const Mesh& base, const BlockPlan& plan, int block) {
+BlockMesh refine_composite_block(const CompositeModel& model, const BasePatches& patches,
+                                 const Settings& settings, const Mesh& base, const BlockPlan& plan, int block,
+                                 const PieceFinisher& finish) {
   const Composite& c = model.composite();
   check_composite_parts(c, base, patches.triangle_patch, patches.curve_segments, patches.curve_vertices);
   const blocks::BlockPiece piece = blocks::block_piece(base, plan, block);
@@ -112,7 +124,8 @@ BlockMesh refine_block(const CompositeModel& model, const BasePatches& patches, 
       [&](const Mesh& mesh, const refine::RefineParams& params) {
         return refine::refine_pieces(mesh, pieces, composite_refine_params(params));
       },
-      refine::smallest_angle_degrees(base));
+      refine::smallest_angle_degrees(base), finish);
 }
 
+}  // namespace blocks
 }  // namespace isopatch

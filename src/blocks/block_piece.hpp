@@ -3,6 +3,7 @@
 // (isopatch/blocks.hpp): shared by the blocks of one function and of a composite's patches.
 
 #include <isopatch/blocks.hpp>
+#include <isopatch/composite_mesh.hpp>
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh.hpp>
 #include <isopatch/settings.hpp>
@@ -32,13 +33,27 @@ BlockPiece block_piece(const Mesh& base, const BlockPlan& plan, int block);
 using PieceRefiner =
     std::function<refine::RefineResult(const Mesh& piece, const refine::RefineParams& params)>;
 
+/// A last pass over a refined block (the crease angle repair): may move the vertices whose flag in
+/// `held` is 0 (held: the block's seam vertices, which the blocks across make too), not the topology.
+using PieceFinisher = std::function<void(Mesh& refined, const std::vector<std::uint8_t>& held)>;
+
 /// Refines `piece` (block `block` of `plan` on `base`) with `refine` and the preset of `settings` in
-/// `box`, its seams with other blocks landed from the edge alone and held, and gives the block in the
-/// output's numbers. The block is kept as refinement_kept() keeps it; with `base_smallest_angle` (a
-/// composite's base) as the overload that also asks for the base's angles.
+/// `box`, its seams with other blocks landed from the edge alone and held, runs `finish` (when given)
+/// on the refined block, and gives the block in the output's numbers. The block is kept as
+/// refinement_kept() keeps it; with `base_smallest_angle` (a composite's base) as the overload that
+/// also asks for the base's angles.
 /// \throw as refine_block().
 BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& base, const BlockPlan& plan,
                        int block, const BlockPiece& piece, const PieceRefiner& refine,
-                       std::optional<double> base_smallest_angle);
+                       std::optional<double> base_smallest_angle, const PieceFinisher& finish = {});
+
+/// A composite's base for blocks, as block_base(CompositeModel) makes it but without its checks of the
+/// settings (a formula's creases are meshed with the settings of the formula).
+BlockBase composite_block_base(const CompositeModel& model, const Settings& settings);
+
+/// refine_block(CompositeModel, ...) with a last pass `finish` (may be empty).
+BlockMesh refine_composite_block(const CompositeModel& model, const BasePatches& patches,
+                                 const Settings& settings, const Mesh& base, const BlockPlan& plan, int block,
+                                 const PieceFinisher& finish);
 
 }  // namespace isopatch::blocks

@@ -11,6 +11,7 @@
 #include "api/task_arena_run.hpp"
 #include "refine/base_edges.hpp"
 #include "refine/lattice_layout.hpp"
+#include "refine/lattice_relaxation.hpp"
 #include "refine/refine_mesh.hpp"
 
 namespace isopatch {
@@ -63,7 +64,7 @@ BlockPiece block_piece(const Mesh& base, const BlockPlan& plan, int block) {
 
 BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& base, const BlockPlan& plan,
                        int block, const BlockPiece& piece, const PieceRefiner& refine,
-                       std::optional<double> base_smallest_angle) {
+                       std::optional<double> base_smallest_angle, const PieceFinisher& finish) {
   const refine::BaseEdges local_edges = refine::base_edges(piece.mesh);
   // Per local edge: the base edge it is, and whether it is a seam with another block.
   std::vector<std::uint32_t> global_edge(local_edges.size());
@@ -90,10 +91,25 @@ BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& bas
   out.smallest_angle = refined.smallest_angle;
   out.kept = base_smallest_angle ? refinement_kept(settings, refined.smallest_angle, *base_smallest_angle)
                                  : refinement_kept(settings, refined.smallest_angle);
-
-  // The output number of every local vertex, from the plan (refine/lattice_layout.hpp gives the local
-  // numbers: base vertices, edge points from the lower end, inner points per triangle).
+  // Local numbers (refine/lattice_layout.hpp): base vertices, edge points from the lower end, inner
+  // points per triangle.
   const refine::LatticeLayout layout(piece.mesh, local_edges, k);
+  if (finish) {
+    // The vertices on seams stay: the ends and points of every seam edge.
+    std::vector<std::uint8_t> held(refined.mesh.vertex_count(), 0);
+    for (std::uint32_t e = 0; e < local_edges.size(); ++e) {
+      if (!seam[e]) continue;
+      held[local_edges.ends[e][0]] = held[local_edges.ends[e][1]] = 1;
+      for (int j = 1; j < k; ++j) held[layout.edge_point(e, j)] = 1;
+    }
+    run_in_task_arena(settings, nullptr, [&] {
+      finish(refined.mesh, held);
+      return 0;
+    });
+    out.smallest_angle = refine::smallest_angle_degrees(refined.mesh);
+  }
+
+  // The output number of every local vertex, from the plan.
   std::vector<std::uint64_t> id(refined.mesh.vertex_count());
   for (std::size_t v = 0; v < piece.vertices.size(); ++v) id[v] = plan.vertex_number[piece.vertices[v]];
   for (std::uint32_t e = 0; e < local_edges.size(); ++e)

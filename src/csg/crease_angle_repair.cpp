@@ -2,12 +2,15 @@
 /// Small angles along the pieces' boundaries repaired by constrained moves (crease_angle_repair.hpp).
 #include "csg/crease_angle_repair.hpp"
 
+#include <isopatch/error.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <numbers>
 #include <optional>
 #include <set>
+#include <string>
 
 #include "core/triangle_angle.hpp"
 #include "surface/curve_point.hpp"
@@ -46,9 +49,12 @@ double fan_angle(const Mesh& mesh, const std::vector<std::uint32_t>& fan, std::u
 }  // namespace
 
 AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces, double floor_degrees,
-                                double on_face, double tolerance) {
+                                double on_face, double tolerance, const std::vector<std::uint8_t>* held) {
   AngleRepair out;
   const std::size_t n = mesh.positions.size();
+  if (held && held->size() != n)
+    throw InputError("repair: " + std::to_string(held->size()) + " held flags for " + std::to_string(n) +
+                     " vertices");
   std::vector<std::vector<std::uint32_t>> fan(n);
   std::vector<std::set<std::uint32_t>> neighbours(n);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
@@ -91,6 +97,7 @@ AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces
     if (candidates.empty()) break;
     std::size_t moved = 0;
     for (const std::uint32_t v : candidates) {
+      if (held && (*held)[v]) continue;  // a seam vertex of a block: the block across has it here
       const std::vector<std::size_t>& on_v = faces_of(v);
       if (on_v.empty() || on_v.size() > 2) continue;  // a corner (or a vertex off every face) stays
       for (const std::uint32_t w : neighbours[v]) normals[w] = normal_of(w);

@@ -14,6 +14,7 @@
 #include <isopatch/surface.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace isopatch {
@@ -26,10 +27,13 @@ struct AngleRepair {
 /// Moves vertices of triangles with an angle under `floor_degrees` (several sweeps, in vertex order: the
 /// same result for any thread count). `faces` are the shape's face functions; a vertex lies on a face
 /// when |f| / |grad f| <= `on_face` there; a moved vertex is put back on its faces to `tolerance`.
-/// Positions change, topology does not.
+/// Positions change, topology does not. A vertex with `held` set (when given: one flag per vertex) stays
+/// where it is (a block's seam vertices, which the block across must find where they were made).
 /// A vertex on one face goes back onto it by surface/project_point.hpp's Newton steps.
-/// \throw EvaluationError when a face function is not finite at a vertex.
+/// \throw EvaluationError when a face function is not finite at a vertex; InputError when `held` does
+///        not have one flag per vertex.
 AngleRepair repair_small_angles(Mesh& mesh, const std::vector<SurfacePtr>& faces, double floor_degrees,
-                                double on_face, double tolerance);
+                                double on_face, double tolerance,
+                                const std::vector<std::uint8_t>* held = nullptr);
 
 }  // namespace isopatch

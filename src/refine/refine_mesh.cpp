@@ -9,6 +9,8 @@
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
+#include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,13 +54,29 @@ Vec3 unit_or_zero(const Vec3& v) {
   return n > 0.0 ? Vec3(v / n) : Vec3(Vec3::Zero());
 }
 
-/// The number of triangles of `mesh` that turn away from the surface normals at their corners.
-std::size_t turned_triangles(const Mesh& mesh, const std::vector<Eigen::Vector3f>& normals) {
+/// The normal a triangle of piece `piece` has at its corner v: the stored one, or at a vertex on a curve
+/// the pieces meet along (whose stored normal is one piece's) that of the triangle's own piece.
+using CornerNormal = std::function<Eigen::Vector3f(std::uint32_t v, std::uint32_t piece)>;
+
+/// The number of triangles of `mesh` that turn away from the surface normals at their corners: from
+/// the stored `normals` and from the normals of their own piece (output triangle t lies on piece
+/// piece_of(t)). Either agreeing is enough: at an I-patch's curve the stored normal is the sound one
+/// (its functions are 0/0 at the corners), at a crease between two faces the piece's.
+std::size_t turned_triangles(const Mesh& mesh, const std::vector<Eigen::Vector3f>& normals,
+                             const CornerNormal& corner_normal,
+                             const std::function<std::uint32_t(std::size_t)>& piece_of) {
   return tbb::parallel_reduce(
       tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), 4096), std::size_t{0},
       [&](const tbb::blocked_range<std::size_t>& r, std::size_t count) {
-        for (std::size_t t = r.begin(); t != r.end(); ++t)
-          if (!faces_the_surface(mesh.positions, normals, mesh.triangles[t])) ++count;
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          const Triangle& tri = mesh.triangles[t];
+          if (faces_the_surface(mesh.positions, normals, tri)) continue;
+          const std::uint32_t piece = piece_of(t);
+          if (!faces_the_surface(
+                  mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]],
+                  {corner_normal(tri[0], piece), corner_normal(tri[1], piece), corner_normal(tri[2], piece)}))
+            ++count;
+        }
         return count;
       },
       std::plus<>());
@@ -277,7 +295,27 @@ RefineResult refine_pieces(const Mesh& base, const RefinePieces& pieces, const R
     for (const auto& s : samplers) n += s->gradient_count();
     return n;
   };
-  if (result.failed_points == 0) result.failed_points = turned_triangles(mesh, normals);
+  if (result.failed_points == 0) {
+    // A vertex on a curve where pieces meet at an angle (a crease) has its stored normal from one piece:
+    // the triangles of the other piece are checked against their own function's normal there.
+    std::vector<std::uint8_t> on_curve(several ? mesh.vertex_count() : 0, 0);
+    if (several) {
+      for (std::size_t v = 0; v < base.vertex_count(); ++v) on_curve[v] = map.on_curve[v];
+      for (std::uint32_t e = 0; e < edges.size(); ++e)
+        if (map.on_curve_edge(e))
+          for (int j = 1; j < k; ++j) on_curve[layout.edge_point(e, j)] = 1;
+    }
+    // (Where the piece's gradient vanishes or is not finite, as at an I-patch's corner, the stored one.)
+    const CornerNormal corner_normal = [&](std::uint32_t v, std::uint32_t piece) {
+      if (!several || !on_curve[v] || vertex_function[v] == piece) return normals[v];
+      const Vec3 g = functions[piece]->value_gradient_unchecked(mesh.positions[v]).gradient;
+      const double length = g.norm();
+      return std::isfinite(length) && length > 0.0 ? Eigen::Vector3f((g / length).cast<float>()) : normals[v];
+    };
+    const auto kk = static_cast<std::size_t>(k * k);
+    result.failed_points =
+        turned_triangles(mesh, normals, corner_normal, [&](std::size_t t) { return triangle_piece(t / kk); });
+  }
   if (result.failed_points > 0) {
     result.gradient_evaluations = evaluations();
     result.mesh = Mesh{};

@@ -7,11 +7,14 @@
 #include <isopatch/blocks.hpp>
 #include <isopatch/composite_mesh.hpp>
 #include <isopatch/error.hpp>
+#include <isopatch/isopatch.hpp>
 #include <isopatch/metrics.hpp>
+#include <isopatch/resolve_surface.hpp>
 #include <isopatch/topology.hpp>
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -180,6 +183,94 @@ TEST(CompositeBlocks, RefusesPatchesOfAnotherBaseAndPartitionSettings) {
   EXPECT_THROW(plan_blocks(base.base, base.level, 2, short_patches), InputError);
   EXPECT_THROW(plan_blocks(base.base, base.level, static_cast<int>(base.base.triangle_count()), base.patches),
                InputError);  // a block would be empty: the corners keep their triangles together
+}
+
+Box crease_box() {
+  return Box{Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 1.5)};
+}
+
+/// A formula with exact creases (a CSG shape) cut into `count` blocks, every block refined.
+struct BlockedCreases {
+  SurfacePtr shape;
+  Settings settings;
+  std::shared_ptr<const CreasedPieces> pieces;
+  BlockBase base;
+  BlockPlan plan;
+  std::vector<BlockMesh> blocks;
+
+  BlockedCreases(const std::string& formula, int count) : shape(resolve_surface(formula, crease_box())) {
+    settings.edge_length = 0.06;
+    settings.refine = 2;  // the automatic level keeps level 1 on these shapes (see docs/distributed.md)
+    settings.box = crease_box();
+    pieces = creased_pieces(*shape, settings);
+    if (!pieces) return;
+    base = block_base(*pieces, settings);
+    plan = plan_blocks(base.base, base.level, count, base.patches);
+    for (int b = plan.blocks - 1; b >= 0; --b)
+      blocks.push_back(refine_block(*pieces, base.patches, settings, base.base, plan, b));
+  }
+};
+
+// A cube with a round hole through it: 12 + 2 creases, genus 1.
+constexpr const char* kHoledCube = "max(max(max(abs(x),abs(y)),abs(z))-1, 0.5-sqrt(x^2+y^2))";
+
+TEST(CreaseBlocks, OneBlockIsTheMeshOfOneProcessAlongTheCreases) {
+  const BlockedCreases one(kHoledCube, 1);
+  ASSERT_TRUE(one.pieces);
+  ASSERT_FALSE(one.base.patches.triangle_patch.empty());
+  const Mesh blocked = assemble_blocks(one.plan, one.blocks);
+  const Mesh whole = mesh_surface(*one.shape, one.settings);
+  EXPECT_EQ(blocked.positions, whole.positions);
+  EXPECT_EQ(blocked.triangles, whole.triangles);
+}
+
+TEST(CreaseBlocks, EightBlocksKeepTheCreasesAndCornersWatertightAndAsGoodAsOneProcess) {
+  const BlockedCreases eight(kHoledCube, 8);
+  ASSERT_TRUE(eight.pieces);
+  std::size_t seam_copies = 0;
+  for (const BlockMesh& b : eight.blocks) {
+    EXPECT_EQ(b.failed_points, 0U);
+    seam_copies += b.seam_ids.size();
+  }
+  EXPECT_GT(seam_copies, 0U);
+  const Mesh mesh = assemble_blocks(eight.plan, eight.blocks);
+  const QualityReport q = analyze_quality(mesh, eight.shape.get());
+  const QualityReport one = analyze_quality(mesh_surface(*eight.shape, eight.settings), eight.shape.get());
+  EXPECT_TRUE(q.topology.watertight());
+  EXPECT_TRUE(q.topology.consistently_oriented());
+  EXPECT_EQ(q.topology.duplicate_vertices, 0U);
+  EXPECT_EQ(q.topology.euler_characteristic, 0);
+  EXPECT_EQ(q.topology.euler_characteristic, one.topology.euler_characteristic);
+  EXPECT_EQ(q.self_intersections.pairs, 0U);
+  ASSERT_TRUE(q.accuracy);
+  EXPECT_LT(q.accuracy->vertex_distance.max, 1e-9);
+  EXPECT_GT(q.shape.min_angle.min, std::min(24.0, one.shape.min_angle.min - 1.0));
+  // The cube's 8 corners are vertices, and every vertex near a cube edge (away from the hole) is on it.
+  std::size_t on_edges = 0;
+  for (const Vec3& corner : {Vec3(1, 1, 1), Vec3(-1, 1, 1), Vec3(1, -1, 1), Vec3(-1, -1, 1), Vec3(1, 1, -1),
+                             Vec3(-1, 1, -1), Vec3(1, -1, -1), Vec3(-1, -1, -1)})
+    EXPECT_TRUE(std::any_of(mesh.positions.begin(), mesh.positions.end(),
+                            [&](const Vec3& p) { return (p - corner).norm() < 1e-12; }));
+  for (const Vec3& p : mesh.positions) {
+    Vec3 a = p.cwiseAbs();
+    std::sort(a.data(), a.data() + 3);
+    if (a[1] > 1.0 - 1e-3) {
+      EXPECT_NEAR(a[1], 1.0, 1e-12);
+      ++on_edges;
+    }
+  }
+  EXPECT_GT(on_edges, 100U);
+}
+
+TEST(CreaseBlocks, SmoothFormulasAndCreasesOffHaveNoPieces) {
+  Settings settings;
+  settings.box = crease_box();
+  EXPECT_FALSE(creased_pieces(*resolve_surface("x^2+y^2+z^2-1", settings.box), settings));
+  settings.creases = Creases::Off;
+  EXPECT_FALSE(creased_pieces(*resolve_surface(kHoledCube, settings.box), settings));
+  // block_base() of the surface itself says where the pieces come from.
+  settings.creases = Creases::Automatic;
+  EXPECT_THROW(block_base(*resolve_surface(kHoledCube, settings.box), settings), SettingError);
 }
 
 }  // namespace
