@@ -170,7 +170,8 @@ BlockBase block_base(const CreasedPieces& pieces, const Settings& settings);
 
 /// refine_block() for a formula with creases: as a composite's block, then the crease angle repair of
 /// one process (triangles under 27 degrees, vertices moved on their faces or along their crease) with
-/// the block's seam vertices held. BlockMesh::kept from the refinement, before the repair.
+/// the block's seam vertices held. BlockMesh::kept on the angles the repair leaves, as one process
+/// judges a level.
 /// \throw as refine_block(CompositeModel, ...).
 BlockMesh refine_block(const CreasedPieces& pieces, const BasePatches& patches, const Settings& settings,
                        const Mesh& base, const BlockPlan& plan, int block);

@@ -48,7 +48,12 @@ CreasedMesh mesh_along_creases(const Surface& surface, const Settings& settings,
   const Box box = settings.box.value_or(surface.box());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const CompositeModel model(std::make_shared<const Composite>(std::move(shape->composite)));
-  Mesh mesh = mesh_composite_along_curves(model, settings, stats);
+  // A refinement is judged on the angles the last repair leaves (its triangles at the creases close
+  // to 15-17 degrees before it); the repair runs once more on the mesh kept (level 1 needs it).
+  const auto repair_refined = [&](Mesh& refined) {
+    repair_crease_angles(refined, shape->face_functions, box);
+  };
+  Mesh mesh = mesh_composite_along_curves(model, settings, stats, repair_refined);
   // Triangles along the pieces' boundaries, which the per-piece clean-up holds, brought over the floor
   // where a seam vertex may move or a crease vertex slide.
   const AngleRepair repair = repair_crease_angles(mesh, shape->face_functions, box);

@@ -11,6 +11,7 @@
 #include <isopatch/surface.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -48,7 +49,10 @@ AngleRepair repair_crease_angles(Mesh& mesh, const std::vector<SurfacePtr>& face
                                  const std::vector<std::uint8_t>* held = nullptr);
 
 /// The composite path of mesh_composite() after its checks: projection along the composite's curves,
-/// the clean-up per patch and the multiresolution refinement, in the settings' task arena.
-Mesh mesh_composite_along_curves(const CompositeModel& model, const Settings& settings, MeshStats* stats);
+/// the clean-up per patch and the multiresolution refinement, in the settings' task arena. `finish`,
+/// when given, is run on every refined mesh before the level is judged (a CSG shape's crease angle
+/// repair: its refinement is kept on the angles the repair leaves, not those before it).
+Mesh mesh_composite_along_curves(const CompositeModel& model, const Settings& settings, MeshStats* stats,
+                                 const std::function<void(Mesh&)>& finish = {});
 
 }  // namespace isopatch

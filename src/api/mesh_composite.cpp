@@ -21,6 +21,7 @@
 #include "composite_model/composite_surface.hpp"
 #include "composite_model/ipatch_file.hpp"
 #include "composite_model/patch_validity.hpp"
+#include "refine/lattice_relaxation.hpp"
 
 namespace isopatch {
 
@@ -80,7 +81,8 @@ Mesh mesh_composite(const CompositeModel& model, const Settings& settings, MeshS
   return mesh_composite_along_curves(model, settings, stats);
 }
 
-Mesh mesh_composite_along_curves(const CompositeModel& model, const Settings& settings, MeshStats* stats) {
+Mesh mesh_composite_along_curves(const CompositeModel& model, const Settings& settings, MeshStats* stats,
+                                 const std::function<void(Mesh&)>& finish) {
   return run_in_task_arena(settings, stats, [&] {
     std::optional<BudgetedComposite> budgeted;
     if (settings.max_evaluations > 0 || settings.time_limit > 0.0)
@@ -106,6 +108,10 @@ Mesh mesh_composite_along_curves(const CompositeModel& model, const Settings& se
       last.mesh = base;
       refine::RefineResult refined = refine_composite(c, last, params);
       last.mesh = Mesh{};
+      if (finish && refined.failed_points == 0) {
+        finish(refined.mesh);
+        refined.smallest_angle = refine::smallest_angle_degrees(refined.mesh);
+      }
       return refined;
     };
     return mesh_multiresolution(*model.surface(), settings, stats, one_level, nullptr, bases);

@@ -40,8 +40,8 @@ using PieceFinisher = std::function<void(Mesh& refined, const std::vector<std::u
 /// Refines `piece` (block `block` of `plan` on `base`) with `refine` and the preset of `settings` in
 /// `box`, its seams with other blocks landed from the edge alone and held, runs `finish` (when given)
 /// on the refined block, and gives the block in the output's numbers. The block is kept as
-/// refinement_kept() keeps it; with `base_smallest_angle` (a composite's base) as the overload that
-/// also asks for the base's angles.
+/// refinement_kept() keeps it, on the angles after `finish`; with `base_smallest_angle` (a composite's
+/// base) as the overload that also asks for the base's angles.
 /// \throw as refine_block().
 BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& base, const BlockPlan& plan,
                        int block, const BlockPiece& piece, const PieceRefiner& refine,

@@ -88,9 +88,6 @@ BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& bas
   out.block = block;
   out.failed_points = refined.failed_points;
   if (refined.failed_points > 0) return out;
-  out.smallest_angle = refined.smallest_angle;
-  out.kept = base_smallest_angle ? refinement_kept(settings, refined.smallest_angle, *base_smallest_angle)
-                                 : refinement_kept(settings, refined.smallest_angle);
   // Local numbers (refine/lattice_layout.hpp): base vertices, edge points from the lower end, inner
   // points per triangle.
   const refine::LatticeLayout layout(piece.mesh, local_edges, k);
@@ -106,8 +103,12 @@ BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& bas
       finish(refined.mesh, held);
       return 0;
     });
-    out.smallest_angle = refine::smallest_angle_degrees(refined.mesh);
+    refined.smallest_angle = refine::smallest_angle_degrees(refined.mesh);
   }
+  // Kept as one process keeps it: on the angles the last pass leaves.
+  out.smallest_angle = refined.smallest_angle;
+  out.kept = base_smallest_angle ? refinement_kept(settings, refined.smallest_angle, *base_smallest_angle)
+                                 : refinement_kept(settings, refined.smallest_angle);
 
   // The output number of every local vertex, from the plan.
   std::vector<std::uint64_t> id(refined.mesh.vertex_count());
