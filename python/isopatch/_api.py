@@ -77,10 +77,11 @@ def mesh(
     """Meshes the surface f = 0 (f < 0 inside) inside ``box``.
 
     surface: a formula of the expression language (``'x^2+y^2+z^2-1'``; ``^`` is a power), a catalogue
-        name (``'torus'``, see :func:`catalogue`) or a Python function taking an (N, 3) float64 array of
-        points and returning N values (f < 0 inside).
+        name (``'torus'``, see :func:`catalogue`), a composite surface's ``.ipatch`` file (I-patches,
+        setback vertex blends: its patches meshed along their boundary curves, docs/ipatch.md) or a
+        Python function taking an (N, 3) float64 array of points and returning N values (f < 0 inside).
     box: ((x0, y0, z0), (x1, y1, z1)); required for formulas and functions, optional for catalogue
-        names (their own box by default).
+        names and composites (their own box by default).
     gradient: with a Python function, an optional second function returning the (N, 3) gradients;
         without it, gradients come from central differences (step 6e-6 of the box diagonal).
     params: values overriding a formula's definitions (``{'r': 0.3}``).

@@ -3,6 +3,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <isopatch/composite_mesh.hpp>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/resolve_surface.hpp>
 #include <isopatch/version.hpp>
@@ -39,10 +40,36 @@ MeshResult mesh_released(SurfacePtr surface, Settings settings) {
   });
 }
 
+/// A composite (.ipatch) read without the GIL. \throw InputError when it is given params.
+CompositeModel read_composite_released(const std::string& path, const std::map<std::string, double>& params) {
+  if (!params.empty())
+    throw InputError("params are for formulas, not composite surfaces (.ipatch)", "params");
+  return run_released([&](const std::atomic<bool>*) { return read_composite(path); });
+}
+
+/// The surface a spec names: a composite's piecewise function for a .ipatch file, else
+/// resolve_surface().
+SurfacePtr spec_surface(const std::string& spec, const std::optional<Box>& box,
+                        const std::map<std::string, double>& params) {
+  if (is_composite_path(spec)) return read_composite_released(spec, params).surface();
+  return resolve_surface(spec, box, params);
+}
+
 MeshResult mesh_spec(const std::string& spec, const BoxArg& box, const std::map<std::string, double>& params,
                      const py::dict& options) {
   Settings settings = to_settings(options);
   settings.box = to_box(box);
+  if (is_composite_path(spec)) {  // its patches meshed along its curves, as the command line does
+    const CompositeModel model = read_composite_released(spec, params);
+    MeshResult r;
+    r.surface = model.surface();
+    return run_released([&](const std::atomic<bool>* cancel) {
+      settings.cancel = cancel;
+      r.mesh = mesh_composite(model, settings, &r.stats);
+      r.normals_from_surface();
+      return std::move(r);
+    });
+  }
   SurfacePtr surface = resolve_surface(spec, settings.box, params);
   return mesh_released(std::move(surface), std::move(settings));
 }
@@ -138,7 +165,7 @@ MeshResult mesh_from_arrays(const py::array_t<double, py::array::c_style | py::a
     r.mesh.triangles.push_back(tri);
   }
   r.mesh.validate();
-  r.surface = resolve_surface(spec, to_box(box));
+  r.surface = spec_surface(spec, to_box(box), {});
   r.normals_from_surface();
   return r;
 }
