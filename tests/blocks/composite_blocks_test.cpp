@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <ostream>
 #include <set>
 #include <string>
 #include <vector>
@@ -55,6 +56,10 @@ struct Example {
   const char* file;
   int level;  ///< a level one process keeps on it at edge 0.06
 };
+
+void PrintTo(const Example& e, std::ostream* os) {
+  *os << e.file;
+}
 
 class CompositeBlocks : public ::testing::TestWithParam<Example> {};
 
