@@ -52,14 +52,21 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
   heavy="$heavy|QualityPresetsOverSurfaces.FineLowersTheCurvatureErrorOnTheGeometricMean"
   heavy="$heavy|ConvexMesh.UnboundedRegionWithoutABoxLiesInTheSurfacesBox"
   heavy="$heavy|ConvexMesh.CutsThatTurnFromABoxFaceOntoAPlaneStayOnBoth|CompositeCli.HonoursARegionAFrameAndTheBase"
-  # And repeats of code the pass runs once anyway (316 of its 2590 CPU seconds): three of the four output
+  # And repeats of code the pass runs anyway (316 of its 2590 CPU seconds): three of the four output
   # formats of the CLI's thread-count check (the .ply one stays), the second library determinism check
   # of the same mesh, the genus-2 case of the error-bound sweep, the command line's thin-rim run (the
   # library's stays), and the comparisons of one block with one process (the blocks' own tests stay).
   heavy="$heavy|Configurations/CliDeterminism.RunsWithOneTwoAndFourThreadsWriteTheSameBytes/genus2_coons_(obj|off|stl)( .*)?"
   heavy="$heavy|Configurations/LibraryDeterminism.TwoCallsGiveTheSameMesh/genus2_coons( .*)?"
   heavy="$heavy|Surfaces/MaxError.CentroidsStayWithinTheBoundOnAValidMesh/genus2( .*)?|LocalSizesCli.ThinRimRefinedWithAWarningUnlessUniform"
-  heavy="$heavy|CreaseBlocks.OneBlockIsTheMeshOfOneProcessAlongTheCreases|Examples/CompositeBlocks.OneBlockIsTheMeshOfOneProcess/.*)$"
+  heavy="$heavy|CreaseBlocks.OneBlockIsTheMeshOfOneProcessAlongTheCreases|Examples/CompositeBlocks.OneBlockIsTheMeshOfOneProcess/.*"
+  # And five more whose code the other sanitized tests run (163 CPU seconds): the paper's small
+  # reproduction (I-patches, blends and Marching Cubes each have their own tests), two thread-count
+  # determinism checks (genus 2 with the Coons base, a CSG shape; one-thread and two-thread runs of the
+  # same code stay), and two composites of the automatic-level sweep (its other examples stay).
+  heavy="$heavy|paper.reproduce_small|CreaseMeshing.TheSameBytesForAnyNumberOfThreads"
+  heavy="$heavy|Configurations/LibraryDeterminism.AnyThreadCountGivesTheSameMesh/genus2_coons( .*)?"
+  heavy="$heavy|Composite/RefinedExamples.AutomaticLevelIsNoWorseThanOneLevel/(rounded_box|icosahedron_blend)( .*)?)$"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS="suppressions=$PWD/tests/support/lsan.supp" \
     ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive|validation|python|browser" \
