@@ -11,4 +11,9 @@ namespace isopatch {
 /// refine_around). \throw SettingError naming the first such field.
 void refuse_octree_settings(const Settings& settings);
 
+/// Whether a composite meshed along its curves is refined (multiresolution): an explicit level above 1,
+/// or the automatic level unless the paper's method alone (remesh 0) or a fixed segment count
+/// (resolution) is asked for.
+bool composite_refines(const Settings& settings);
+
 }  // namespace isopatch

@@ -40,6 +40,11 @@ void refuse_octree_settings(const Settings& settings) {
   if (!settings.refine_around.empty()) refuse("refine_around");
 }
 
+bool composite_refines(const Settings& settings) {
+  return settings.refine > 1 ||
+         (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0 && settings.resolution == 0);
+}
+
 bool meshed_through_partition(const Settings& settings) {
   return !settings.region.empty() || settings.frame.has_value() || !settings.cells.empty();
 }
@@ -90,10 +95,7 @@ Mesh mesh_composite_along_curves(const CompositeModel& model, const Settings& se
     const Composite& c = budgeted ? budgeted->composite() : model.composite();
     // As for one surface (mesh_surface.cpp): the automatic level leaves the paper's method alone
     // (remesh_iterations = 0) unrefined, and so a fixed number of segments per curve (resolution).
-    const bool refine =
-        settings.refine > 1 ||
-        (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0 && settings.resolution == 0);
-    if (!refine) return mesh_composite_projection(c, settings, stats).mesh;
+    if (!composite_refines(settings)) return mesh_composite_projection(c, settings, stats).mesh;
     CompositeMesh last;  // the patches and curves of the last base (its mesh is the one returned)
     const auto one_level = [&](const Settings& s, MeshStats* st) {
       last = mesh_composite_projection(c, s, st);

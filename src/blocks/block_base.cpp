@@ -6,10 +6,11 @@
 
 #include "api/multiresolution.hpp"
 #include "api/size_estimate.hpp"
+#include "blocks/block_piece.hpp"
 #include "refine/refinement_level.hpp"
 
 namespace isopatch {
-namespace {
+namespace blocks {
 
 void check_blocked_settings(const Settings& settings) {
   settings.validate();
@@ -19,10 +20,10 @@ void check_blocked_settings(const Settings& settings) {
     throw SettingError("frame", "blocks do not take a frame (mesh the surface on one machine)");
 }
 
-}  // namespace
+}  // namespace blocks
 
 BlockBase block_base(const Surface& surface, const Settings& settings) {
-  check_blocked_settings(settings);
+  blocks::check_blocked_settings(settings);
   const Box box = settings.box.value_or(surface.box());
   const double edge = default_edge_length(settings, box);
   BlockBase out;

@@ -25,21 +25,12 @@ namespace isopatch {
 namespace {
 
 void check_blocked_composite_settings(const Settings& settings) {
-  settings.validate();
-  if (settings.method != Method::Projection)
-    throw SettingError("method", "blocks refine the projection mesher's base: use the projection method");
+  blocks::check_blocked_settings(settings);
   if (meshed_through_partition(settings))
     throw SettingError(settings.frame ? "frame" : (settings.region.empty() ? "cells" : "region"),
                        "blocks mesh a composite along its own curves: a region, a frame or given cells "
                        "mesh it through the partition, on one machine");
   refuse_octree_settings(settings);
-}
-
-/// Whether one process refines a composite with these settings (mesh_composite_along_curves): the
-/// automatic level leaves the paper's method alone (remesh 0) and a fixed segment count unrefined.
-bool refines(const Settings& settings) {
-  return settings.refine > 1 ||
-         (settings.refine == 0 && settings.remesh_iterations.value_or(1) > 0 && settings.resolution == 0);
 }
 
 /// Per base vertex: the patch of the lowest-numbered base triangle that uses it (what refine_pieces
@@ -81,7 +72,8 @@ BlockBase composite_block_base(const CompositeModel& model, const Settings& sett
     std::vector<std::int32_t> vertex_patch;
     const auto make = [&](int level) {
       Settings at = base_settings(settings, edge, level);
-      if (!refines(settings)) at = settings;  // one process meshes it once, at the settings themselves
+      if (!composite_refines(settings))
+        at = settings;  // one process meshes it once, at the settings themselves
       CompositeMesh made = mesh_composite_projection(c, at);
       out.base = std::move(made.mesh);
       out.patches.triangle_patch = std::move(made.triangle_patch);
@@ -89,7 +81,7 @@ BlockBase composite_block_base(const CompositeModel& model, const Settings& sett
       out.patches.curve_vertices = std::move(made.curve_vertices);
       vertex_patch = std::move(made.vertex_patch);
     };
-    out.level = refines(settings) ? first_level(settings, edge, nullptr) : 1;
+    out.level = composite_refines(settings) ? first_level(settings, edge, nullptr) : 1;
     make(out.level);
     if (level_from_curvature(settings) && out.level > 1) {
       const double kappa = largest_patch_curvature(c, vertex_patch, out.base);

@@ -47,6 +47,10 @@ BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& bas
                        int block, const BlockPiece& piece, const PieceRefiner& refine,
                        std::optional<double> base_smallest_angle, const PieceFinisher& finish = {});
 
+/// \throw SettingError for settings no blocked run keeps (another method than projection, a frame);
+///        the errors of Settings::validate().
+void check_blocked_settings(const Settings& settings);
+
 /// A composite's base for blocks, as block_base(CompositeModel) makes it but without its checks of the
 /// settings (a formula's creases are meshed with the settings of the formula).
 BlockBase composite_block_base(const CompositeModel& model, const Settings& settings);

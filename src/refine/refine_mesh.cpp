@@ -95,28 +95,25 @@ std::vector<std::uint8_t> near_small_angles(const Mesh& mesh, double angle) {
 }
 
 /// \throw InputError unless `pieces` names at least one function, none null, and one piece below their
-///        count per base triangle (or none).
+///        count per base triangle and per base vertex (or none).
 void check_pieces(const Mesh& base, const RefinePieces& pieces) {
   if (pieces.functions.empty()) throw InputError("refine: no function to refine on");
   for (const Surface* s : pieces.functions)
     if (!s) throw InputError("refine: a piece has no function");
-  if (!pieces.vertex_piece.empty()) {
-    if (pieces.vertex_piece.size() != base.vertex_count())
-      throw InputError("refine: " + std::to_string(pieces.vertex_piece.size()) + " vertex pieces for " +
-                       std::to_string(base.vertex_count()) + " base vertices");
-    for (const std::uint32_t p : pieces.vertex_piece)
+  // Each list is empty or names one piece below the functions' count per base vertex (triangle).
+  const auto check = [&](const std::vector<std::uint32_t>& list, std::size_t count, const char* what,
+                         const char* whats) {
+    if (list.empty()) return;
+    if (list.size() != count)
+      throw InputError("refine: " + std::to_string(list.size()) + " " + what + " pieces for " +
+                       std::to_string(count) + " base " + whats);
+    for (const std::uint32_t p : list)
       if (p >= pieces.functions.size())
-        throw InputError("refine: a base vertex names piece " + std::to_string(p) + " of " +
-                         std::to_string(pieces.functions.size()));
-  }
-  if (pieces.triangle_piece.empty()) return;
-  if (pieces.triangle_piece.size() != base.triangle_count())
-    throw InputError("refine: " + std::to_string(pieces.triangle_piece.size()) + " triangle pieces for " +
-                     std::to_string(base.triangle_count()) + " base triangles");
-  for (const std::uint32_t p : pieces.triangle_piece)
-    if (p >= pieces.functions.size())
-      throw InputError("refine: a base triangle names piece " + std::to_string(p) + " of " +
-                       std::to_string(pieces.functions.size()));
+        throw InputError("refine: a base " + std::string(what) + " names piece " + std::to_string(p) +
+                         " of " + std::to_string(pieces.functions.size()));
+  };
+  check(pieces.vertex_piece, base.vertex_count(), "vertex", "vertices");
+  check(pieces.triangle_piece, base.triangle_count(), "triangle", "triangles");
 }
 
 }  // namespace
