@@ -60,11 +60,12 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
   heavy="$heavy|Configurations/LibraryDeterminism.TwoCallsGiveTheSameMesh/genus2_coons( .*)?"
   heavy="$heavy|Surfaces/MaxError.CentroidsStayWithinTheBoundOnAValidMesh/genus2( .*)?|LocalSizesCli.ThinRimRefinedWithAWarningUnlessUniform"
   heavy="$heavy|CreaseBlocks.OneBlockIsTheMeshOfOneProcessAlongTheCreases|Examples/CompositeBlocks.OneBlockIsTheMeshOfOneProcess/.*"
-  # And five more whose code the other sanitized tests run (163 CPU seconds): the paper's small
-  # reproduction (I-patches, blends and Marching Cubes each have their own tests), two thread-count
-  # determinism checks (genus 2 with the Coons base, a CSG shape; one-thread and two-thread runs of the
-  # same code stay), and two composites of the automatic-level sweep (its other examples stay).
-  heavy="$heavy|paper.reproduce_small|CreaseMeshing.TheSameBytesForAnyNumberOfThreads"
+  # And seven more whose code the other sanitized tests run (163 CPU seconds): the paper's small
+  # reproduction and the two checks of its outputs (I-patches, blends and Marching Cubes each have their
+  # own tests), two thread-count determinism checks (genus 2 with the Coons base, a CSG shape;
+  # one-thread and two-thread runs of the same code stay), and two composites of the automatic-level
+  # sweep (its other examples stay).
+  heavy="$heavy|paper\..*|CreaseMeshing.TheSameBytesForAnyNumberOfThreads"
   heavy="$heavy|Configurations/LibraryDeterminism.AnyThreadCountGivesTheSameMesh/genus2_coons( .*)?"
   heavy="$heavy|Composite/RefinedExamples.AutomaticLevelIsNoWorseThanOneLevel/(rounded_box|icosahedron_blend)( .*)?)$"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
