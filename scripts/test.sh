@@ -67,7 +67,9 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
   # sweep (its other examples stay).
   heavy="$heavy|paper\..*|CreaseMeshing.TheSameBytesForAnyNumberOfThreads"
   heavy="$heavy|Configurations/LibraryDeterminism.AnyThreadCountGivesTheSameMesh/genus2_coons( .*)?"
-  heavy="$heavy|Composite/RefinedExamples.AutomaticLevelIsNoWorseThanOneLevel/(rounded_box|icosahedron_blend)( .*)?)$"
+  heavy="$heavy|Composite/RefinedExamples.AutomaticLevelIsNoWorseThanOneLevel/(rounded_box|icosahedron_blend)( .*)?"
+  # And the two gyroid runs of tiles by planes (the sphere's 125 tiles and the refusals run the same code).
+  heavy="$heavy|Tiles.EightTilesOfAGyroidAreWatertightOnTheSurfaceAndNearOneProcess|Tiles.TheSameBytesInAnyOrderAndForAnyThreadCount)$"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   LSAN_OPTIONS="suppressions=$PWD/tests/support/lsan.supp" \
     ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -LE "package|adaptive|validation|python|browser" \

@@ -126,7 +126,8 @@ int run_mesh(const MeshOptions& o) {
         std::pair{o.tiles.scheduler != d.scheduler, "--scheduler"},
         std::pair{o.tiles.workers != d.workers, "--workers"},
         std::pair{!o.tiles.memory_limit.empty(), "--memory-limit"},
-        std::pair{o.tiles.prefilter_window != d.prefilter_window, "--prefilter-window"}})
+        std::pair{o.tiles.prefilter_window != d.prefilter_window, "--prefilter-window"},
+        std::pair{o.tiles.split != d.split, "--split"}})
     if (given)
       throw InputError(std::string(flag) + " needs --tiles (a blocked run, docs/distributed.md)", "tiles");
   Settings settings;
@@ -355,6 +356,12 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--memory-limit", o->tiles.memory_limit, "--tiles: memory per local worker, e.g. 2GB");
   cmd->add_option("--prefilter-window", o->tiles.prefilter_window,
                   "--tiles with a volume: samples per side of the prefilter's windows (default 192)");
+  cmd->add_option(
+         "--split", o->tiles.split,
+         "--tiles: 'blocks' of one base made by the driver, or 'planes': tiles of the box by planes, "
+         "each making its own base (for bases beyond one machine)")
+      ->check(CLI::IsMember({"blocks", "planes"}))
+      ->capture_default_str();
   cmd->add_option("--stats-json", o->stats_json,
                   "Also write every statistic of the run to this file as JSON (by stage, by name)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing on success (and no progress line)");

@@ -39,6 +39,7 @@ void run_tiles(const TilesOptions& tiles, const TilesJob& job) {
   add("--workers", std::to_string(tiles.workers));
   add("--memory-limit", tiles.memory_limit);
   if (tiles.prefilter_window != 0) add("--prefilter-window", std::to_string(tiles.prefilter_window));
+  if (tiles.split != "blocks") add("--split", tiles.split);
   add("--output", job.output);
   add("--box", job.box);
   for (const std::string& p : job.params) add("--param", p);

@@ -16,7 +16,8 @@ struct TilesOptions {
   std::string scheduler = "local";
   int workers = 2;
   std::string memory_limit;
-  int prefilter_window = 0;  ///< a volume's prefilter windows (samples per side); 0: the driver's own
+  int prefilter_window = 0;      ///< a volume's prefilter windows (samples per side); 0: the driver's own
+  std::string split = "blocks";  ///< "blocks" of one base, or "planes": tiles of the box by planes
 };
 
 /// What a blocked run is given from `isopatch mesh`'s own options.

@@ -70,6 +70,9 @@ struct RemeshSettings {
   /// The planes of a region that cut the surface open (Settings::region): vertices stay inside them; a
   /// cut vertex on exactly one of them (and on no box face) slides along it, like one on a box face.
   ConvexRegion cut_planes;
+  /// When true, the cut stays exactly where it is: no boundary vertex slides along a box face or region
+  /// plane, nor merges into a neighbour (a tile's boundary, shared with the tile across, is given data).
+  bool hold_cut = false;
   /// When set and true, stops with LimitError("cancelled") at the next check.
   const std::atomic<bool>* cancel = nullptr;
   /// Called at the start of each round and pass with Progress::stage "cleanup"; may be empty.

@@ -14,7 +14,7 @@ import os
 import resource
 import time
 import zipfile
-from typing import Any, Dict, List, Optional, Sequence
+from typing import Any, Callable, Dict, List, Optional, Sequence
 
 import numpy as np
 
@@ -73,6 +73,8 @@ def job_hash(job: Dict[str, Any]) -> str:
         "options": {k: v for k, v in job["options"].items() if k != "threads"},
         "blocks": job["blocks"],
     }
+    if job.get("split", "blocks") != "blocks":
+        described["split"] = job["split"]  # tiles by planes (the hashes of blocked runs stay as they were)
     text = json.dumps(described, sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
@@ -170,8 +172,18 @@ def _kill_once(job: Dict[str, Any], block: int) -> None:
         os._exit(17)
 
 
-def _summary(job: Dict[str, Any], block: int, path: str, reused: bool, data: Dict[str, np.ndarray],
-             seconds: float) -> Dict[str, Any]:
+def refuse_beyond_memory(need: int, what: str, number: int, count: int) -> None:
+    """Raises LimitError when `need` bytes exceed the worker's memory limit, saying how many `what`s
+    ("block", "tile") would fit."""
+    limit = _worker_memory_limit()
+    if limit is not None and need > limit:
+        raise LimitError(
+            "%s %d of %d needs about %d MB but its worker's memory limit is %d MB: use more %ss "
+            "(--tiles %d or more)" % (what, number, count, need >> 20, limit >> 20, what, count * (need // limit + 1)))
+
+
+def summary(block: int, path: str, reused: bool, data: Dict[str, np.ndarray], seconds: float) -> Dict[str, Any]:
+    """What the manifest says of a block's or tile's file."""
     return {
         "block": block,
         "file": os.path.basename(path),
@@ -200,18 +212,13 @@ def run_block(job: Dict[str, Any], block: int) -> Dict[str, Any]:
             found = _load(path)
             # A block that was not kept is not kept again with the same settings: its file stands too.
             if not bool(found["kept"]) or found["positions"].shape == (expected, 3):
-                return _summary(job, block, path, True, found, 0.0)
+                return summary(block, path, True, found, 0.0)
         except (OSError, ValueError, KeyError, zipfile.BadZipFile):
             pass  # not a block file of this job (damaged or foreign): made again below
     _kill_once(job, block)
-    limit = _worker_memory_limit()
     # The block, and the base with its plan (about four times its file).
-    need = BYTES_PER_VERTEX * expected + 4 * os.path.getsize(base_path(job))
-    if limit is not None and need > limit:
-        raise LimitError(
-            "block %d of %d needs about %d MB but its worker's memory limit is %d MB: use more blocks "
-            "(--tiles %d or more)" % (block, job["blocks"], need >> 20, limit >> 20,
-                                      job["blocks"] * (need // limit + 1)))
+    refuse_beyond_memory(BYTES_PER_VERTEX * expected + 4 * os.path.getsize(base_path(job)), "block", block,
+                         job["blocks"])
     options = dict(job["options"])
     threads = _worker_threads()
     if threads > 0:
@@ -220,7 +227,7 @@ def run_block(job: Dict[str, Any], block: int) -> Dict[str, Any]:
     result = job_state(job).refine(options, block)
     arrays = {k: (v if isinstance(v, np.ndarray) else np.array(v)) for k, v in result.items()}
     _write_npz(path, arrays)
-    return _summary(job, block, path, False, arrays, time.perf_counter() - start)
+    return summary(block, path, False, arrays, time.perf_counter() - start)
 
 
 def check_seams(job: Dict[str, Any], plan: Dict[str, Any]) -> int:
@@ -249,27 +256,36 @@ def check_seams(job: Dict[str, Any], plan: Dict[str, Any]) -> int:
     return checked
 
 
-def write_ply(job: Dict[str, Any], plan: Dict[str, Any], path: str) -> None:
-    """One binary PLY of the whole output, streamed block by block (vertices, then triangles), in the
-    output's numbers: the bytes do not depend on the order the blocks were made in."""
-    vertices, triangles = int(plan["vertices"]), int(plan["triangles"])
+def stream_ply(path: str, vertices: int, triangles: int, parts: int,
+               positions_of: Callable[[int], np.ndarray], triangles_of: Callable[[int], np.ndarray]) -> None:
+    """One binary PLY of `vertices` and `triangles` streamed part by part: every part's positions (in
+    output order), then every part's triangles (in output numbers), each read when written. Raises
+    LimitError beyond 32-bit indices."""
     if vertices >= 2 ** 32:
-        raise LimitError("%d vertices do not fit one PLY's 32-bit indices: keep the block files "
+        raise LimitError("%d vertices do not fit one PLY's 32-bit indices: keep the part files "
                          "(the manifest lists them)" % vertices)
     index = "int" if vertices < 2 ** 31 else "uint"
     face = np.dtype([("n", "u1"), ("v", "<i4" if index == "int" else "<u4", (3,))])
     tmp = "%s.tmp-%d" % (path, os.getpid())
     with open(tmp, "wb") as f:
         f.write(_PLY_HEADER.format(v=vertices, t=triangles, index=index).encode())
-        for block in range(job["blocks"]):
-            f.write(_load(block_path(job, block), ("positions",))["positions"].astype("<f8").tobytes())
-        for block in range(job["blocks"]):
-            t = _load(block_path(job, block), ("triangles",))["triangles"]
+        for part in range(parts):
+            f.write(positions_of(part).astype("<f8").tobytes())
+        for part in range(parts):
+            t = triangles_of(part)
             records = np.empty(t.shape[0], dtype=face)
             records["n"] = 3
             records["v"] = t
             f.write(records.tobytes())
     os.replace(tmp, path)
+
+
+def write_ply(job: Dict[str, Any], plan: Dict[str, Any], path: str) -> None:
+    """One binary PLY of the whole output, streamed block by block (vertices, then triangles), in the
+    output's numbers: the bytes do not depend on the order the blocks were made in."""
+    stream_ply(path, int(plan["vertices"]), int(plan["triangles"]), job["blocks"],
+               lambda b: _load(block_path(job, b), ("positions",))["positions"],
+               lambda b: _load(block_path(job, b), ("triangles",))["triangles"])
 
 
 def write_other(job: Dict[str, Any], plan: Dict[str, Any], path: str) -> None:
@@ -287,9 +303,9 @@ def write_other(job: Dict[str, Any], plan: Dict[str, Any], path: str) -> None:
 
 
 def write_manifest(job: Dict[str, Any], plan: Dict[str, Any], summaries: Sequence[Dict[str, Any]],
-                   extra: Dict[str, Any]) -> Dict[str, Any]:
+                   extra: Dict[str, Any], base: Optional[str] = "") -> Dict[str, Any]:
     """The manifest: settings, blocks with counts and checksums, the output; written by renaming and
-    returned with its path ("manifest")."""
+    returned with its path ("manifest"). `base` None: a run without a base file (tiles by planes)."""
     manifest = {
         "format": FORMAT,
         "version": _isopatch.__version__,
@@ -301,7 +317,8 @@ def write_manifest(job: Dict[str, Any], plan: Dict[str, Any], summaries: Sequenc
         "blocks": job["blocks"],
         "vertices": int(plan["vertices"]),
         "triangles": int(plan["triangles"]),
-        "base": {"file": os.path.basename(base_path(job)), "sha256": file_digest(base_path(job))},
+        "base": ({"file": os.path.basename(base_path(job)), "sha256": file_digest(base_path(job))}
+                 if base is not None else None),
         "block_files": [
             dict(s, first_vertex=int(plan["first_vertex"][s["block"]]),
                  first_triangle=int(plan["first_triangle"][s["block"]]))

@@ -16,9 +16,9 @@ import argparse
 import os
 import sys
 import time
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
 
-from . import _blocks, _prefilter
+from . import _blocks, _prefilter, _tiles
 from ._api import BoxLike, _box
 from ._errors import (CreaseError, Error, EvaluationError, InputError, IoError, LimitError, NoSurfaceError,
                       ParseError, SingularSurfaceError, UnknownSurfaceError)
@@ -31,11 +31,14 @@ _OPTIONS = ("edge_length", "quality", "refine", "remesh", "resolution", "max_eva
             "creases")
 
 
-def _job(source: Dict[str, Any], box: Any, options: Dict[str, Any], tiles: int, out_dir: str) -> Dict[str, Any]:
+def _job(source: Dict[str, Any], box: Any, options: Dict[str, Any], tiles: int, out_dir: str,
+         split: str = "blocks") -> Dict[str, Any]:
     if not isinstance(tiles, int) or tiles < 1:
         raise InputError("tiles must be a whole number of at least 1", "tiles")
     os.makedirs(out_dir, exist_ok=True)
     job = {"source": source, "box": box, "options": options, "blocks": tiles, "out_dir": os.path.abspath(out_dir)}
+    if split != "blocks":
+        job["split"] = split
     job["hash"] = _blocks.job_hash(job)
     return job
 
@@ -110,6 +113,7 @@ def mesh_blocks(
     scheduler: Any = "local",
     workers: int = 2,
     memory_limit: Union[str, int, None] = None,
+    split: str = "blocks",
     _test: Optional[Dict[str, Any]] = None,
     **options: Any,
 ) -> Dict[str, Any]:
@@ -123,6 +127,12 @@ def mesh_blocks(
     coefficients to rounding), into one .npy file in `out_dir` that every task maps instead of reading
     the volume; a .npy volume is read by the workers window by window.
 
+    split: "blocks" (one base made by the driver, its triangles cut into `tiles` blocks) or "planes"
+    (for bases too large for one machine: the box cut by planes into at least `tiles` tiles, the curves
+    of every face of the lattice traced first by one task each, then every tile's base and refinement
+    made by one task on its faces' curves; formulas, catalogue surfaces and volumes, not composites or
+    formulas with exact creases).
+
     scheduler: "local" (a LocalCluster of `workers` processes with one thread each on 127.0.0.1, with
     `memory_limit` per worker), "tcp://HOST:PORT" (a running scheduler) or a distributed.Client.
     options: edge_length, quality, refine, remesh, resolution, max_evaluations, time_limit, creases.
@@ -133,6 +143,8 @@ def mesh_blocks(
     Raises the library's errors (InputError, SettingError, LimitError "use more blocks" when a block is
     larger than its worker's memory limit, ...), from the driver or from the worker that met them.
     """
+    if split not in ("blocks", "planes"):
+        raise InputError("split must be 'blocks' or 'planes', not %r" % (split,), "split")
     unknown = sorted(set(options) - set(_OPTIONS))
     if unknown:
         raise InputError("unknown setting %r for a blocked run" % unknown[0], unknown[0])
@@ -154,6 +166,9 @@ def mesh_blocks(
             source.update(coefficients=prefiltered["coefficients"], spacing=prefiltered["spacing"],
                           origin=prefiltered["origin"])
             phases["prefilter"] = prefiltered["seconds"]
+        if split == "planes":
+            return _run_planes(client, source, _box(box), opts, tiles, out_dir, output, _test, phases, start,
+                               _prefilter_extra(prefiltered))
         while True:
             job = _job(source, _box(box), opts, tiles, out_dir)
             job.update(_test or {})
@@ -164,33 +179,18 @@ def mesh_blocks(
             mark = time.perf_counter()
             summaries = _run_blocks(client, job)
             phases["blocks"] += time.perf_counter() - mark
-            failed = [s for s in summaries if not s["kept"]]
-            if not failed:
+            if _all_kept(summaries, job["level"], "block", "mesh it in one process, whose level-1 mesher has "
+                                                             "the clean-up a block lacks"):
                 break
-            if job["level"] <= 1:
-                worst = failed[0]
-                raise LimitError(
-                    "block %d of this surface fails the refinement's guard even at level 1 (smallest angle %.1f "
-                    "degrees, %d points not landed): mesh it in one process, whose level-1 mesher has the "
-                    "clean-up a block lacks"
-                    % (worst["block"], worst["smallest_angle"], worst["failed_points"]))
             # As one process does: a refinement that fails its guard is made again at half the level.
             opts["refine"] = job["level"] // 2
         plan = job["plan"]
         mark = time.perf_counter()
         extra: Dict[str, Any] = {"seam_copies_checked": _blocks.check_seams(job, plan)}
-        if prefiltered is not None:
-            extra["prefilter"] = {"file": os.path.basename(prefiltered["coefficients"]),
-                                  "windows": prefiltered["windows"], "window": prefiltered["window"],
-                                  "halo": prefiltered["halo"], "reused": prefiltered["reused"],
-                                  "worker_peak_rss_bytes": prefiltered.get("worker_peak_rss_bytes", 0),
-                                  "sample_range": [prefiltered["min"], prefiltered["max"]]}
+        extra.update(_prefilter_extra(prefiltered))
         if output:
-            if output.lower().endswith(".ply"):
-                _blocks.write_ply(job, plan, output)
-            else:
-                _blocks.write_other(job, plan, output)
-            extra["output"] = {"file": os.path.abspath(output), "sha256": _blocks.file_digest(output)}
+            extra["output"] = _write_output(output, lambda: _blocks.write_ply(job, plan, output),
+                                            lambda: _blocks.write_other(job, plan, output))
         extra["computed"] = sum(1 for s in summaries if not s["reused"])
         extra["reused"] = sum(1 for s in summaries if s["reused"])
         phases["merge"] = time.perf_counter() - mark
@@ -202,6 +202,97 @@ def mesh_blocks(
         if cluster is not None:
             client.close()
             cluster.close()
+
+
+def _write_output(output: str, ply: Callable[[], None], other: Callable[[], None]) -> Dict[str, Any]:
+    """Writes the whole mesh (a .ply streamed by `ply`, another format by `other`); the manifest's entry."""
+    (ply if output.lower().endswith(".ply") else other)()
+    return {"file": os.path.abspath(output), "sha256": _blocks.file_digest(output)}
+
+
+def _all_kept(summaries: Sequence[Dict[str, Any]], level: int, what: str, advice: str) -> bool:
+    """Whether every block's or tile's refinement is kept; raises LimitError (with `advice`) when one is
+    not at level 1, where halving the level is no way out."""
+    failed = [s for s in summaries if not s["kept"]]
+    if failed and level <= 1:
+        worst = failed[0]
+        raise LimitError("%s %d of this surface fails the refinement's guard even at level 1 (smallest angle "
+                         "%.1f degrees, %d points not landed): %s"
+                         % (what, worst["block"], worst["smallest_angle"], worst["failed_points"], advice))
+    return not failed
+
+
+def _prefilter_extra(prefiltered: Optional[Dict[str, Any]]) -> Dict[str, Any]:
+    """The manifest's record of a volume's distributed prefilter (nothing without one)."""
+    if prefiltered is None:
+        return {}
+    return {"prefilter": {"file": os.path.basename(prefiltered["coefficients"]),
+                          "windows": prefiltered["windows"], "window": prefiltered["window"],
+                          "halo": prefiltered["halo"], "reused": prefiltered["reused"],
+                          "worker_peak_rss_bytes": prefiltered.get("worker_peak_rss_bytes", 0),
+                          "sample_range": [prefiltered["min"], prefiltered["max"]]}}
+
+
+def _run_planes(client: Any, source: Dict[str, Any], box: Any, opts: Dict[str, Any], tiles: int, out_dir: str,
+                output: Optional[str], test: Optional[Dict[str, Any]], phases: Dict[str, float], start: float,
+                extra: Dict[str, Any]) -> Dict[str, Any]:
+    """A run in tiles by planes (split="planes"): the plan, the faces' tasks, the tiles' tasks, the merge.
+    A tile whose refinement is not kept halves the level for every tile, as one process does."""
+    phases["faces"] = 0.0
+    while True:
+        job = _job(source, box, opts, tiles, out_dir, "planes")
+        job.update(test or {})
+        mark = time.perf_counter()
+        job["plan"] = _tiles.make_plan(job)
+        job["level"] = job["plan"]["level"]
+        counts = job["plan"]["counts"]
+        job["tile_count"] = counts[0] * counts[1] * counts[2]
+        phases["base"] += time.perf_counter() - mark
+        mark = time.perf_counter()
+        faces = list(range(_tiles.face_count(counts)))
+        face_summaries = client.gather(client.map(_tiles.run_face, [job] * len(faces), faces, pure=False))
+        phases["faces"] += time.perf_counter() - mark
+        mark = time.perf_counter()
+        order = list(range(job["tile_count"]))
+        if job.get("reverse"):
+            order.reverse()
+        summaries = sorted(client.gather(client.map(_tiles.run_tile, [job] * len(order), order, pure=False)),
+                           key=lambda s: s["tile"])
+        phases["blocks"] += time.perf_counter() - mark
+        if _all_kept(summaries, job["level"], "tile", "use other tile counts, or blocks of one base"):
+            break
+        opts["refine"] = job["level"] // 2
+    mark = time.perf_counter()
+    numbering = _tiles.number_tiles(job)
+    if output:
+        extra["output"] = _write_output(output, lambda: _tiles.write_ply(job, numbering, output),
+                                        lambda: _tiles.write_other(job, numbering, output))
+    phases["merge"] = time.perf_counter() - mark
+    plan = {"vertices": numbering["vertices"], "triangles": numbering["triangles"],
+            "first_vertex": [0] * job["tile_count"], "first_triangle": [0] * job["tile_count"]}
+    first_vertex = first_triangle = 0
+    for t, s in enumerate(summaries):
+        plan["first_vertex"][t] = first_vertex
+        plan["first_triangle"][t] = first_triangle
+        first_vertex += int(numbering["owned"][t].sum())
+        first_triangle += s["triangles"]
+    extra.update({
+        "split": "planes",
+        "tile_counts": counts,
+        "planes": [[float(x) for x in p] for p in job["plan"]["planes"]],
+        "edge": job["plan"]["edge"],
+        "face_files": [dict(f, file=os.path.basename(_tiles.face_path(job, f["face"]))) for f in face_summaries],
+        "plan_file": {"file": os.path.basename(_tiles.plan_path(job)),
+                      "sha256": _blocks.file_digest(_tiles.plan_path(job))},
+        "seam_vertices": numbering["seam_vertices"],
+        "computed": sum(1 for s in summaries if not s["reused"]),
+        "reused": sum(1 for s in summaries if s["reused"]),
+        "seconds": time.perf_counter() - start,
+        "phase_seconds": phases,
+        "seam_band_vertices": sum(s["seam_band_vertices"] for s in summaries),
+    })
+    job["blocks"] = job["tile_count"]
+    return _blocks.write_manifest(job, plan, summaries, extra, base=None)
 
 
 def _spec_source(surface: Optional[str]) -> Optional[str]:
@@ -272,6 +363,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     p.add_argument("--quality")
     p.add_argument("--refine", type=int)
     p.add_argument("--creases")
+    p.add_argument("--split", default="blocks", choices=("blocks", "planes"),
+                   help="blocks of one base (default) or tiles of the box by planes")
     a = p.parse_args(argv)
     try:
         box = None
@@ -293,12 +386,13 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                                out_dir=a.out_dir, box=box, params=params,
                                output=a.output, scheduler=a.scheduler, workers=a.workers,
                                memory_limit=a.memory_limit, edge_length=a.edge_length, quality=a.quality,
-                               refine=a.refine, creases=a.creases)
+                               refine=a.refine, creases=a.creases, split=a.split)
     except Error as e:
         print("isopatch: error: %s" % e, file=sys.stderr)
         return _exit_code(e)
-    print("isopatch: %d vertices, %d triangles in %d blocks (%d made, %d reused) in %.1f s; manifest %s%s"
-          % (manifest["vertices"], manifest["triangles"], manifest["blocks"], manifest["computed"],
+    print("isopatch: %d vertices, %d triangles in %d %s (%d made, %d reused) in %.1f s; manifest %s%s"
+          % (manifest["vertices"], manifest["triangles"], manifest["blocks"],
+             "tiles" if manifest.get("split") == "planes" else "blocks", manifest["computed"],
              manifest["reused"], manifest["seconds"], manifest["manifest"],
              "; mesh " + manifest["output"]["file"] if "output" in manifest else ""))
     return 0

@@ -29,64 +29,12 @@
 #include "arrays.hpp"
 #include "run_released.hpp"
 #include "settings_args.hpp"
+#include "surface_source.hpp"
 
 namespace py = pybind11;
 
 namespace isopatch::python {
 namespace {
-
-using Positions = py::array_t<double, py::array::c_style | py::array::forcecast>;
-using Indices = py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>;
-
-/// A surface as a source dict names it, read while holding the GIL so that it can be resolved without.
-struct Source {
-  std::string spec, volume, coefficients;
-  std::map<std::string, double> params;
-  double level = 0.0;
-  Vec3 spacing = Vec3::Ones(), origin = Vec3::Zero();
-
-  explicit Source(const py::dict& source) {
-    if (source.contains("volume")) {
-      volume = source["volume"].cast<std::string>();
-      if (source.contains("level")) level = source["level"].cast<double>();
-      if (source.contains("coefficients")) {
-        coefficients = source["coefficients"].cast<std::string>();
-        const auto s = source["spacing"].cast<std::array<double, 3>>();
-        const auto o = source["origin"].cast<std::array<double, 3>>();
-        spacing = Vec3(s[0], s[1], s[2]);
-        origin = Vec3(o[0], o[1], o[2]);
-      }
-      return;
-    }
-    if (!source.contains("spec")) throw InputError("a source names a 'spec' or a 'volume'", "source");
-    spec = source["spec"].cast<std::string>();
-    if (source.contains("params")) params = source["params"].cast<std::map<std::string, double>>();
-  }
-
-  bool composite() const { return volume.empty() && is_composite_path(spec); }
-
-  /// The composite a .ipatch spec names (read). Needs no GIL. \throw InputError when it has params.
-  CompositeModel read_model() const {
-    if (!params.empty())
-      throw InputError("params are for formulas, not composite surfaces (.ipatch)", "params");
-    return read_composite(spec);
-  }
-
-  /// The surface (the coefficients mapped, the volume read and prefiltered, or the formula compiled).
-  /// Needs no GIL.
-  SurfacePtr surface(const std::optional<Box>& box) const {
-    if (!coefficients.empty()) return mapped_volume_surface(coefficients, spacing, origin, level, volume);
-    if (!volume.empty()) return volume_surface(read_volume(volume), level, volume);
-    return resolve_surface(spec, box, params);
-  }
-};
-
-template <typename T>
-py::array_t<T> rows(const std::vector<T>& flat, std::size_t width) {
-  py::array_t<T> out({static_cast<py::ssize_t>(flat.size() / width), static_cast<py::ssize_t>(width)});
-  std::copy(flat.begin(), flat.end(), out.mutable_data());
-  return out;
-}
 
 Mesh to_mesh(const Positions& positions, const Indices& triangles) {
   if (positions.ndim() != 2 || positions.shape(1) != 3)
@@ -113,10 +61,7 @@ py::dict patches_dict(const BasePatches& patches) {
     vertices.insert(vertices.end(), curve.begin(), curve.end());
     offsets.push_back(static_cast<std::int64_t>(vertices.size()));
   }
-  const auto array = [](const auto& v) {
-    using T = typename std::decay_t<decltype(v)>::value_type;
-    return py::array_t<T>(static_cast<py::ssize_t>(v.size()), v.data());
-  };
+  const auto array = [](const auto& v) { return vector_array(v); };
   py::dict out;
   out["triangle_patch"] = array(patches.triangle_patch);
   out["curve_segments"] =
@@ -226,10 +171,7 @@ class BlockJob {
     out["seam_ids"] =
         py::array_t<std::uint64_t>(static_cast<py::ssize_t>(mesh.seam_ids.size()), mesh.seam_ids.data());
     out["seam_positions"] = vec3_array(mesh.seam_positions);
-    out["failed_points"] = mesh.failed_points;
-    out["smallest_angle"] = mesh.smallest_angle;
-    out["kept"] = mesh.kept;
-    out["seam_band_vertices"] = mesh.seam_band_vertices;
+    put_refinement_figures(out, mesh);
     return out;
   }
 

@@ -21,6 +21,7 @@
 #include "result.hpp"
 #include "run_released.hpp"
 #include "settings_args.hpp"
+#include "tiles.hpp"
 
 namespace py = pybind11;
 
@@ -191,6 +192,7 @@ PYBIND11_MODULE(_isopatch, m) {
   register_error_translator();
   bind_result(m);
   bind_blocks(m);
+  bind_tiles(m);
   m.def("mesh_spec", &mesh_spec, py::arg("spec"), py::arg("box"), py::arg("params"), py::arg("options"));
   m.def("mesh_callable", &mesh_callable, py::arg("f"), py::arg("gradient"), py::arg("box"),
         py::arg("samples"), py::arg("batch"), py::arg("options"));

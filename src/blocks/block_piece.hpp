@@ -51,6 +51,10 @@ BlockMesh refine_piece(const Settings& settings, const Box& box, const Mesh& bas
 ///        the errors of Settings::validate().
 void check_blocked_settings(const Settings& settings);
 
+/// check_blocked_settings() and the settings tiles by planes do not take either (a region or cells, an
+/// error bound or a size field). \throw SettingError naming the first.
+void check_tiled_settings(const Settings& settings);
+
 /// A composite's base for blocks, as block_base(CompositeModel) makes it but without its checks of the
 /// settings (a formula's creases are meshed with the settings of the formula).
 BlockBase composite_block_base(const CompositeModel& model, const Settings& settings);

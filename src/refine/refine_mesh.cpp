@@ -191,9 +191,9 @@ RefineResult refine_pieces(const Mesh& base, const RefinePieces& pieces, const R
     if (!edges.boundary(e) || map.on_curve_edge(e)) continue;
     const auto [a, b] = edges.ends[e];
     motion[a] = motion[b] = Motion::Locked;
-    if (!params.seam || !params.seam(a, b))
-      edge_plane[e] = planes.common(base.positions[a], base.positions[b]);
-    const Motion points = edge_plane[e] >= 0 ? Motion::Slides : Motion::Locked;
+    const bool seam = params.seam && params.seam(a, b);
+    if (!seam || params.seams_on_planes) edge_plane[e] = planes.common(base.positions[a], base.positions[b]);
+    const Motion points = edge_plane[e] >= 0 && !seam ? Motion::Slides : Motion::Locked;
     for (int j = 1; j < k; ++j) motion[layout.edge_point(e, j)] = points;
   }
 

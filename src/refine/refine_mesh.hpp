@@ -65,6 +65,10 @@ struct RefineParams {
   /// a larger base: their points are landed from the edge alone and held, even on a box face or region
   /// plane, so the block across makes the same points. May be empty (no seams).
   std::function<bool(std::uint32_t a, std::uint32_t b)> seam;
+  /// Whether a seam edge that lies on a box face or region plane lands on the curve where that plane
+  /// meets f = 0 (still from the edge alone, and held): the seams of tiles of a box cut by planes, whose
+  /// shared points must stay on the plane between them. False: a seam's points land on f = 0 only.
+  bool seams_on_planes = false;
   const std::atomic<bool>* cancel = nullptr;
   std::function<void(const Progress&)> progress;  ///< may be empty
 };

@@ -78,6 +78,7 @@ bool try_collapse(RemeshRun& run, std::uint32_t a, std::uint32_t b, double max_l
 }
 
 bool try_collapse_boundary(RemeshRun& run, std::uint32_t a, std::uint32_t b, double max_length) {
+  if (run.settings.hold_cut) return false;
   // Vertices within rounding of each other (crossings of segments at one lattice point) merge: none moves.
   const bool same = run.length(a, b) <= 1e-9 * max_length;
   if (run.slide_axis(a) < 0 && run.slide_plane(a) < 0) std::swap(a, b);

@@ -138,6 +138,7 @@ class RemeshRun {
   /// runs first, before any pass reads slide_axis or slide_plane.
   void find_sliding_vertices() {
     planes = cut_planes(settings.cut_planes);
+    if (settings.hold_cut) return;  // no vertex slides: slide_axis and slide_plane are -1 everywhere
     if (settings.box) slide_axes = sliding_axes(mesh, *settings.box, planes, plane_margin());
     slide_planes = sliding_planes(mesh, planes, settings.box ? &*settings.box : nullptr, plane_margin());
   }
