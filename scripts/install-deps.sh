@@ -13,6 +13,8 @@ packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libcli11-de
 packages+=(prusa-slicer)  # the tests' slicer: python/tests/test_print_clients.py runs prusa-slicer --info
 packages+=(python3-distributed)  # isopatch.distributed: blocked runs on Dask (docs/distributed.md)
 packages+=(clang-format clang-tidy)  # scripts/check_format.sh, scripts/check_tidy.sh (version 14 on Debian 12)
+packages+=(dpkg-dev man-db)  # the Debian package: dpkg-shlibdeps for its dependencies, man for its page's test
+packages+=(python3-mypy)  # python/tests/test_typing.py: type checkers see the package's API
 [ "${1:-}" = "--bench" ] && packages+=(libvtk9-dev time)
 missing=()
 for p in "${packages[@]}"; do

@@ -24,6 +24,7 @@ from ._isopatch import __version__  # the library's version: project(isopatch VE
 from ._mesh import Mesh
 
 __all__ = [
+    "__version__",
     "mesh",
     "mesh_volume",
     "read_volume",

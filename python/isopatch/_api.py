@@ -3,7 +3,7 @@ sampled 3D arrays, read_volume() for .npy and .nrrd files."""
 
 from __future__ import annotations
 
-from typing import Callable, Dict, Optional, Sequence, Tuple, Union
+from typing import Callable, Dict, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -14,6 +14,11 @@ from ._mesh import Mesh
 Point = Tuple[float, float, float]
 BoxLike = Tuple[Sequence[float], Sequence[float]]
 Function = Callable[[np.ndarray], np.ndarray]
+#: The string options, as type checkers see them (the library refuses any other value at run time).
+Quality = Literal["preview", "default", "fine"]
+Method = Literal["projection", "mc"]
+Creases = Literal["auto", "off"]
+Inside = Literal["below", "above"]
 
 
 def _box(box: Optional[BoxLike]) -> Optional[Tuple[Point, Point]]:
@@ -59,9 +64,9 @@ def mesh(
     params: Optional[Dict[str, float]] = None,
     edge_length: Optional[float] = None,
     max_error: Optional[float] = None,
-    quality: str = "default",
+    quality: Quality = "default",
     threads: int = 0,
-    method: str = "projection",
+    method: Method = "projection",
     remesh: Optional[int] = None,
     refine: int = 0,
     resolution: Optional[int] = None,
@@ -70,7 +75,7 @@ def mesh(
     max_evaluations: int = 0,
     time_limit: float = 0.0,
     uniform: bool = False,
-    creases: str = "auto",
+    creases: Creases = "auto",
     samples: Optional[int] = None,
     batch: int = 1 << 18,
 ) -> Mesh:
@@ -125,13 +130,13 @@ def mesh_volume(
     spacing: Sequence[float] = (1.0, 1.0, 1.0),
     origin: Sequence[float] = (0.0, 0.0, 0.0),
     *,
-    inside: str = "below",
+    inside: Inside = "below",
     box: Optional[BoxLike] = None,
     edge_length: Optional[float] = None,
     max_error: Optional[float] = None,
-    quality: str = "default",
+    quality: Quality = "default",
     threads: int = 0,
-    method: str = "projection",
+    method: Method = "projection",
     remesh: Optional[int] = None,
     refine: int = 0,
     max_vertices: int = 0,

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from functools import cached_property
-from typing import Any, Dict, Optional, Sequence
+from typing import Any, Dict, Literal, Optional, Sequence
 
 import numpy as np
 
 from ._errors import InputError
+
+#: render()'s `show` values, as type checkers see them.
+Show = Literal["shaded", "wireframe", "isophotes", "mean-curvature", "gaussian-curvature", "error", "field"]
 
 # render()'s `show` values, as the command line's `isopatch render --show`: (mode, default field).
 # Modes are RenderMode's values (render.hpp): Shaded 0, Wireframe 1, ScalarField 2, Isophotes 3, Error 4.
@@ -92,7 +95,7 @@ class Mesh:
         self,
         path: Optional[str] = None,
         *,
-        show: str = "shaded",
+        show: Show = "shaded",
         field: Optional[str] = None,
         values: Optional[Sequence[float]] = None,
         size: Sequence[int] = (800, 800),

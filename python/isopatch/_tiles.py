@@ -192,8 +192,8 @@ def seam_band_angles(vertices: np.ndarray, faces: np.ndarray, planes: Sequence[S
     band's share of the triangles. `planes`: the manifest's."""
     near = np.zeros(len(vertices), dtype=bool)
     for axis, coordinates in enumerate(planes):
-        for c in coordinates[1:-1]:
-            near |= np.abs(vertices[:, axis] - c) < width
+        for at in coordinates[1:-1]:
+            near |= np.abs(vertices[:, axis] - at) < width
     a, b, c = (vertices[faces[:, k]] for k in range(3))
 
     def angle(p: np.ndarray, q: np.ndarray, r: np.ndarray) -> np.ndarray:

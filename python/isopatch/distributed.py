@@ -16,7 +16,7 @@ import argparse
 import os
 import sys
 import time
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Dict, List, Literal, Optional, Sequence, Tuple, Union
 
 from . import _blocks, _prefilter, _tiles
 from ._api import BoxLike, _box
@@ -113,7 +113,7 @@ def mesh_blocks(
     scheduler: Any = "local",
     workers: int = 2,
     memory_limit: Union[str, int, None] = None,
-    split: str = "blocks",
+    split: Literal["blocks", "planes"] = "blocks",
     _test: Optional[Dict[str, Any]] = None,
     **options: Any,
 ) -> Dict[str, Any]:
@@ -189,8 +189,9 @@ def mesh_blocks(
         extra: Dict[str, Any] = {"seam_copies_checked": _blocks.check_seams(job, plan)}
         extra.update(_prefilter_extra(prefiltered))
         if output:
-            extra["output"] = _write_output(output, lambda: _blocks.write_ply(job, plan, output),
-                                            lambda: _blocks.write_other(job, plan, output))
+            path: str = output
+            extra["output"] = _write_output(path, lambda: _blocks.write_ply(job, plan, path),
+                                            lambda: _blocks.write_other(job, plan, path))
         extra["computed"] = sum(1 for s in summaries if not s["reused"])
         extra["reused"] = sum(1 for s in summaries if s["reused"])
         phases["merge"] = time.perf_counter() - mark
@@ -265,8 +266,9 @@ def _run_planes(client: Any, source: Dict[str, Any], box: Any, opts: Dict[str, A
     mark = time.perf_counter()
     numbering = _tiles.number_tiles(job)
     if output:
-        extra["output"] = _write_output(output, lambda: _tiles.write_ply(job, numbering, output),
-                                        lambda: _tiles.write_other(job, numbering, output))
+        path: str = output
+        extra["output"] = _write_output(path, lambda: _tiles.write_ply(job, numbering, path),
+                                        lambda: _tiles.write_other(job, numbering, path))
     phases["merge"] = time.perf_counter() - mark
     plan = {"vertices": numbering["vertices"], "triangles": numbering["triangles"],
             "first_vertex": [0] * job["tile_count"], "first_triangle": [0] * job["tile_count"]}

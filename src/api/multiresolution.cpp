@@ -69,7 +69,6 @@ constexpr double kAngleFloor = 20.0;
 /// With BaseRefinement::keep_base_angles, an automatic level is kept only when its smallest angle is at
 /// least the clean-up's floor or no more than kBaseAngleSlack below the base's own (degrees).
 constexpr double kCleanupFloor = 25.0;
-constexpr double kBaseAngleSlack = 0.5;
 
 /// The automatic level at most `ceiling` for a surface of largest curvature `kappa` whose mesh at the
 /// target edge length `edge` has about `vertices` vertices: the curvature's level (at least

@@ -30,6 +30,10 @@ struct BaseRefinement {
   bool keep_base_angles = false;
 };
 
+/// How far below the base's own smallest angle (degrees) a kept refinement may go where the base's
+/// angles are the measure (BaseRefinement::keep_base_angles; tiles by planes).
+inline constexpr double kBaseAngleSlack = 0.5;
+
 /// Whether the level is chosen from the surface's curvature: the automatic level (settings.refine 0)
 /// without an error bound or a size field (which keep one level, docs/algorithms.md 8.4).
 bool level_from_curvature(const Settings& settings);

@@ -21,9 +21,6 @@
 namespace isopatch {
 namespace {
 
-/// How far below the base's smallest angle (degrees) a kept refinement may go.
-constexpr double kBaseAngleSlack = 0.5;
-
 using PointKey = std::array<std::uint64_t, 3>;
 
 PointKey key(const Vec3& p) {
