@@ -76,21 +76,6 @@ struct MeshOptions {
   TilesOptions tiles;
 };
 
-/// The surface of the argument; a formula without --box is given the bounds of a bounded --region as
-/// its box (a catalogue surface keeps its own box: an unbounded region lies inside it).
-SurfacePtr surface_in_region(const std::string& spec, const Settings& settings,
-                             const std::map<std::string, double>& params) {
-  if (settings.box || settings.region.empty()) return resolve_surface(spec, settings.box, params);
-  const std::optional<Box> bounds = region_bounds(settings.region);
-  try {
-    return resolve_surface(spec, bounds, params);
-  } catch (const InputError& e) {
-    if (e.setting() != "box") throw;
-    throw SettingError("region",
-                       "the region is unbounded: give a box as well (a formula has no box of its own)");
-  }
-}
-
 /// A blocked run (--tiles): only the settings the blocks keep; the others are refused, not dropped.
 [[noreturn]] void run_mesh_in_tiles(const MeshOptions& o) {
   const MeshOptions d;
@@ -194,10 +179,11 @@ int run_mesh(const MeshOptions& o) {
   if (composite && settings.method != Method::MarchingCubes) {
     for (const std::string& w : composite->shape_warnings()) std::fprintf(stderr, "warning: %s\n", w.c_str());
   }
-  const SurfacePtr surface = composite ? composite->surface()
-                             : is_volume_path(o.surface)
-                                 ? volume_input(o.surface, o.volume)
-                                 : surface_in_region(o.surface, settings, parse_params(o.params));
+  const SurfacePtr surface =
+      composite ? composite->surface()
+      : is_volume_path(o.surface)
+          ? volume_input(o.surface, o.volume)
+          : resolve_surface_in_region(o.surface, settings.box, settings.region, parse_params(o.params));
   // The singular points of f = 0 in the box, before meshing: the mesh is refined around them
   // (SizeSettings::refine_around), and they are listed in a warning and the statistics
   // (singular_report.hpp). The search and the checks behind the warnings run on the meshing's threads.

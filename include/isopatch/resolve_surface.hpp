@@ -3,6 +3,7 @@
 /// Surfaces from text: a formula of the expression language (expression.hpp), a catalogue name
 /// (catalogue.hpp) or a formula file, as the command line takes them.
 
+#include <isopatch/convex_region.hpp>
 #include <isopatch/geometry.hpp>
 #include <isopatch/surface.hpp>
 
@@ -45,5 +46,14 @@ SurfacePtr catalogue_surface(std::string_view name, const std::map<std::string, 
 /// its own box unless `box` is given. \throw UnknownSurfaceError, ParseError, IoError, InputError as above
 SurfacePtr resolve_surface(const std::string& spec, const std::optional<Box>& box,
                            const std::map<std::string, double>& params = {});
+
+/// resolve_surface() for a mesh inside `region` (Settings::region): without `box`, a formula takes the
+/// bounds of a bounded region as its box (region_bounds(), convex_region.hpp); a catalogue surface keeps
+/// its own box (an unbounded region lies inside it). With `box`, or an empty region, resolve_surface().
+/// \throw SettingError("region") for a formula without a box in an unbounded region (a formula has no
+///        box of its own) or a bad plane; otherwise as resolve_surface().
+SurfacePtr resolve_surface_in_region(const std::string& spec, const std::optional<Box>& box,
+                                     const ConvexRegion& region,
+                                     const std::map<std::string, double>& params = {});
 
 }  // namespace isopatch

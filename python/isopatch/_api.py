@@ -19,6 +19,10 @@ Quality = Literal["preview", "default", "fine"]
 Method = Literal["projection", "mc"]
 Creases = Literal["auto", "off"]
 Inside = Literal["below", "above"]
+#: A convex region: the command line's --region text ("a,b,c,d;...") or (a, b, c, d) planes, each the
+#: half-space a x + b y + c z + d <= 0; a frame: "AZ,EL,ROLL" or three angles in degrees.
+Region = Union[str, Sequence[Sequence[float]]]
+FrameLike = Union[str, Sequence[float]]
 
 
 def _box(box: Optional[BoxLike]) -> Optional[Tuple[Point, Point]]:
@@ -76,6 +80,8 @@ def mesh(
     time_limit: float = 0.0,
     uniform: bool = False,
     creases: Creases = "auto",
+    region: Optional[Region] = None,
+    frame: Optional[FrameLike] = None,
     samples: Optional[int] = None,
     batch: int = 1 << 18,
 ) -> Mesh:
@@ -99,6 +105,10 @@ def mesh(
     creases: formulas only. 'auto': a formula built with min, max or abs whose faces meet at real creases
         (a CSG shape) is meshed along its exact creases and corners (docs/creases.md); 'off': meshed as a
         smooth surface. Raises CreaseError for a shape no mesh can follow (solids touching along an edge).
+    region, frame: formulas and catalogue names, projection only, as the command line's --region and
+        --frame: mesh inside the convex polytope of the region's half-spaces (inside the box when given;
+        a formula without a box takes a bounded region's bounds), or partition in a frame rotated by
+        azimuth, elevation and roll (docs/convex-partitions.md).
     samples, batch: Python functions only. The function is called in batches of at most ``batch``
         points: first on a grid of ``samples`` cells along the box's longest side (default: two per
         target edge, 64..256), whose tricubic B-spline interpolant is meshed, then for a few batched
@@ -108,7 +118,9 @@ def mesh(
     Ctrl-C stops it with KeyboardInterrupt. Raises the isopatch exceptions (isopatch.Error and its
     subclasses) with the library's messages; an exception raised by the function propagates unchanged.
     """
-    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations", "creases"))
+    options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations", "creases", "region", "frame"))
+    if not isinstance(surface, str) and (region is not None or frame is not None):
+        raise InputError("region and frame are for formulas and catalogue names", "region")
     if isinstance(surface, str):
         if gradient is not None or samples is not None:
             raise InputError("gradient and samples are for Python functions, not formulas", "gradient")

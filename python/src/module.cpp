@@ -71,7 +71,7 @@ MeshResult mesh_spec(const std::string& spec, const BoxArg& box, const std::map<
       return std::move(r);
     });
   }
-  SurfacePtr surface = resolve_surface(spec, settings.box, params);
+  SurfacePtr surface = resolve_surface_in_region(spec, settings.box, settings.region, params);
   return mesh_released(std::move(surface), std::move(settings));
 }
 

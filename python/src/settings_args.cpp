@@ -2,15 +2,44 @@
 #include "settings_args.hpp"
 
 #include <pybind11/stl.h>
+#include <isopatch/convex_region.hpp>
 #include <isopatch/error.hpp>
 #include <isopatch/isopatch.hpp>
 
+#include <array>
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace py = pybind11;
 
 namespace isopatch::python {
 namespace {
+
+/// A region as the command line's --region text ("a,b,c,d;...") or a sequence of (a, b, c, d) planes,
+/// each the half-space a x + b y + c z + d <= 0. \throw InputError as parse_region().
+ConvexRegion to_region(const py::handle& value) {
+  if (py::isinstance<py::str>(value)) return parse_region(value.cast<std::string>());
+  ConvexRegion region;
+  for (const auto& plane : value.cast<std::vector<std::array<double, 4>>>())
+    region.push_back({plane[0], plane[1], plane[2], plane[3]});
+  validate_region(region, "region");
+  return region;
+}
+
+/// A frame as the command line's --frame text ("AZ,EL,ROLL") or a sequence of three angles in degrees.
+/// \throw InputError as parse_frame() (three finite numbers).
+Frame to_frame(const py::handle& value) {
+  if (py::isinstance<py::str>(value)) return parse_frame(value.cast<std::string>());
+  const auto angles = value.cast<std::array<double, 3>>();
+  for (const double a : angles)
+    if (!std::isfinite(a)) throw InputError("the frame's angles must be finite numbers of degrees", "frame");
+  Frame frame;
+  frame.azimuth = angles[0];
+  frame.elevation = angles[1];
+  frame.roll = angles[2];
+  return frame;
+}
 
 /// Sets the Settings field of that name. \throw py::cast_error for a value of the wrong type.
 void set_option(Settings& s, const std::string& key, const py::handle& value) {
@@ -42,6 +71,10 @@ void set_option(Settings& s, const std::string& key, const py::handle& value) {
     s.uniform = value.cast<bool>();
   else if (key == "creases")
     s.creases = parse_creases(value.cast<std::string>());
+  else if (key == "region")
+    s.region = to_region(value);
+  else if (key == "frame")
+    s.frame = to_frame(value);
   else
     throw InputError("unknown setting '" + key + "'", key);
 }

@@ -83,4 +83,18 @@ SurfacePtr resolve_surface(const std::string& spec, const std::optional<Box>& bo
   return expression_surface(text, need_box(box), {}, params);
 }
 
+SurfacePtr resolve_surface_in_region(const std::string& spec, const std::optional<Box>& box,
+                                     const ConvexRegion& region,
+                                     const std::map<std::string, double>& params) {
+  if (box || region.empty()) return resolve_surface(spec, box, params);
+  const std::optional<Box> bounds = region_bounds(region);
+  try {
+    return resolve_surface(spec, bounds, params);
+  } catch (const InputError& e) {
+    if (e.setting() != "box") throw;
+    throw SettingError("region",
+                       "the region is unbounded: give a box as well (a formula has no box of its own)");
+  }
+}
+
 }  // namespace isopatch
