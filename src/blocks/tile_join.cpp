@@ -285,6 +285,20 @@ std::optional<Mesh> join_once(const Mesh& mesh, const Surface& surface,
       out.positions.push_back(p);
     }
 
+  // grad f at an output vertex, evaluated once (a strip asks for each vertex in several triangles).
+  std::vector<Vec3> gradient;
+  std::vector<std::uint8_t> evaluated;
+  const auto gradient_at = [&](std::uint32_t v) -> const Vec3& {
+    if (v >= gradient.size()) {
+      gradient.resize(out.positions.size());
+      evaluated.resize(out.positions.size(), 0);
+    }
+    if (!evaluated[v]) {
+      gradient[v] = surface.value_gradient(out.positions[v]).gradient;
+      evaluated[v] = 1;
+    }
+    return gradient[v];
+  };
   for (std::uint32_t l = 0; l < loops.size(); ++l) {
     std::vector<std::uint32_t>& o = outer[l];
     if (o.size() < 3 && partners[l].empty()) unjoinable("a curve of fewer than three points");
@@ -309,10 +323,8 @@ std::optional<Mesh> join_once(const Mesh& mesh, const Surface& surface,
       if (agreement < 0.0) std::reverse(o.begin(), o.end());
       const std::size_t first = out.triangles.size();
       const auto faces_right = [&](const Triangle& t) {
-        const Vec3 &a = out.positions[t[0]], &b = out.positions[t[1]], &c = out.positions[t[2]];
-        return faces_along(a, b, c,
-                           {surface.value_gradient(a).gradient, surface.value_gradient(b).gradient,
-                            surface.value_gradient(c).gradient});
+        return faces_along(out.positions[t[0]], out.positions[t[1]], out.positions[t[2]],
+                           {gradient_at(t[0]), gradient_at(t[1]), gradient_at(t[2])});
       };
       zip(in, o, nearest_on(out.positions[in[0]]), out.positions, faces_right, out.triangles);
       for (std::size_t t = first; t < out.triangles.size(); ++t) {
