@@ -15,6 +15,10 @@ packages+=(python3-distributed)  # isopatch.distributed: blocked runs on Dask (d
 packages+=(clang-format clang-tidy)  # scripts/check_format.sh, scripts/check_tidy.sh (version 14 on Debian 12)
 packages+=(dpkg-dev man-db)  # the Debian package: dpkg-shlibdeps for its dependencies, man for its page's test
 packages+=(python3-mypy)  # python/tests/test_typing.py: type checkers see the package's API
+packages+=(libopenvdb-dev python3-openvdb)  # .vdb input (src/vdb); the tests write level sets with pyopenvdb
+packages+=(python3-open3d python3-scipy)  # python/tests/test_real_clients.py: Open3D reads the meshes
+packages+=(python3-pygalmesh)  # python/bench/compare_peers.py: CGAL's mesher from Python, side by side
+packages+=(python3-pip python3-setuptools python3-wheel python3-build)  # pip install . and the wheel (package.pip)
 [ "${1:-}" = "--bench" ] && packages+=(libvtk9-dev time)
 missing=()
 for p in "${packages[@]}"; do

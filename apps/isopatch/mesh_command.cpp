@@ -7,6 +7,7 @@
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/remesh.hpp>
 #include <isopatch/resolve_surface.hpp>
+#include <isopatch/vdb_surface.hpp>
 #include <isopatch/volume_io.hpp>
 
 #include <cstdint>
@@ -41,7 +42,8 @@ struct MeshOptions {
   std::string frame;
   std::vector<std::string> params;
   std::string edge_root = "bracketed";
-  int grid = 64;
+  std::optional<std::string> grid;  ///< marching cubes' cells, or a .vdb input's grid name
+  std::optional<int> mc_grid;
   double grid_offset = 1e-3;
   int fair = 0;
   std::size_t max_vertices = default_vertex_budget();
@@ -85,6 +87,7 @@ struct MeshOptions {
   refuse(o.method != d.method, "--method");
   refuse(!o.region.empty(), "--region");
   refuse(!o.frame.empty(), "--frame");
+  refuse(is_vdb_path(o.surface), "A .vdb grid");
   refuse(!o.volume.spacing.empty() || !o.volume.origin.empty(), "--spacing and --origin");
   refuse(o.max_error.has_value(), "--max-error");
   refuse(o.fields || o.vertex_roles, "--fields and --vertex-roles");
@@ -120,7 +123,7 @@ int run_mesh(const MeshOptions& o) {
   if (!o.box.empty()) settings.box = parse_box(o.box);
   if (!o.region.empty()) settings.region = region_argument(o.region);
   if (!o.frame.empty()) settings.frame = parse_frame(o.frame);
-  settings.grid = o.grid;
+  settings.grid = marching_cubes_cells(o.grid, o.mc_grid, is_vdb_path(o.surface));
   settings.grid_offset = o.grid_offset;
   settings.fair_iterations = o.fair;
   if (o.edge_root == "bracketed")
@@ -167,11 +170,12 @@ int run_mesh(const MeshOptions& o) {
   check_output_path(o.output);
   check_colour_field(o.colour);
   if (!o.stats_json.empty()) check_writable_location(o.stats_json);
-  if (o.volume.given() && !is_volume_path(o.surface))
-    throw InputError("--level, --spacing and --origin are for volumes (.npy, .nrrd), not '" + o.surface +
-                     "'");
-  if (is_volume_path(o.surface) && !o.params.empty())
-    throw InputError("--param is for formulas, not volumes");
+  const bool vdb = is_vdb_path(o.surface);
+  const bool sampled = vdb || is_volume_path(o.surface);
+  if (o.volume.given() && !sampled)
+    throw InputError("--level, --spacing and --origin are for volumes (.npy, .nrrd, .vdb), not '" +
+                     o.surface + "'");
+  if (sampled && !o.params.empty()) throw InputError("--param is for formulas, not volumes");
   if (is_composite_path(o.surface) && !o.params.empty())
     throw InputError("--param is for formulas, not composite surfaces (.ipatch)");
   std::optional<CompositeModel> composite;  // a .ipatch file: its patches are meshed with their curves
@@ -181,6 +185,7 @@ int run_mesh(const MeshOptions& o) {
   }
   const SurfacePtr surface =
       composite ? composite->surface()
+      : vdb     ? vdb_input(o.surface, o.volume, o.grid.value_or(""))
       : is_volume_path(o.surface)
           ? volume_input(o.surface, o.volume)
           : resolve_surface_in_region(o.surface, settings.box, settings.region, parse_params(o.params));
@@ -189,7 +194,7 @@ int run_mesh(const MeshOptions& o) {
   // (singular_report.hpp). The search and the checks behind the warnings run on the meshing's threads.
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
   const SingularRun singular =
-      arena.execute([&] { return search_singular_points(*surface, settings, is_volume_path(o.surface)); });
+      arena.execute([&] { return search_singular_points(*surface, settings, sampled); });
   if (!composite && settings.method == Method::Projection && !settings.uniform)
     settings.refine_around = singular.found.singular_samples();
   MeshStats stats;
@@ -218,10 +223,10 @@ int run_mesh(const MeshOptions& o) {
 Runner add_mesh_command(CLI::App& app) {
   auto o = std::make_shared<MeshOptions>();
   CLI::App* cmd = app.add_subcommand("mesh", "Mesh an implicit surface f(x,y,z) = 0 and write the mesh");
-  cmd->add_option(
-         "surface", o->surface,
-         "Catalogue name (see 'isopatch surfaces'), a formula, @file, a sampled volume (.npy, .nrrd) or a "
-         "composite surface (.ipatch: control polyhedron or setback blends)")
+  cmd->add_option("surface", o->surface,
+                  "Catalogue name (see 'isopatch surfaces'), a formula, @file, a sampled volume (.npy, "
+                  ".nrrd), an OpenVDB grid (.vdb) or a "
+                  "composite surface (.ipatch: control polyhedron or setback blends)")
       ->required();
   cmd->add_option("-o,--output", o->output,
                   "Output mesh: .ply, .obj, .off, .stl, .glb (glTF 2.0 binary) or .3mf (3MF for printing, "
@@ -272,8 +277,11 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option("--max-ray-angle", o->max_ray_angle,
                   "Projection: acceptance angle between ray and gradient")
       ->capture_default_str();
-  cmd->add_option("--grid", o->grid, "Marching cubes: cells along the longest box axis")
-      ->capture_default_str();
+  cmd->add_option("--grid", o->grid,
+                  "Marching cubes: cells along the longest box axis (default 64); a .vdb input: the name of "
+                  "the grid to mesh (default: the file's only level set)");
+  cmd->add_option("--mc-grid", o->mc_grid,
+                  "Marching cubes: cells along the longest box axis, also for a .vdb input (same as --grid)");
   cmd->add_option("--edge-root", o->edge_root, "Marching cubes: bracketed | linear edge crossings")
       ->capture_default_str();
   cmd->add_option("--grid-offset", o->grid_offset, "Marching cubes: grid shift as a fraction of a cell")

@@ -39,7 +39,11 @@ SingularRun search_singular_points(const Surface& surface, const Box& box, doubl
   const Mat3 r = frame ? frame->rotation() : Mat3::Identity();
   run.box = frame ? rotated_bounds(box, r) : box;
   SingularSearchSettings s;
-  s.min_box_size = std::max(0.25 * edge_length, box.size().maxCoeff() / 1024.0);
+  // A sampled surface's bounds reach a few samples around a box (its spline's support), so near a narrow
+  // band's clamped values they never exclude grad f = 0: boxes of two edge lengths, not a quarter of one,
+  // keep its search to a few thousand starts (a singular point smaller than two edges is noise of the
+  // samples).
+  s.min_box_size = std::max((sampled ? 2.0 : 0.25) * edge_length, box.size().maxCoeff() / 1024.0);
   const double margin = 1e-9 * box.diagonal();
   const double face = 1e-6 * box.size().maxCoeff();
   if (frame || !region.empty() || sampled)

@@ -2,6 +2,7 @@
 #include "volume_input.hpp"
 
 #include <isopatch/error.hpp>
+#include <isopatch/vdb_surface.hpp>
 #include <isopatch/volume_io.hpp>
 #include <isopatch/volume_surface.hpp>
 
@@ -44,6 +45,29 @@ SurfacePtr volume_input(const std::string& path, const VolumeOptions& options) {
   const std::size_t slash = path.find_last_of('/');
   return volume_surface(std::move(volume), options.level.value_or(0.0),
                         slash == std::string::npos ? path : path.substr(slash + 1));
+}
+
+SurfacePtr vdb_input(const std::string& path, const VolumeOptions& options, const std::string& grid) {
+  if (!options.spacing.empty() || !options.origin.empty())
+    throw InputError(
+        "--spacing and --origin are for .npy and .nrrd volumes: a .vdb grid's transform gives them");
+  VdbSource source;
+  source.grid = grid;
+  source.level = options.level.value_or(0.0);
+  return vdb_surface(path, source);
+}
+
+int marching_cubes_cells(const std::optional<std::string>& grid, const std::optional<int>& mc_grid,
+                         bool vdb) {
+  if (mc_grid) return *mc_grid;
+  if (!grid || vdb) return 64;
+  int cells = 0;
+  const char* end = grid->data() + grid->size();
+  const auto [ptr, ec] = std::from_chars(grid->data(), end, cells);
+  if (grid->empty() || ec != std::errc() || ptr != end)
+    throw SettingError("grid", "bad --grid '" + *grid +
+                                   "': want a whole number of cells (a grid's name is for .vdb inputs)");
+  return cells;
 }
 
 }  // namespace isopatch::cli

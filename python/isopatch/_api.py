@@ -1,13 +1,14 @@
 """The entry points: mesh() for formulas, catalogue names and Python functions, mesh_volume() for
-sampled 3D arrays, read_volume() for .npy and .nrrd files."""
+sampled 3D arrays, volume files and OpenVDB grids, read_volume() for .npy and .nrrd files."""
 
 from __future__ import annotations
 
-from typing import Callable, Dict, Literal, Optional, Sequence, Tuple, Union
+import os
+from typing import Any, Callable, Dict, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _isopatch
+from . import _isopatch, _vdb
 from ._errors import InputError
 from ._mesh import Mesh
 
@@ -137,11 +138,12 @@ def mesh(
 
 
 def mesh_volume(
-    volume: np.ndarray,
+    volume: Union[np.ndarray, str, "os.PathLike[str]", Any],
     level: float = 0.0,
-    spacing: Sequence[float] = (1.0, 1.0, 1.0),
-    origin: Sequence[float] = (0.0, 0.0, 0.0),
+    spacing: Optional[Sequence[float]] = None,
+    origin: Optional[Sequence[float]] = None,
     *,
+    grid: Optional[str] = None,
     inside: Inside = "below",
     box: Optional[BoxLike] = None,
     edge_length: Optional[float] = None,
@@ -155,26 +157,50 @@ def mesh_volume(
     time_limit: float = 0.0,
     uniform: bool = False,
 ) -> Mesh:
-    """Meshes the level set ``volume == level`` of a 3D array of samples.
+    """Meshes the level set ``volume == level`` of sampled values: a 3D array, a .npy, .nrrd or .vdb
+    file's path, or an OpenVDB grid object (Debian's python3-openvdb, ``import pyopenvdb``).
 
-    Axis order as in scikit-image's marching_cubes: ``volume[i, j, k]`` is the sample at
-    ``origin + (i * spacing[0], j * spacing[1], k * spacing[2])``, so vertex column 0 is along array
-    axis 0. The mesh lies on the tricubic B-spline that interpolates the samples (C2, so gradients and
-    curvatures exist). ``inside='below'`` (signed distances): samples below ``level`` are inside, normals
-    point towards higher values; ``inside='above'`` (densities, CT, masks): samples above are inside,
-    normals point towards lower values.
+    Arrays: axis order as in scikit-image's marching_cubes: ``volume[i, j, k]`` is the sample at
+    ``origin + (i * spacing[0], j * spacing[1], k * spacing[2])`` (spacing 1 and origin 0 unless
+    given; a .npy or .nrrd file's own unless given), so vertex column 0 is along array axis 0. The mesh
+    lies on the tricubic B-spline that interpolates the samples (C2, so gradients and curvatures exist).
+
+    OpenVDB (.vdb path or grid object): ``grid`` names the grid of a file (default: its only level set,
+    else its only float or double grid); spacing and origin come from the grid's transform (giving them
+    is an InputError). The mesh lies on a tricubic B-spline over the voxels (their cubic
+    quasi-interpolant, C2), built and stored only around the grid's leaves: memory follows the active
+    voxels, not the bounding box. Outside a level set's narrow band the grid's inactive values hold f
+    constant, so nothing is meshed there; the default region spans the active voxels.
+
+    ``inside='below'`` (signed distances, level sets): values below ``level`` are inside, normals point
+    towards higher values; ``inside='above'`` (densities, CT, masks, fog volumes): values above are
+    inside, normals point towards lower values.
     The region is the samples' extent unless ``box`` is given. Other settings as :func:`mesh`.
     Raises InputError for an array that is not 3D, has a side below 2 samples, or holds NaN or
-    infinity (the message names the index), NoSurfaceError when no sample crosses ``level``.
+    infinity (the message names the index), or an unknown grid name; IoError for an unreadable,
+    malformed or unsupported file; NoSurfaceError when no sample crosses ``level``.
     """
     options = _options(locals(), _SETTINGS)
-    array = np.ascontiguousarray(volume, dtype=np.float64)
     if inside not in ("below", "above"):
         raise InputError(f"inside must be 'below' or 'above', not {inside!r}", "inside")
+    if _vdb.is_vdb_path(volume) or _vdb.is_openvdb_grid(volume):
+        if spacing is not None or origin is not None:
+            raise InputError("spacing and origin come from an OpenVDB grid's transform", "spacing")
+        return Mesh(_vdb.mesh_vdb(volume, grid, level, inside == "above", _box(box), options))
+    if grid is not None:
+        raise InputError("grid= names a grid of a .vdb file or object", "grid")
+    if isinstance(volume, (str, os.PathLike)):  # a .npy or .nrrd file: its samples, spacing and origin
+        array, file_spacing, file_origin = read_volume(os.fspath(volume))
+        spacing = file_spacing if spacing is None else spacing
+        origin = file_origin if origin is None else origin
+    else:
+        array = np.ascontiguousarray(volume, dtype=np.float64)
+    array = np.ascontiguousarray(array, dtype=np.float64)
     if inside == "above":  # the same surface with f's sign turned: outward normals for densities
         array, level = -array, -level
     result = _isopatch.mesh_volume(
-        array, float(level), _triple(spacing, "spacing"), _triple(origin, "origin"), _box(box), options
+        array, float(level), _triple((1.0, 1.0, 1.0) if spacing is None else spacing, "spacing"),
+        _triple((0.0, 0.0, 0.0) if origin is None else origin, "origin"), _box(box), options
     )
     return Mesh(result)
 

@@ -6,6 +6,7 @@
 #include <isopatch/composite_mesh.hpp>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/resolve_surface.hpp>
+#include <isopatch/vdb_surface.hpp>
 #include <isopatch/version.hpp>
 #include <isopatch/volume_io.hpp>
 #include <isopatch/volume_surface.hpp>
@@ -141,6 +142,31 @@ MeshResult mesh_volume(const py::array_t<double, py::array::c_style | py::array:
   return mesh_released(std::move(surface), std::move(settings));
 }
 
+MeshResult mesh_vdb(const std::string& path, const std::string& grid, double level, bool inside_above,
+                    const BoxArg& box, const py::dict& options) {
+  Settings settings = to_settings(options);
+  settings.box = to_box(box);
+  SurfacePtr surface = run_released([&](const std::atomic<bool>*) {
+    return vdb_surface(path, VdbSource{grid, level, inside_above});
+  });
+  return mesh_released(std::move(surface), std::move(settings));
+}
+
+py::list vdb_grid_list(const std::string& path) {
+  const std::vector<VdbGridInfo> grids =
+      run_released([&](const std::atomic<bool>*) { return vdb_grids(path); });
+  py::list out;
+  for (const VdbGridInfo& g : grids) {
+    py::dict d;
+    d["name"] = g.name;
+    d["value_type"] = g.value_type;
+    d["grid_class"] = g.grid_class;
+    d["active_voxels"] = g.active_voxels;
+    out.append(d);
+  }
+  return out;
+}
+
 MeshResult mesh_from_arrays(const py::array_t<double, py::array::c_style | py::array::forcecast>& vertices,
                             const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& faces,
                             const std::string& spec, const BoxArg& box) {
@@ -199,6 +225,9 @@ PYBIND11_MODULE(_isopatch, m) {
   m.def("mesh_volume", &mesh_volume, py::arg("volume"), py::arg("level"), py::arg("spacing"),
         py::arg("origin"), py::arg("box"), py::arg("options"));
   m.def("read_volume", &read_volume_file, py::arg("path"));
+  m.def("mesh_vdb", &mesh_vdb, py::arg("path"), py::arg("grid"), py::arg("level"), py::arg("inside_above"),
+        py::arg("box"), py::arg("options"));
+  m.def("vdb_grids", &vdb_grid_list, py::arg("path"));
   m.def("mesh_from_arrays", &mesh_from_arrays, py::arg("vertices"), py::arg("faces"), py::arg("spec"),
         py::arg("box"));
   m.def("catalogue", [] {

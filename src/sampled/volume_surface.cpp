@@ -7,8 +7,8 @@
 #include <limits>
 #include <memory>
 #include <mutex>
-#include <sstream>
 
+#include "core/short_number.hpp"
 #include "sampled/bspline.hpp"
 #include "sampled/coefficient_bounds.hpp"
 #include "volume/mapped_file.hpp"
@@ -17,13 +17,6 @@
 namespace isopatch {
 
 namespace {
-
-std::string number(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
 
 /// Coefficients of a grid, in C order, and what keeps them alive (a vector, or a mapped file).
 struct Coefficients {
@@ -102,40 +95,11 @@ class VolumeSurface final : public Surface {
         index[static_cast<std::size_t>(a)][static_cast<std::size_t>(m)] =
             bspline::mirror(base + m, shape_[static_cast<std::size_t>(a)]);
     }
-    SecondOrder s;
-    const auto& [wx, wy, wz] = w;
-    for (std::size_t a = 0; a < 4; ++a)
-      for (std::size_t b = 0; b < 4; ++b) {
-        // The inner sums over z for this (x, y) pair: value, d/dz, d2/dz2.
-        double c0 = 0.0, c1 = 0.0, c2 = 0.0;
-        for (std::size_t c = 0; c < 4; ++c) {
-          const double coef = coefficient(index[0][a], index[1][b], index[2][c]);
-          c0 += wz.w[c] * coef;
-          if constexpr (Order >= 1) c1 += wz.d1[c] * coef;
-          if constexpr (Order >= 2) c2 += wz.d2[c] * coef;
-        }
-        s.value += wx.w[a] * wy.w[b] * c0;
-        if constexpr (Order >= 1) {
-          s.gradient[0] += wx.d1[a] * wy.w[b] * c0;
-          s.gradient[1] += wx.w[a] * wy.d1[b] * c0;
-          s.gradient[2] += wx.w[a] * wy.w[b] * c1;
-        }
-        if constexpr (Order >= 2) {
-          s.hessian(0, 0) += wx.d2[a] * wy.w[b] * c0;
-          s.hessian(1, 1) += wx.w[a] * wy.d2[b] * c0;
-          s.hessian(2, 2) += wx.w[a] * wy.w[b] * c2;
-          s.hessian(0, 1) += wx.d1[a] * wy.d1[b] * c0;
-          s.hessian(0, 2) += wx.d1[a] * wy.w[b] * c1;
-          s.hessian(1, 2) += wx.w[a] * wy.d1[b] * c1;
-        }
-      }
+    SecondOrder s = bspline::tricubic<Order>(w, [&](std::size_t a, std::size_t b, std::size_t c) {
+      return coefficient(index[0][a], index[1][b], index[2][c]);
+    });
     s.value -= level_;
-    for (int a = 0; a < 3; ++a) s.gradient[a] /= spacing_[a];
-    for (int a = 0; a < 3; ++a)
-      for (int b = a; b < 3; ++b) {
-        s.hessian(a, b) /= spacing_[a] * spacing_[b];
-        s.hessian(b, a) = s.hessian(a, b);
-      }
+    bspline::to_world(s, spacing_);
     return s;
   }
 
@@ -269,8 +233,8 @@ SurfacePtr volume_surface(Volume volume, double level, std::string name) {
   if (!std::isfinite(level)) throw InputError("the level must be finite", "level");
   const auto [lo, hi] = std::minmax_element(volume.samples.begin(), volume.samples.end());
   if (!(*lo < level) || !(*hi >= level))
-    throw NoSurfaceError("no sample of the volume crosses level " + number(level) +
-                         " (the samples range over [" + number(*lo) + ", " + number(*hi) + "])");
+    throw NoSurfaceError("no sample of the volume crosses level " + short_number(level) +
+                         " (the samples range over [" + short_number(*lo) + ", " + short_number(*hi) + "])");
   auto samples = std::make_shared<std::vector<double>>(std::move(volume.samples));
   bspline::interpolating_coefficients(*samples, volume.shape);
   Coefficients coefficients{samples->data(), samples};

@@ -1,0 +1,246 @@
+// .vdb files through OpenVDB into SparseSamples (vdb_reader.hpp).
+#include "vdb/vdb_reader.hpp"
+
+#include "vdb/vdb_prescan.hpp"
+
+#include <isopatch/error.hpp>
+#include <isopatch/volume.hpp>
+
+#include <openvdb/io/File.h>
+#include <openvdb/io/Stream.h>
+#include <openvdb/openvdb.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <mutex>
+#include <new>
+#include <sstream>
+
+namespace isopatch::vdb {
+
+namespace {
+
+/// OpenVDB's magic number, the file's first 8 bytes (little-endian): "VDB " then zeros.
+constexpr std::uint64_t kMagic = 0x56444220;
+
+void initialize_openvdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+void check_magic(std::string_view head, const std::string& name) {
+  std::uint64_t magic = 0;
+  if (head.size() >= sizeof magic) std::memcpy(&magic, head.data(), sizeof magic);
+  if (magic != kMagic) throw IoError(name + ": not an OpenVDB file (no 'VDB' magic number at its start)");
+}
+
+/// \throw IoError for a file that cannot be opened or does not start as an OpenVDB file.
+void check_file_magic(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open the file");
+  char head[8] = {};
+  in.read(head, sizeof head);
+  check_magic(std::string_view(head, static_cast<std::size_t>(in.gcount())), path);
+}
+
+/// The bytes of the file at `path`, checked for the magic number. \throw IoError.
+std::string file_bytes(const std::string& path) {
+  check_file_magic(path);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = in.tellg();
+  if (!in || size < 0) throw IoError(path + ": cannot read the file");
+  if (static_cast<std::uint64_t>(size) > kMaxVolumeSamples * sizeof(double))
+    throw IoError(path + ": the file is larger than " + std::to_string(kMaxVolumeSamples * sizeof(double)) +
+                  " bytes");
+  std::string bytes(static_cast<std::size_t>(size), '\0');
+  in.seekg(0);
+  if (!in.read(bytes.data(), size)) throw IoError(path + ": cannot read the file");
+  return bytes;
+}
+
+std::string grid_class(const openvdb::GridBase& g) {
+  return openvdb::GridBase::gridClassToString(g.getGridClass());
+}
+
+bool scalar(const openvdb::GridBase& g) {
+  return g.isType<openvdb::FloatGrid>() || g.isType<openvdb::DoubleGrid>();
+}
+
+/// The grid named `wanted` among `grids`, or, without a name, the only level set, else the only scalar
+/// grid. \throw InputError (setting "grid") naming the grids there are.
+openvdb::GridBase::Ptr choose(const openvdb::GridPtrVec& grids, const std::string& wanted,
+                              const std::string& name) {
+  std::string names;
+  for (const auto& g : grids)
+    names += (names.empty() ? "'" : ", '") + g->getName() + "' (" + g->valueType() + ")";
+  if (grids.empty()) throw IoError(name + ": the file holds no grid");
+  if (!wanted.empty()) {
+    for (const auto& g : grids)
+      if (g->getName() == wanted) return g;
+    throw InputError(name + " has no grid '" + wanted + "' (it has " + names + ")", "grid");
+  }
+  openvdb::GridBase::Ptr level_set, only_scalar;
+  int level_sets = 0, scalars = 0;
+  for (const auto& g : grids) {
+    if (!scalar(*g)) continue;
+    ++scalars;
+    only_scalar = g;
+    if (g->getGridClass() == openvdb::GRID_LEVEL_SET) {
+      ++level_sets;
+      level_set = g;
+    }
+  }
+  if (scalars == 0) throw IoError(name + " holds no float or double grid (it has " + names + ")");
+  if (level_sets == 1) return level_set;
+  if (level_sets == 0 && scalars == 1) return only_scalar;
+  throw InputError(name + " holds " + std::to_string(grids.size()) + " grids (" + names +
+                       "): name the one to mesh (--grid NAME, or grid= in Python)",
+                   "grid");
+}
+
+/// Voxel (i, j, k) at origin + (i, j, k) * spacing, or IoError for any other transform.
+void take_transform(const openvdb::GridBase& g, SparseSamples& out, const std::string& where) {
+  const openvdb::math::Transform& t = g.transform();
+  const std::string type = t.baseMap()->type();
+  const bool axis_aligned = type == openvdb::math::UniformScaleMap::mapType() ||
+                            type == openvdb::math::UniformScaleTranslateMap::mapType() ||
+                            type == openvdb::math::ScaleMap::mapType() ||
+                            type == openvdb::math::ScaleTranslateMap::mapType() ||
+                            type == openvdb::math::TranslationMap::mapType();
+  if (!t.isLinear() || !axis_aligned)
+    throw IoError(where + " has a " + type +
+                  " transform: only axis-aligned voxels (scale and translation) are supported");
+  const openvdb::Vec3d o = t.indexToWorld(openvdb::Vec3d(0.0, 0.0, 0.0));
+  const openvdb::Vec3d one = t.indexToWorld(openvdb::Vec3d(1.0, 1.0, 1.0));
+  for (int a = 0; a < 3; ++a) {
+    out.origin[a] = o[a];
+    out.spacing[a] = one[a] - o[a];
+    if (!std::isfinite(out.origin[a]) || !(out.spacing[a] > 0.0) || !std::isfinite(out.spacing[a]))
+      throw IoError(where + " has a transform with a non-positive or non-finite voxel size or origin");
+  }
+}
+
+template <class GridT>
+SparseSamples take_samples(const GridT& grid, const std::string& where) {
+  SparseSamples out;
+  take_transform(grid, out, where);
+  const auto& tree = grid.tree();
+  out.background = static_cast<double>(tree.background());
+  if (!std::isfinite(out.background)) throw IoError(where + " has a non-finite background value");
+  if (tree.leafCount() > kMaxVolumeSamples / kBrickVoxels)
+    throw IoError(where + " stores " + std::to_string(tree.leafCount()) +
+                  " leaves of 512 voxels: more than " + std::to_string(kMaxVolumeSamples) + " voxels");
+  const auto check = [&](double v, const openvdb::Coord& at) {
+    if (!std::isfinite(v))
+      throw IoError(where + " has a non-finite value at voxel (" + std::to_string(at.x()) + ", " +
+                    std::to_string(at.y()) + ", " + std::to_string(at.z()) + ")");
+  };
+  for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) {
+    std::vector<double> values(kBrickVoxels);
+    for (openvdb::Index n = 0; n < kBrickVoxels; ++n) {
+      values[n] = static_cast<double>(leaf->getValue(n));
+      check(values[n], leaf->offsetToGlobalCoord(n));
+    }
+    const openvdb::Coord o = leaf->origin();
+    out.leaves.emplace(Coord{o.x() >> kBrickShift, o.y() >> kBrickShift, o.z() >> kBrickShift},
+                       std::move(values));
+  }
+  auto it = tree.cbeginValueAll();
+  it.setMaxDepth(tree.treeDepth() - 2);  // tiles only: leaf voxels are at depth treeDepth() - 1
+  for (; it; ++it) {
+    if (!it.isTileValue()) continue;
+    const openvdb::CoordBBox b = it.getBoundingBox();
+    const openvdb::Coord d = b.dim();
+    int shift = 0;
+    while (shift < 31 && (std::int64_t{1} << shift) < d.x()) ++shift;
+    if (d.x() != d.y() || d.x() != d.z() || (std::int64_t{1} << shift) != d.x() || shift < kBrickShift)
+      throw IoError(where + " has a tile that is not an aligned cube of at least 8 voxels");
+    const double v = static_cast<double>(*it);
+    check(v, b.min());
+    if (v == out.background) continue;  // a lookup falls back to the background anyway
+    const openvdb::Coord m = b.min();
+    out.tiles[shift][{m.x() >> shift, m.y() >> shift, m.z() >> shift}] = v;
+  }
+  out.active_voxels = tree.activeVoxelCount();
+  if (out.active_voxels > 0) {
+    openvdb::CoordBBox box;
+    tree.evalActiveVoxelBoundingBox(box);
+    out.active_lo = {box.min().x(), box.min().y(), box.min().z()};
+    out.active_hi = {box.max().x(), box.max().y(), box.max().z()};
+  }
+  return out;
+}
+
+SparseSamples take(const openvdb::GridBase& g, const std::string& name) {
+  const std::string where = name + ": grid '" + g.getName() + "'";
+  if (g.isType<openvdb::FloatGrid>()) return take_samples(static_cast<const openvdb::FloatGrid&>(g), where);
+  if (g.isType<openvdb::DoubleGrid>()) return take_samples(static_cast<const openvdb::DoubleGrid&>(g), where);
+  throw IoError(where + " holds " + g.valueType() +
+                " values: want a float or double grid (a level set or a fog volume)");
+}
+
+/// Runs `read`, turning OpenVDB's and the allocator's exceptions into one-line IoErrors naming `name`.
+template <class F>
+auto guarded(const std::string& name, F&& read) {
+  try {
+    return read();
+  } catch (const Error&) {
+    throw;
+  } catch (const openvdb::Exception& e) {
+    throw IoError(name + ": not a readable OpenVDB file (" + std::string(e.what()) + ")");
+  } catch (const std::bad_alloc&) {
+    throw IoError(name + ": the file declares more data than memory holds (a corrupt file?)");
+  } catch (const std::exception& e) {
+    throw IoError(name + ": not a readable OpenVDB file (" + std::string(e.what()) + ")");
+  }
+}
+
+}  // namespace
+
+SparseSamples read_grid(const std::string& path, const std::string& grid, std::string& chosen) {
+  // Read whole and decoded as a stream: OpenVDB's file reader does not notice a file cut inside its
+  // last leaves, a stream that ran out of bytes does (decode_grid).
+  return decode_grid(file_bytes(path), grid, path, chosen);
+}
+
+SparseSamples decode_grid(std::string_view bytes, const std::string& grid, const std::string& name,
+                          std::string& chosen) {
+  initialize_openvdb();
+  check_magic(bytes, name);
+  prescan_vdb(bytes, name);
+  return guarded(name, [&] {
+    std::istringstream in{std::string(bytes)};
+    openvdb::io::Stream stream(in, false);
+    const openvdb::GridPtrVecPtr grids = stream.getGrids();
+    // OpenVDB does not check every read: a stream that ran out of bytes is a truncated file.
+    if (in.fail()) throw IoError(name + ": the file is truncated (it ends inside its grids)");
+    if (!grids) throw IoError(name + ": the file holds no grid");
+    const openvdb::GridBase::Ptr g = choose(*grids, grid, name);
+    chosen = g->getName();
+    return take(*g, name);
+  });
+}
+
+std::vector<VdbGridInfo> list_grids(const std::string& path) {
+  initialize_openvdb();
+  prescan_vdb(file_bytes(path), path);
+  return guarded(path, [&] {
+    openvdb::io::File file(path);
+    file.open(false);
+    std::vector<VdbGridInfo> out;
+    const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();  // alive through the loop
+    for (const auto& g : *grids) {
+      VdbGridInfo info{g->getName(), g->valueType(), grid_class(*g), 0};
+      const auto count = g->getMetadata<openvdb::Int64Metadata>(openvdb::GridBase::META_FILE_VOXEL_COUNT);
+      if (count && count->value() > 0) info.active_voxels = static_cast<std::uint64_t>(count->value());
+      out.push_back(std::move(info));
+    }
+    file.close();
+    return out;
+  });
+}
+
+}  // namespace isopatch::vdb

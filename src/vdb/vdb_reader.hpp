@@ -1,0 +1,24 @@
+#pragma once
+// Reading .vdb files with Debian's OpenVDB (libopenvdb-dev) into SparseSamples: grid choice, value
+// types, transforms and every refusal of vdb_surface.hpp. The only file that includes OpenVDB.
+
+#include <isopatch/vdb_surface.hpp>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "vdb/sparse_samples.hpp"
+
+namespace isopatch::vdb {
+
+/// The samples of the grid `grid` (empty: the one grid vdb_surface.hpp picks) of the file at `path`,
+/// and the grid's name in `chosen`. \throw IoError, InputError (setting "grid") as vdb_surface.hpp.
+SparseSamples read_grid(const std::string& path, const std::string& grid, std::string& chosen);
+/// The same from the bytes of a file; `name` stands for it in messages.
+SparseSamples decode_grid(std::string_view bytes, const std::string& grid, const std::string& name,
+                          std::string& chosen);
+/// The grids of the file at `path`. \throw IoError.
+std::vector<VdbGridInfo> list_grids(const std::string& path);
+
+}  // namespace isopatch::vdb
