@@ -24,6 +24,9 @@
 /// largest coefficient reaching a box, each gradient component between the smallest and largest
 /// difference of neighbours), from per-leaf summaries, and from the tiles' values by side.
 ///
+/// Reading: the file's layout is checked first, and OpenVDB reads the grid's tree in a forked child
+/// process (it overflows buffers on some corrupt files), which returns plain numbers through a pipe.
+///
 /// Refusals (one line naming the file): not an OpenVDB file, a truncated or malformed one, a grid that
 /// is not float or double, a rotated, sheared or perspective transform, NaN or infinite values, more than
 /// kMaxVolumeSamples stored voxels: IoError; no stored value crossing the level: NoSurfaceError; an

@@ -81,6 +81,10 @@ void prescan_vdb(std::string_view bytes, const std::string& name) {
   c.metadata("file metadata");
   // Then per grid its name, type and offsets, the grid itself right after them.
   const std::uint32_t grids = c.count(36, "list of grids");
+  if (!offsets && grids > 1)
+    throw IoError(name + ": " + std::to_string(grids) +
+                  " grids written as a stream (without grid offsets) are not supported: save them with "
+                  "OpenVDB's file writer (openvdb::io::File, pyopenvdb.write)");
   for (std::uint32_t g = 0; g < grids; ++g) {
     c.string("grid name");
     c.string("grid type");

@@ -1,6 +1,7 @@
 // .vdb files through OpenVDB into SparseSamples (vdb_reader.hpp).
 #include "vdb/vdb_reader.hpp"
 
+#include "vdb/isolated_read.hpp"
 #include "vdb/vdb_prescan.hpp"
 
 #include <isopatch/error.hpp>
@@ -19,6 +20,9 @@
 #include <new>
 #include <sstream>
 
+#include <sys/mman.h>
+#include <unistd.h>
+
 namespace isopatch::vdb {
 
 namespace {
@@ -35,6 +39,12 @@ void check_magic(std::string_view head, const std::string& name) {
   std::uint64_t magic = 0;
   if (head.size() >= sizeof magic) std::memcpy(&magic, head.data(), sizeof magic);
   if (magic != kMagic) throw IoError(name + ": not an OpenVDB file (no 'VDB' magic number at its start)");
+}
+
+/// Whether the file's grid list has offsets (the byte after its magic number, versions and library
+/// version), as OpenVDB's file writer makes it; a stream's has none. \pre the pre-scan passed.
+bool has_grid_offsets(std::string_view bytes) {
+  return bytes.size() > 20 && bytes[20] != 0;
 }
 
 /// \throw IoError for a file that cannot be opened or does not start as an OpenVDB file.
@@ -182,6 +192,16 @@ SparseSamples take(const openvdb::GridBase& g, const std::string& name) {
                 " values: want a float or double grid (a level set or a fog volume)");
 }
 
+/// OpenVDB's message, as one short line: a corrupt file's names can be long or hold line breaks.
+std::string short_line(const char* what) {
+  std::string s(what);
+  constexpr std::size_t kLongest = 200;
+  if (s.size() > kLongest) s = s.substr(0, kLongest) + "...";
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
 /// Runs `read`, turning OpenVDB's and the allocator's exceptions into one-line IoErrors naming `name`.
 template <class F>
 auto guarded(const std::string& name, F&& read) {
@@ -190,19 +210,19 @@ auto guarded(const std::string& name, F&& read) {
   } catch (const Error&) {
     throw;
   } catch (const openvdb::Exception& e) {
-    throw IoError(name + ": not a readable OpenVDB file (" + std::string(e.what()) + ")");
+    throw IoError(name + ": not a readable OpenVDB file (" + short_line(e.what()) + ")");
   } catch (const std::bad_alloc&) {
     throw IoError(name + ": the file declares more data than memory holds (a corrupt file?)");
   } catch (const std::exception& e) {
-    throw IoError(name + ": not a readable OpenVDB file (" + std::string(e.what()) + ")");
+    throw IoError(name + ": not a readable OpenVDB file (" + short_line(e.what()) + ")");
   }
 }
 
 }  // namespace
 
 SparseSamples read_grid(const std::string& path, const std::string& grid, std::string& chosen) {
-  // Read whole and decoded as a stream: OpenVDB's file reader does not notice a file cut inside its
-  // last leaves, a stream that ran out of bytes does (decode_grid).
+  // Read whole: the pre-scan checks every grid's offsets against the file's size (OpenVDB's own reader
+  // does not notice a file cut inside its last leaves), and the child reads these very bytes.
   return decode_grid(file_bytes(path), grid, path, chosen);
 }
 
@@ -211,16 +231,38 @@ SparseSamples decode_grid(std::string_view bytes, const std::string& grid, const
   initialize_openvdb();
   check_magic(bytes, name);
   prescan_vdb(bytes, name);
-  return guarded(name, [&] {
-    std::istringstream in{std::string(bytes)};
-    openvdb::io::Stream stream(in, false);
-    const openvdb::GridPtrVecPtr grids = stream.getGrids();
-    // OpenVDB does not check every read: a stream that ran out of bytes is a truncated file.
-    if (in.fail()) throw IoError(name + ": the file is truncated (it ends inside its grids)");
-    if (!grids) throw IoError(name + ": the file holds no grid");
-    const openvdb::GridBase::Ptr g = choose(*grids, grid, name);
-    chosen = g->getName();
-    return take(*g, name);
+  // The trees are read in a child process (isolated_read.hpp): OpenVDB overflows a node's buffer on
+  // some corrupt chunks. A file with grid offsets (what OpenVDB's file writer makes) is read as a file,
+  // each grid from the offsets the pre-scan checked (a stream reader would take whatever follows a
+  // corrupt grid for the next grid's name); a stream (one grid, the pre-scan sees to it) as a stream.
+  const bool offsets = has_grid_offsets(bytes);
+  return read_in_child(name, chosen, [&](std::string& grid_name) {
+    return guarded(name, [&] {
+      if (offsets) {
+        const int fd = ::memfd_create("isopatch-vdb", 0);
+        if (fd < 0) throw IoError(name + ": cannot hold the file in memory");
+        for (std::string_view rest = bytes; !rest.empty();) {
+          const ssize_t n = ::write(fd, rest.data(), rest.size());
+          if (n <= 0) throw IoError(name + ": cannot hold the file in memory");
+          rest.remove_prefix(static_cast<std::size_t>(n));
+        }
+        openvdb::io::File file("/proc/self/fd/" + std::to_string(fd));
+        file.open(false);
+        const openvdb::GridPtrVecPtr metadata = file.readAllGridMetadata();
+        grid_name = choose(*metadata, grid, name)->getName();
+        const openvdb::GridBase::Ptr g = file.readGrid(grid_name);
+        return take(*g, name);
+      }
+      std::istringstream in{std::string(bytes)};
+      openvdb::io::Stream stream(in, false);
+      const openvdb::GridPtrVecPtr grids = stream.getGrids();
+      // OpenVDB does not check every read: a stream that ran out of bytes is a truncated file.
+      if (in.fail()) throw IoError(name + ": the file is truncated (it ends inside its grids)");
+      if (!grids) throw IoError(name + ": the file holds no grid");
+      const openvdb::GridBase::Ptr g = choose(*grids, grid, name);
+      grid_name = g->getName();
+      return take(*g, name);
+    });
   });
 }
 

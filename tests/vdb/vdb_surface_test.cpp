@@ -7,12 +7,17 @@
 #include <isopatch/topology.hpp>
 #include <isopatch/vdb_surface.hpp>
 
+#include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetSphere.h>
 
+#include <unistd.h>
 #include <algorithm>
+
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -24,7 +29,21 @@ namespace {
 
 constexpr double kVoxel = 0.05;
 
+/// The grids as OpenVDB's file writer saves them (with grid offsets), read back as bytes.
 std::string bytes_of(const openvdb::GridPtrVec& grids) {
+  openvdb::initialize();
+  const std::string path = ::testing::TempDir() + "isopatch_vdb_test_" + std::to_string(::getpid()) + ".vdb";
+  openvdb::io::File(path).write(grids);
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  std::string bytes(static_cast<std::size_t>(in.tellg()), '\0');
+  in.seekg(0);
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  std::remove(path.c_str());
+  return bytes;
+}
+
+/// The same as OpenVDB's stream writer writes them (no grid offsets).
+std::string stream_bytes_of(const openvdb::GridPtrVec& grids) {
   openvdb::initialize();
   std::ostringstream out(std::ios_base::binary);
   openvdb::io::Stream(out).write(grids);
@@ -190,6 +209,12 @@ TEST(VdbSurface, RefusesWhatItCannotRead) {
   const std::string two =
       bytes_of({sphere(1.0f, {0.0f, 0.0f, 0.0f}, "a"), sphere(0.5f, {3.0f, 0.0f, 0.0f}, "b")});
   EXPECT_THROW(decode_vdb_surface(two), InputError);
+  // A stream of one grid reads as a file does; of two, it is refused (its second grid's place is known
+  // only once the first is read).
+  EXPECT_EQ(decode_vdb_surface(stream_bytes_of({sphere(1.0f, {0.0f, 0.0f, 0.0f})}))->value(Vec3(1, 0, 0)),
+            decode_vdb_surface(good)->value(Vec3(1, 0, 0)));
+  io_error(stream_bytes_of({sphere(1.0f, {0.0f, 0.0f, 0.0f}, "a"), sphere(0.5f, {3.0f, 0.0f, 0.0f}, "b")}),
+           "written as a stream");
   EXPECT_THROW(decode_vdb_surface(two, VdbSource{"c", 0.0, false}), InputError);
   EXPECT_EQ(decode_vdb_surface(two, VdbSource{"b", 0.0, false})->name(), "<memory>:b");
   EXPECT_THROW(vdb_surface("/nonexistent/model.vdb"), IoError);
