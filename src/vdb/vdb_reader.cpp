@@ -10,6 +10,7 @@
 #include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
+#include <openvdb/tools/Count.h>
 
 #include <array>
 #include <cmath>
@@ -174,7 +175,9 @@ SparseSamples take_samples(const GridT& grid, const std::string& where) {
     const openvdb::Coord m = b.min();
     out.tiles[shift][{m.x() >> shift, m.y() >> shift, m.z() >> shift}] = v;
   }
-  out.active_voxels = tree.activeVoxelCount();
+  // Counted on this thread: this runs in a forked child, where oneTBB's workers do not exist
+  // (Tree::activeVoxelCount() counts in parallel).
+  out.active_voxels = openvdb::tools::countActiveVoxels(tree, /*threaded=*/false);
   if (out.active_voxels > 0) {
     openvdb::CoordBBox box;
     tree.evalActiveVoxelBoundingBox(box);
