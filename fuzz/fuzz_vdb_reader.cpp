@@ -7,10 +7,17 @@
 // an absurd size throws std::bad_alloc, which the reader turns into an IoError; ASan's allocator aborts
 // instead. The replacement operators below give this target the plain process's behaviour: above
 // kLargest bytes new throws, below it memory comes from malloc (which ASan still checks).
+//
+// The library reads a grid's tree in a forked child (src/vdb/isolated_read.hpp), whose crash on a hostile
+// file is an IoError here. The child inherits libFuzzer's crash handlers, which would save its input as
+// a crash of this target: a fork handler takes them off in the child, so it dies quietly.
+#include <pthread.h>
+#include <sanitizer/common_interface_defs.h>
 #include <isopatch/error.hpp>
 #include <isopatch/vdb_surface.hpp>
 
 #include <cmath>
+#include <csignal>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -36,6 +43,12 @@ void* allocate_or_null(std::size_t n, std::size_t alignment = 0) noexcept {
     return nullptr;
   }
 }
+/// In a forked child: no death callback (libFuzzer's saves the input), default signal actions.
+void quiet_child() {
+  __sanitizer_set_death_callback(nullptr);
+  for (const int s : {SIGSEGV, SIGBUS, SIGABRT, SIGILL, SIGFPE}) std::signal(s, SIG_DFL);
+}
+const int kQuietChildren = pthread_atfork(nullptr, nullptr, quiet_child);
 }  // namespace
 
 // Every form of the replaceable global operators, so that no allocation pairs one of ours with ASan's.
