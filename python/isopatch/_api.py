@@ -194,7 +194,7 @@ def mesh_volume(
         spacing = file_spacing if spacing is None else spacing
         origin = file_origin if origin is None else origin
     else:
-        array = np.ascontiguousarray(volume, dtype=np.float64)
+        array = volume
     array = np.ascontiguousarray(array, dtype=np.float64)
     if inside == "above":  # the same surface with f's sign turned: outward normals for densities
         array, level = -array, -level

@@ -70,6 +70,14 @@ def meshes():
     return get
 
 
+def written(meshes, tmp_path, name, extension):
+    """The mesh of `name` and the file of it that Mesh.write made in `tmp_path`."""
+    mesh = meshes(name)
+    path = tmp_path / f"{name}.{extension}"
+    mesh.write(str(path))
+    return mesh, path
+
+
 def signed_volume(vertices, faces) -> float:
     a, b, c = (np.asarray(vertices, dtype=np.float64)[np.asarray(faces)[:, k]] for k in range(3))
     return float(np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0)
@@ -159,18 +167,14 @@ def expect_closed_manifold(o3d, path, mesh, ulps) -> None:
 @pytest.mark.parametrize("name", SURFACES)
 @pytest.mark.parametrize("extension", list(OPEN3D_ULPS))
 def test_open3d_reads_a_closed_manifold_of_the_meshs_volume(o3d, meshes, tmp_path, name, extension):
-    m = meshes(name)
-    path = tmp_path / f"{name}.{extension}"
-    m.write(str(path))
+    m, path = written(meshes, tmp_path, name, extension)
     expect_closed_manifold(o3d, path, m, OPEN3D_ULPS[extension])
 
 
 @pytest.mark.parametrize("name", SURFACES)
 @pytest.mark.parametrize("extension", list(MESHIO_ULPS))
 def test_meshio_reads_the_mesh(meshio_lib, meshes, tmp_path, name, extension):
-    m = meshes(name)
-    path = tmp_path / f"{name}.{extension}"
-    m.write(str(path))
+    m, path = written(meshes, tmp_path, name, extension)
     back = meshio_lib.read(str(path))
     assert list(back.cells_dict) == ["triangle"], path.name
     # meshio's STL reader merges the corners at equal positions itself.

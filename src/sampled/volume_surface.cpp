@@ -11,6 +11,7 @@
 #include "core/short_number.hpp"
 #include "sampled/bspline.hpp"
 #include "sampled/coefficient_bounds.hpp"
+#include "sampled/spline_surface.hpp"
 #include "volume/mapped_file.hpp"
 #include "volume/npy_reader.hpp"
 
@@ -51,26 +52,19 @@ void for_each_box(const std::vector<bspline::IndexRange>& x, const std::vector<b
 /// summaries (both give the same extremes).
 constexpr std::size_t kScanned = 4096;
 
-class VolumeSurface final : public Surface {
+class VolumeSurface final : public bspline::SplineSurface<VolumeSurface> {
  public:
   VolumeSurface(const Volume& grid, Coefficients coefficients, double level, std::string name)
-      : Surface(std::move(name), grid.extent()),
+      : SplineSurface(std::move(name), grid.extent()),
         shape_(grid.shape),
         spacing_(grid.spacing),
         origin_(grid.origin),
         level_(level),
         coefficients_(std::move(coefficients)) {}
 
-  double value(const Vec3& p) const override { return evaluate<0>(p).value; }
-  ValueGradient value_gradient(const Vec3& p) const override {
-    const SecondOrder s = evaluate<1>(p);
-    return {s.value, s.gradient};
-  }
-  SecondOrder second_order(const Vec3& p) const override { return evaluate<2>(p); }
-  std::optional<Interval> bound(const Box& box) const override { return hull(box, false).value; }
-  std::optional<IntervalGradient> gradient_bound(const Box& box) const override { return hull(box, true); }
-
  private:
+  friend class bspline::SplineSurface<VolumeSurface>;
+
   double coefficient(std::size_t i, std::size_t j, std::size_t k) const {
     return coefficients_.data[(i * shape_[1] + j) * shape_[2] + k];
   }

@@ -66,7 +66,7 @@ std::string encode(const SparseSamples& s, const std::string& chosen) {
   w.put_text(chosen);
   for (int a = 0; a < 3; ++a) w.put(s.spacing[a]);
   for (int a = 0; a < 3; ++a) w.put(s.origin[a]);
-  w.put(s.background);
+  w.put(s.tiles.background);
   for (const auto v : s.active_lo) w.put(v);
   for (const auto v : s.active_hi) w.put(v);
   w.put(s.active_voxels);
@@ -75,8 +75,8 @@ std::string encode(const SparseSamples& s, const std::string& chosen) {
     for (const auto v : key) w.put(v);
     w.out.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
   }
-  w.put<std::uint64_t>(s.tiles.size());
-  for (const auto& [shift, level] : s.tiles) {
+  w.put<std::uint64_t>(s.tiles.levels.size());
+  for (const auto& [shift, level] : s.tiles.levels) {
     w.put(shift);
     w.put<std::uint64_t>(level.size());
     for (const auto& [key, value] : level) {
@@ -119,7 +119,7 @@ SparseSamples decode(std::string_view bytes, std::string& chosen, const std::str
   chosen = r.get_text();
   for (int a = 0; a < 3; ++a) s.spacing[a] = r.get<double>();
   for (int a = 0; a < 3; ++a) s.origin[a] = r.get<double>();
-  s.background = r.get<double>();
+  s.tiles.background = r.get<double>();
   for (auto& v : s.active_lo) v = r.get<std::int64_t>();
   for (auto& v : s.active_hi) v = r.get<std::int64_t>();
   s.active_voxels = r.get<std::uint64_t>();
@@ -138,7 +138,7 @@ SparseSamples decode(std::string_view bytes, std::string& chosen, const std::str
     const int shift = r.get<int>();
     const auto count = r.get<std::uint64_t>();
     if (!r.ok || count > r.in.size() / (4 * sizeof(double))) malformed(name);
-    auto& level = s.tiles[shift];
+    auto& level = s.tiles.levels[shift];
     for (std::uint64_t i = 0; i < count; ++i) {
       Coord key{r.get<std::int64_t>(), r.get<std::int64_t>(), r.get<std::int64_t>()};
       level[key] = r.get<double>();

@@ -34,7 +34,7 @@ std::vector<double> padded_samples(const SparseSamples& samples, const Coord& br
     if (it != samples.leaves.end())
       leaf[n] = &it->second;
     else
-      constant[n] = samples.tile_or_background({key[0] * kBrick, key[1] * kBrick, key[2] * kBrick});
+      constant[n] = samples.tiles.value({key[0] * kBrick, key[1] * kBrick, key[2] * kBrick});
   }
   std::vector<double> out(static_cast<std::size_t>(kPadded * kPadded * kPadded));
   const auto part = [](std::int64_t p) { return p == 0 ? 0 : p <= kBrick ? 1 : 2; };
@@ -74,8 +74,7 @@ std::vector<double> filter_axis(const std::vector<double>& in, std::array<std::i
 
 }  // namespace
 
-SparseBspline::SparseBspline(SparseSamples&& samples, double level)
-    : background_(samples.background), level_(level) {
+SparseBspline::SparseBspline(SparseSamples&& samples, double level) : level_(level) {
   std::set<Coord> keys;
   for (const auto& [key, values] : samples.leaves)
     for (std::int64_t n = 0; n < 27; ++n)
@@ -92,28 +91,20 @@ SparseBspline::SparseBspline(SparseSamples&& samples, double level)
                    coefficients_.begin() + static_cast<std::ptrdiff_t>(i * kBrickVoxels),
                    [](double c) { return static_cast<float>(c); });
   });
-  samples.for_each_tile_value([this](double v) {
+  samples.tiles.for_each_value([this](double v) {
     Side& side = sides_[v < level_ ? 0 : 1];
     side.lo = side.present ? std::min(side.lo, v) : v;
     side.hi = side.present ? std::max(side.hi, v) : v;
     side.present = true;
   });
-  tiles_ = std::move(samples.tiles);  // what outside() looks up from here on
-  samples.tiles.clear();
+  tiles_ = std::move(samples.tiles);  // what coefficients outside the bricks are from here on
+  samples.tiles = {};
   summarise();
-}
-
-double SparseBspline::outside(const Coord& v) const {
-  for (const auto& [shift, level] : tiles_) {
-    const auto t = level.find({floor_shift(v[0], shift), floor_shift(v[1], shift), floor_shift(v[2], shift)});
-    if (t != level.end()) return t->second;
-  }
-  return background_;
 }
 
 double SparseBspline::coefficient(const Coord& v) const {
   const float* brick = find(brick_of(v));
-  return brick ? static_cast<double>(brick[brick_offset(v)]) : outside(v);
+  return brick ? static_cast<double>(brick[brick_offset(v)]) : tiles_.value(v);
 }
 
 void SparseBspline::summarise() {
@@ -170,7 +161,7 @@ std::vector<double> SparseBspline::gather(const Coord& lo, const Coord& hi) cons
     for (std::int64_t by = blo[1]; by <= bhi[1]; ++by)
       for (std::int64_t bz = blo[2]; bz <= bhi[2]; ++bz) {
         const float* brick = find({bx, by, bz});
-        const double constant = brick ? 0.0 : outside({bx * kBrick, by * kBrick, bz * kBrick});
+        const double constant = brick ? 0.0 : tiles_.value({bx * kBrick, by * kBrick, bz * kBrick});
         for (std::int64_t x = std::max(lo[0], bx * kBrick); x <= std::min(hi[0], bx * kBrick + kBrick - 1);
              ++x)
           for (std::int64_t y = std::max(lo[1], by * kBrick); y <= std::min(hi[1], by * kBrick + kBrick - 1);
@@ -271,14 +262,15 @@ SparseBspline::Hull SparseBspline::hull(const Coord& lo, const Coord& hi, bool g
   }
   Coord probe{};
   for (std::size_t a = 0; a < 3; ++a) probe[a] = std::max((*absent)[a] * kBrick, lo[a]);
-  const double v = outside(probe);
+  const double v = tiles_.value(probe);
   add_side(h, sides_[v < level_ ? 0 : 1], gradient);
   return h;
 }
 
 std::size_t SparseBspline::bytes() const {
   std::size_t tiles = 0;
-  for (const auto& [shift, level] : tiles_) tiles += level.size() * (sizeof(Coord) + sizeof(double) + 16);
+  for (const auto& [shift, level] : tiles_.levels)
+    tiles += level.size() * (sizeof(Coord) + sizeof(double) + 16);
   return coefficients_.size() * sizeof(float) + keys_.size() * (sizeof(Coord) + sizeof(Summary)) +
          index_.size() * (sizeof(Coord) + sizeof(std::uint32_t) + 16) + tiles;
 }

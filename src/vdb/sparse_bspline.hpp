@@ -47,7 +47,7 @@ class SparseBspline {
                       low_brick[1] + static_cast<std::int64_t>((n >> 1) & 1),
                       low_brick[2] + static_cast<std::int64_t>(n & 1)};
       brick[n] = find(key);
-      if (!brick[n]) constant[n] = outside({key[0] * kBrick, key[1] * kBrick, key[2] * kBrick});
+      if (!brick[n]) constant[n] = tiles_.value({key[0] * kBrick, key[1] * kBrick, key[2] * kBrick});
     }
     return bspline::tricubic<Order>(w, [&](std::size_t a, std::size_t b, std::size_t c) {
       const Coord v{first[0] + static_cast<std::int64_t>(a), first[1] + static_cast<std::int64_t>(b),
@@ -89,8 +89,6 @@ class SparseBspline {
     const auto it = index_.find(brick);
     return it == index_.end() ? nullptr : &coefficients_[static_cast<std::size_t>(it->second) * kBrickVoxels];
   }
-  /// The coefficient of a voxel outside every stored brick: its tile's value or the background.
-  double outside(const Coord& v) const;
   void summarise();
   /// The coefficients of the index box [lo, hi], x slowest.
   std::vector<double> gather(const Coord& lo, const Coord& hi) const;
@@ -102,8 +100,7 @@ class SparseBspline {
   std::unordered_map<Coord, std::uint32_t, CoordHash> index_;
   std::vector<float> coefficients_;  // kBrickVoxels per brick, in the order of keys_
   std::vector<Summary> summary_;
-  std::map<int, std::unordered_map<Coord, double, CoordHash>> tiles_;
-  double background_ = 0.0;
+  TileValues tiles_;  // the coefficients outside every stored brick
   double level_ = 0.0;
   std::array<Side, 2> sides_;  // 0: below the level, 1: at or above it
 };

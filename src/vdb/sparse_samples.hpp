@@ -40,31 +40,16 @@ inline std::size_t brick_offset(const Coord& voxel) {
   return static_cast<std::size_t>(((voxel[0] & 7) << 6) | ((voxel[1] & 7) << 3) | (voxel[2] & 7));
 }
 
-/// A grid's samples by voxel index, and how index space maps to space: voxel (i, j, k) sits at
-/// origin + (i, j, k) * spacing.
-struct SparseSamples {
-  Vec3 spacing = Vec3::Ones();
-  Vec3 origin = Vec3::Zero();
+/// What a grid holds outside its leaves: constant tiles, and the background everywhere else. The
+/// samples there and, unchanged by the filter, the spline's coefficients (sparse_bspline.hpp).
+struct TileValues {
   double background = 0.0;
-  /// Leaf bricks by brick coordinate (voxel >> 3), 512 values each.
-  std::unordered_map<Coord, std::vector<double>, CoordHash> leaves;
-  /// Constant tiles other than the background by size shift (log2 of the side) and tile coordinate
-  /// (voxel >> shift).
-  std::map<int, std::unordered_map<Coord, double, CoordHash>> tiles;
-  /// The smallest and largest index of an active voxel (valid when active_voxels > 0).
-  Coord active_lo{0, 0, 0}, active_hi{0, 0, 0};
-  std::uint64_t active_voxels = 0;
+  /// Tiles other than the background by size shift (log2 of the side) and tile coordinate (voxel >> shift).
+  std::map<int, std::unordered_map<Coord, double, CoordHash>> levels;
 
-  /// The sample of voxel `v`: its leaf's value, else its tile's, else the background.
-  double at(const Coord& v) const {
-    const auto leaf = leaves.find(
-        {floor_shift(v[0], kBrickShift), floor_shift(v[1], kBrickShift), floor_shift(v[2], kBrickShift)});
-    if (leaf != leaves.end()) return leaf->second[brick_offset(v)];
-    return tile_or_background(v);
-  }
   /// The value of voxel `v` outside every leaf: its tile's, else the background.
-  double tile_or_background(const Coord& v) const {
-    for (const auto& [shift, level] : tiles) {
+  double value(const Coord& v) const {
+    for (const auto& [shift, level] : levels) {
       const auto t =
           level.find({floor_shift(v[0], shift), floor_shift(v[1], shift), floor_shift(v[2], shift)});
       if (t != level.end()) return t->second;
@@ -72,11 +57,24 @@ struct SparseSamples {
     return background;
   }
   /// Calls f(value) with the background and every tile's value.
-  void for_each_tile_value(const std::function<void(double)>& f) const {
+  void for_each_value(const std::function<void(double)>& f) const {
     f(background);
-    for (const auto& [shift, level] : tiles)
-      for (const auto& [key, value] : level) f(value);
+    for (const auto& [shift, level] : levels)
+      for (const auto& [key, v] : level) f(v);
   }
+};
+
+/// A grid's samples by voxel index, and how index space maps to space: voxel (i, j, k) sits at
+/// origin + (i, j, k) * spacing.
+struct SparseSamples {
+  Vec3 spacing = Vec3::Ones();
+  Vec3 origin = Vec3::Zero();
+  /// Leaf bricks by brick coordinate (voxel >> 3), 512 values each.
+  std::unordered_map<Coord, std::vector<double>, CoordHash> leaves;
+  TileValues tiles;
+  /// The smallest and largest index of an active voxel (valid when active_voxels > 0).
+  Coord active_lo{0, 0, 0}, active_hi{0, 0, 0};
+  std::uint64_t active_voxels = 0;
 };
 
 }  // namespace isopatch::vdb

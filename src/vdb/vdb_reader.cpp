@@ -48,19 +48,10 @@ bool has_grid_offsets(std::string_view bytes) {
   return bytes.size() > 20 && bytes[20] != 0;
 }
 
-/// \throw IoError for a file that cannot be opened or does not start as an OpenVDB file.
-void check_file_magic(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open the file");
-  char head[8] = {};
-  in.read(head, sizeof head);
-  check_magic(std::string_view(head, static_cast<std::size_t>(in.gcount())), path);
-}
-
 /// The bytes of the file at `path`, checked for the magic number. \throw IoError.
 std::string file_bytes(const std::string& path) {
-  check_file_magic(path);
   std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw IoError(path + ": cannot open the file");
   const std::streamoff size = in.tellg();
   if (!in || size < 0) throw IoError(path + ": cannot read the file");
   if (static_cast<std::uint64_t>(size) > kMaxVolumeSamples * sizeof(double))
@@ -69,6 +60,7 @@ std::string file_bytes(const std::string& path) {
   std::string bytes(static_cast<std::size_t>(size), '\0');
   in.seekg(0);
   if (!in.read(bytes.data(), size)) throw IoError(path + ": cannot read the file");
+  check_magic(bytes, path);
   return bytes;
 }
 
@@ -139,8 +131,8 @@ SparseSamples take_samples(const GridT& grid, const std::string& where) {
   SparseSamples out;
   take_transform(grid, out, where);
   const auto& tree = grid.tree();
-  out.background = static_cast<double>(tree.background());
-  if (!std::isfinite(out.background)) throw IoError(where + " has a non-finite background value");
+  out.tiles.background = static_cast<double>(tree.background());
+  if (!std::isfinite(out.tiles.background)) throw IoError(where + " has a non-finite background value");
   if (tree.leafCount() > kMaxVolumeSamples / kBrickVoxels)
     throw IoError(where + " stores " + std::to_string(tree.leafCount()) +
                   " leaves of 512 voxels: more than " + std::to_string(kMaxVolumeSamples) + " voxels");
@@ -171,9 +163,9 @@ SparseSamples take_samples(const GridT& grid, const std::string& where) {
       throw IoError(where + " has a tile that is not an aligned cube of at least 8 voxels");
     const double v = static_cast<double>(*it);
     check(v, b.min());
-    if (v == out.background) continue;  // a lookup falls back to the background anyway
+    if (v == out.tiles.background) continue;  // a lookup falls back to the background anyway
     const openvdb::Coord m = b.min();
-    out.tiles[shift][{m.x() >> shift, m.y() >> shift, m.z() >> shift}] = v;
+    out.tiles.levels[shift][{m.x() >> shift, m.y() >> shift, m.z() >> shift}] = v;
   }
   // Counted on this thread: this runs in a forked child, where oneTBB's workers do not exist
   // (Tree::activeVoxelCount() counts in parallel).

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "core/short_number.hpp"
+#include "sampled/spline_surface.hpp"
 #include "vdb/sparse_bspline.hpp"
 #include "vdb/vdb_reader.hpp"
 
@@ -16,28 +17,21 @@ namespace isopatch {
 
 namespace {
 
-class VdbSurface final : public Surface {
+class VdbSurface final : public bspline::SplineSurface<VdbSurface> {
  public:
   VdbSurface(std::string name, const Box& box, vdb::SparseSamples&& samples, const VdbSource& source)
-      : Surface(std::move(name), box),
+      : SplineSurface(std::move(name), box),
         spacing_(samples.spacing),
         origin_(samples.origin),
         level_(source.level),
         sign_(source.inside_above ? -1.0 : 1.0),
         spline_(std::move(samples), source.level) {}
 
-  double value(const Vec3& p) const override { return evaluate<0>(p).value; }
-  ValueGradient value_gradient(const Vec3& p) const override {
-    const SecondOrder s = evaluate<1>(p);
-    return {s.value, s.gradient};
-  }
-  SecondOrder second_order(const Vec3& p) const override { return evaluate<2>(p); }
-  std::optional<Interval> bound(const Box& box) const override { return hull(box, false).value; }
-  std::optional<IntervalGradient> gradient_bound(const Box& box) const override { return hull(box, true); }
-
   std::size_t bytes() const { return spline_.bytes(); }
 
  private:
+  friend class bspline::SplineSurface<VdbSurface>;
+
   template <int Order>
   SecondOrder evaluate(const Vec3& p) const {
     std::array<double, 3> u{};
@@ -103,8 +97,8 @@ SurfacePtr make_surface(vdb::SparseSamples samples, const VdbSource& source, con
   const std::string where = file + ": grid '" + grid + "'";
   if (!std::isfinite(source.level)) throw InputError("the level must be finite", "level");
   if (samples.active_voxels == 0) throw NoSurfaceError(where + " has no active voxels");
-  double lo = samples.background, hi = samples.background;
-  samples.for_each_tile_value([&](double v) {
+  double lo = samples.tiles.background, hi = samples.tiles.background;
+  samples.tiles.for_each_value([&](double v) {
     lo = std::min(lo, v);
     hi = std::max(hi, v);
   });
