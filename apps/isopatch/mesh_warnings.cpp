@@ -40,6 +40,11 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
     std::fprintf(out,
                  "warning: creases of the shape leave the box: meshed as a smooth surface (creases rounded); "
                  "a box that holds the whole shape meshes it along its creases\n");
+  if (w.creases_in_partition > 0)
+    std::fprintf(
+        out,
+        "warning: the formula has creases but a region, given cells or a rotated frame (--region, --frame) "
+        "mesh it as a smooth surface (creases rounded); without them it is meshed along its creases\n");
   if (const auto& l = stats.local_sizes) {
     std::string where;
     if (l->sources > 0)

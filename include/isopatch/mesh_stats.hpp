@@ -145,6 +145,10 @@ struct MeshWarnings {
   Vec3 uncertain_crease_near = Vec3::Zero();  ///< the centre of the first of them
   /// CSG shapes: 1 when a crease leaves the box, so the shape was meshed as a smooth surface.
   std::size_t creases_leave_box = 0;
+  /// CSG shapes: 1 when a formula with creases was meshed as a smooth surface because a region, given
+  /// cells or a rotated frame were asked for (only a capped smooth solid or a polyhedron keeps its
+  /// creases there: docs/lattices.md).
+  std::size_t creases_in_partition = 0;
 };
 
 /// What the crease analysis of a CSG shape found (Settings::creases, docs/creases.md).
@@ -161,6 +165,10 @@ struct CreaseStats {
   std::size_t interval_cells = 0;
   std::size_t interval_creases = 0;
   std::size_t uncertain_cells = 0;
+  /// A smooth solid capped by a convex polyhedron (max(g, planes): a capped lattice): planar caps meshed
+  /// and the vertices on the creases (on g = 0 and a plane, or on two planes); 0 on the general path.
+  std::size_t caps = 0;
+  std::size_t crease_vertices = 0;
   double seconds = 0.0;  ///< of the analysis
 };
 

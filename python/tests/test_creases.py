@@ -45,3 +45,37 @@ def test_bad_creases_setting_and_bad_shapes():
     with pytest.raises(isopatch.CreaseError):
         isopatch.mesh("min(max(max(abs(x),abs(y)),abs(z))-1,max(max(abs(x-2),abs(y-2)),abs(z))-1)",
                       box=((-1.5, -1.5, -1.5), (3.5, 3.5, 1.5)))
+
+
+GYROID = "sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x)"
+
+
+@pytest.mark.parametrize("lattice", [GYROID, f"abs({GYROID})-0.4"], ids=["solid", "sheet"])
+def test_a_gyroid_capped_by_its_box_is_one_closed_part_with_planar_caps(lattice):
+    # docs/lattices.md: the cut surface closed by planar caps, the box's corners on the gyroid.
+    part = f"max({lattice},max(max(abs(x),abs(y)),abs(z))-pi)"
+    m = isopatch.mesh(part, box=((-3.3,) * 3, (3.3,) * 3), edge_length=0.2)
+    assert m.stats["creases"]["caps"] == 6 and m.stats["creases"]["crease_vertices"] > 0
+    v = m.vertices
+    assert np.max(np.abs(v)) <= np.pi + 1e-12
+    on_cap = np.isclose(np.max(np.abs(v), axis=1), np.pi, rtol=0, atol=1e-12)
+    assert on_cap.sum() > 100
+    x, y, z = v.T
+    values = np.maximum(np.sin(x) * np.cos(y) + np.sin(y) * np.cos(z) + np.sin(z) * np.cos(x)
+                        if lattice == GYROID else
+                        np.abs(np.sin(x) * np.cos(y) + np.sin(y) * np.cos(z) + np.sin(z) * np.cos(x)) - 0.4,
+                        np.max(np.abs(v), axis=1) - np.pi)
+    assert np.max(np.abs(values)) < 1e-9  # every vertex on the part's surface
+    report = m.analyze()
+    assert report["topology"]["watertight"] and report["topology"]["outward_oriented"]
+    assert report["valence"]["share_6"] >= 0.9
+
+
+def test_a_frame_keeps_a_polyhedrons_creases_and_says_when_it_drops_others():
+    m = isopatch.mesh(CUBE, box=BOX, frame=(30, 20, 10))
+    assert m.stats["creases"]["caps"] == 6
+    second = np.sort(np.abs(m.vertices), axis=1)[:, 1]
+    assert (second > 1 - 1e-12).sum() > 100  # the cube's edges, exactly
+    union = "min(max(max(abs(x),abs(y)),abs(z))-1,max(max(abs(x-1.5),abs(y)),abs(z-0.3))-0.5)"
+    smooth = isopatch.mesh(union, box=((-1.5, -1.5, -1.5), (2.5, 1.5, 1.5)), frame=(30, 20, 10), edge_length=0.15)
+    assert smooth.stats["warnings"]["creases_in_partition"] == 1

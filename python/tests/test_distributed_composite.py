@@ -113,8 +113,10 @@ def test_the_command_line_writes_a_composites_3mf_the_slicer_takes_as_one_manifo
     expect_one_manifold_part(part, vertices, faces)
 
 
-# A cube with a round hole through it: 14 creases, 8 corners, genus 1.
-HOLED_CUBE = "max(max(max(abs(x),abs(y)),abs(z))-1, 0.5-sqrt(x^2+y^2))"
+# A cube with a round hole through it: 14 creases, 8 corners, genus 1. Written as the complement of a
+# union so that one process meshes it on the general crease path, as blocks do (max(box, hole), a smooth
+# solid capped by planes, is meshed in one process as its cut surface closed by caps: docs/lattices.md).
+HOLED_CUBE = "-min(1-max(max(abs(x),abs(y)),abs(z)), sqrt(x^2+y^2)-0.5)"
 CUBE_BOX = ((-1.5, -1.5, -1.5), (1.5, 1.5, 1.5))
 
 

@@ -38,8 +38,10 @@ def check_part(path, volume: float) -> None:
 
 @pytest.mark.parametrize(
     "surface,box",
-    [("torus", None), ("max(max(abs(x),abs(y)),abs(z))-1", ((-1.5,) * 3, (1.5,) * 3))],
-    ids=["torus", "cube_with_creases"],
+    [("torus", None), ("max(max(abs(x),abs(y)),abs(z))-1", ((-1.5,) * 3, (1.5,) * 3)),
+     # A gyroid lattice capped by its box (docs/lattices.md): one closed part with sharp caps.
+     ("max(sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x),max(max(abs(x),abs(y)),abs(z))-pi)", ((-3.3,) * 3, (3.3,) * 3))],
+    ids=["torus", "cube_with_creases", "capped_gyroid"],
 )
 @pytest.mark.parametrize("extension", ["3mf", "stl"])
 def test_a_slicer_reads_one_manifold_part_of_the_meshs_volume(tmp_path, surface, box, extension):

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "api/capped_meshing.hpp"
 #include "api/crease_meshing.hpp"
 #include "api/curvature_feature_sizes.hpp"
 #include "api/cut_feature_sizes.hpp"
@@ -233,6 +234,14 @@ Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const 
 
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
   settings.validate();
+  // A smooth solid capped by planes is the cut surface closed by caps; where its caps cannot close (a
+  // plane tangent to the surface on the cut), the general crease path meshes it.
+  const MeshStats before = stats ? *stats : MeshStats{};
+  try {
+    if (std::optional<Mesh> capped = mesh_capped_shape(surface, settings, stats)) return std::move(*capped);
+  } catch (const CreaseError&) {
+    if (stats) *stats = before;
+  }
   CreasedMesh creased = mesh_along_creases(surface, settings, stats);
   if (creased.mesh) return std::move(*creased.mesh);
   Mesh mesh = run_in_task_arena(settings, stats, [&] {
@@ -242,6 +251,22 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
     return dispatch(budgeted, settings, stats);
   });
   if (stats && creased.creases_leave_box) stats->warnings.creases_leave_box = 1;
+  if (stats && !creased.creases_leave_box && settings.creases == Creases::Automatic && surface.expression() &&
+      settings.method == Method::Projection &&
+      (!settings.region.empty() || !settings.cells.empty() || settings.frame)) {
+    // Never a silent smooth mesh of a shape with creases: say that the partition's settings dropped them.
+    Settings plain = settings;
+    plain.region.clear();
+    plain.cells.clear();
+    plain.frame.reset();
+    plain.box = settings.box.value_or(surface.box());
+    try {
+      if (analyse_creases(surface, plain)) stats->warnings.creases_in_partition = 1;
+    } catch (const CreaseError&) {
+      stats->warnings.creases_in_partition = 1;
+    } catch (const Error&) {  // the check only informs: its budget or time running out changes nothing
+    }
+  }
   return mesh;
 }
 

@@ -129,6 +129,8 @@ void visit_stats(
     v("interval_cells", count(c->interval_cells));
     v("interval_creases", count(c->interval_creases));
     v("uncertain_cells", count(c->uncertain_cells));
+    v("caps", count(c->caps));
+    v("crease_vertices", count(c->crease_vertices));
     v("seconds", c->seconds);
   }
   const MeshWarnings& w = stats.warnings;
@@ -136,6 +138,7 @@ void visit_stats(
   if (stats.creases) v("exempt_corners", count(w.exempt_corners));
   if (stats.creases) v("uncertain_crease_cells", count(w.uncertain_crease_cells));
   if (w.creases_leave_box > 0) v("creases_leave_box", count(w.creases_leave_box));
+  if (w.creases_in_partition > 0) v("creases_in_partition", count(w.creases_in_partition));
   if (stats.projection) {
     v("doubtful_cells", count(w.doubtful_cells));
     v("doubtful_topology_cells", count(w.doubtful_topology_cells));

@@ -16,13 +16,6 @@ using test::mesh_csg;
 constexpr const char* kCube = "max(max(abs(x),abs(y)),abs(z))-1";
 const Box kCubeBox{Vec3::Constant(-1.5), Vec3::Constant(1.5)};
 
-double volume(const Mesh& mesh) {
-  double v = 0.0;
-  for (const Triangle& t : mesh.triangles)
-    v += mesh.positions[t[0]].dot(mesh.positions[t[1]].cross(mesh.positions[t[2]])) / 6.0;
-  return v;
-}
-
 TEST(CreaseMeshing, ACubeHasExactEdgesAndCornersAndGoodTriangles) {
   const test::CsgRun run = mesh_csg(kCube, kCubeBox);
   ASSERT_TRUE(run.stats.creases);
@@ -47,7 +40,7 @@ TEST(CreaseMeshing, ACubeHasExactEdgesAndCornersAndGoodTriangles) {
   EXPECT_LT(residual, 1e-9 * kCubeBox.diagonal());
   EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-12);
   // Flat faces: the volume is exact to rounding; the angles reach the floor.
-  EXPECT_NEAR(volume(run.mesh), 8.0, 1e-9);
+  EXPECT_NEAR(test::enclosed_volume(run.mesh), 8.0, 1e-9);
   EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0);
   EXPECT_EQ(run.stats.warnings.exempt_corners, 0u);
 }

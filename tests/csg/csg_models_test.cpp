@@ -28,13 +28,6 @@ struct Model {
   double edge = 0.0;  ///< edge length (0: the default)
 };
 
-double volume(const Mesh& mesh) {
-  double v = 0.0;
-  for (const Triangle& t : mesh.triangles)
-    v += mesh.positions[t[0]].dot(mesh.positions[t[1]].cross(mesh.positions[t[2]])) / 6.0;
-  return v;
-}
-
 double valence6_share(const Mesh& mesh) {
   const std::vector<int> v = test::valences(mesh);
   return static_cast<double>(std::count(v.begin(), v.end(), 6)) / static_cast<double>(v.size());
@@ -115,7 +108,7 @@ TEST_P(CsgModel, IsMeshedAlongItsCreases) {
   EXPECT_TRUE(t.watertight()) << m.name;
   EXPECT_TRUE(t.manifold()) << m.name;
   EXPECT_TRUE(t.consistently_oriented()) << m.name;
-  EXPECT_GT(volume(run.mesh), 0.0) << m.name << ": outward";
+  EXPECT_GT(test::enclosed_volume(run.mesh), 0.0) << m.name << ": outward";
   EXPECT_EQ(t.euler_characteristic, m.euler) << m.name;
   EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u) << m.name;
   const double diagonal = m.box.diagonal();
@@ -124,14 +117,18 @@ TEST_P(CsgModel, IsMeshedAlongItsCreases) {
   EXPECT_GT(near, 0u) << m.name;
   EXPECT_LT(residual, 1e-9 * diagonal) << m.name;
   EXPECT_EQ(run.stats.warnings.exempt_corners, 0u) << m.name;
-  // Certified: every place two faces may meet was explained.
-  EXPECT_GT(run.stats.creases->interval_cells, 0u) << m.name;
+  // Certified: every place two faces may meet was explained. A smooth solid capped by planes (the box
+  // minus a cylinder, the sphere and cube) is meshed as its cut surface closed by planar caps
+  // (docs/lattices.md): its creases are the cut's boundary, no analysis of face pairs is made.
+  if (run.stats.creases->caps == 0) {
+    EXPECT_GT(run.stats.creases->interval_cells, 0u) << m.name;
+  }
   EXPECT_EQ(run.stats.creases->uncertain_cells, 0u) << m.name;
   EXPECT_EQ(run.stats.warnings.uncertain_crease_cells, 0u) << m.name;
   EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0) << m.name;
   EXPECT_GE(valence6_share(run.mesh), 0.90) << m.name;
   if (m.volume > 0.0) {
-    EXPECT_NEAR(volume(run.mesh) / m.volume, 1.0, 1e-3) << m.name;
+    EXPECT_NEAR(test::enclosed_volume(run.mesh) / m.volume, 1.0, 1e-3) << m.name;
   }
 }
 
@@ -184,7 +181,7 @@ TEST(CsgExemptCorners, AWedgeOfTwentyDegreesIsCountedAndOnlyItsCornersMissTheFlo
   EXPECT_TRUE(t.watertight() && t.manifold() && t.consistently_oriented());
   EXPECT_EQ(t.euler_characteristic, 2);
   EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
-  EXPECT_NEAR(volume(run.mesh) / (2.0 * 0.5 * 1.8 * 0.364 * 1.8), 1.0, 1e-9);
+  EXPECT_NEAR(test::enclosed_volume(run.mesh) / (2.0 * 0.5 * 1.8 * 0.364 * 1.8), 1.0, 1e-9);
   const double h = target_sizes(Settings{}, box).largest;
   for (const Triangle& tri : run.mesh.triangles) {
     const Vec3 a = run.mesh.positions[tri[0]], b = run.mesh.positions[tri[1]], c = run.mesh.positions[tri[2]];

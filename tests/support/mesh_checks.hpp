@@ -25,6 +25,14 @@ inline double max_vertex_distance(const Surface& s, const Mesh& mesh) {
   return worst;
 }
 
+/// The volume a closed, outward mesh encloses (the divergence theorem over its triangles).
+inline double enclosed_volume(const Mesh& mesh) {
+  double v = 0.0;
+  for (const Triangle& t : mesh.triangles)
+    v += mesh.positions[t[0]].dot(mesh.positions[t[1]].cross(mesh.positions[t[2]])) / 6.0;
+  return v;
+}
+
 /// The vertices of the boundary edges (edges of exactly one triangle), ascending.
 inline std::set<std::uint32_t> boundary_vertices(const Mesh& mesh) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;

@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The lattice catalogue of docs/lattices.md: each TPMS as a solid (f < 0) and a sheet (|f| - t < 0)
+# capped by the box of two periods, meshed at 1/60 of the part's side; prints one Markdown row per part
+# (whole-process seconds timed from outside, vertices, watertight/manifold/outward, self-intersections,
+# smallest angle, valence-6 share) or the exit code and message of a refusal.
+# Usage: bench/lattice_catalogue.sh [ISOPATCH_BIN] [SHEET_T]   (default build-test/bin/isopatch, 0.3)
+set -uo pipefail
+bin="${1:-build-test/bin/isopatch}"
+t="${2:-0.3}"
+out="$(mktemp -d)"
+trap 'rm -rf "$out"' EXIT
+declare -A tpms=(
+  [gyroid]="sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x)"
+  [diamond]="sin(x)*sin(y)*sin(z)+sin(x)*cos(y)*cos(z)+cos(x)*sin(y)*cos(z)+cos(x)*cos(y)*sin(z)"
+  [schwarz_p]="cos(x)+cos(y)+cos(z)"
+  [neovius]="3*(cos(x)+cos(y)+cos(z))+4*cos(x)*cos(y)*cos(z)"
+  [iwp]="2*(cos(x)*cos(y)+cos(y)*cos(z)+cos(z)*cos(x))-(cos(2*x)+cos(2*y)+cos(2*z))"
+)
+cap="max(max(abs(x),abs(y)),abs(z))-2*pi"
+edge=0.20944  # 4 pi / 60
+echo "| part | kind | exit | seconds (whole) | vertices | closed, manifold, outward | self-intersections | smallest angle | valence 6 |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for name in gyroid diamond schwarz_p neovius iwp; do
+  f="${tpms[$name]}"
+  for kind in solid sheet; do
+    if [ "$kind" = solid ]; then part="max($f,$cap)"; else part="max(abs($f)-$t,$cap)"; fi
+    start=$(date +%s%N)
+    "$bin" mesh "$part" --box -6.6,-6.6,-6.6,6.6,6.6,6.6 --edge-length "$edge" -q -o "$out/m.ply" 2>"$out/err"
+    rc=$?
+    ms=$(( ($(date +%s%N) - start) / 1000000 ))
+    seconds="$((ms / 1000)).$(printf %03d $((ms % 1000)))"
+    if [ "$rc" != 0 ]; then
+      echo "| $name | $kind | $rc | $(printf %.1f "$seconds") | - | $(tail -n 1 "$out/err" | cut -c1-120) | | | |"
+      continue
+    fi
+    report=$("$bin" analyze "$out/m.ply")
+    vertices=$(echo "$report" | sed -n 's/.*: \([0-9,]*\) vertices.*/\1/p' | head -n 1)
+    closed=$(echo "$report" | sed -n 's/.*watertight \([a-z]*\), manifold \([a-z]*\).*outward \([a-z]*\).*/\1, \2, \3/p')
+    self=$(echo "$report" | sed -n 's/.*self-intersections \(.*\)/\1/p')
+    angle=$(echo "$report" | sed -n 's/^min angle *min \([0-9.]*\).*/\1/p')
+    valence=$(echo "$report" | sed -n 's/.*: \([0-9.]*%\) of valence 6.*/\1/p')
+    echo "| $name | $kind | 0 | $(printf %.1f "$seconds") | $vertices | $closed | $self | $angle | $valence |"
+  done
+done

@@ -1,0 +1,28 @@
+#pragma once
+// A smooth solid capped by a convex polyhedron, f = max(g, p_1, ..., p_k) (csg/capped_shape.hpp),
+// meshed as g = 0 cut open by the polyhedron's planes (the smooth mesher with the planes as its
+// region: exact boundaries on them, the multiresolution refinement inside) and closed by planar caps
+// (planar_caps.hpp): the lattice parts people print (a gyroid capped by its box), whose faces of high
+// genus the general crease path cannot cut into discs. docs/lattices.md.
+
+#include <isopatch/mesh.hpp>
+#include <isopatch/mesh_stats.hpp>
+#include <isopatch/settings.hpp>
+#include <isopatch/surface.hpp>
+
+#include <optional>
+
+namespace isopatch {
+
+/// The mesh of `surface` as a capped smooth solid, or nullopt when it is not one: not a formula, not of
+/// the form max(g, planes) (capped_shape.hpp), creases off, another method, a region or given cells, a
+/// polyhedron that leaves the box, g with creases of its own inside the box, or a polyhedron alone
+/// outside a rotated frame (the general crease path meshes those). A frame rotates the cut's partition;
+/// a polyhedron alone is its caps. The mesh is closed, outward, with every vertex of the cut on g = 0 and its
+/// plane (on both planes at the polyhedron's edges) and the caps' vertices on their planes; `stats`
+/// holds the smooth run's statistics with the caps added (MeshStats::creases).
+/// \throw CreaseError naming the place when the caps cannot close the cut (a plane tangent to g = 0 on
+///        a cut edge, curves crossing); the errors of mesh_surface().
+std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats);
+
+}  // namespace isopatch

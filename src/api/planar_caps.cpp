@@ -1,0 +1,297 @@
+// Planar caps closing a smooth surface cut open by a convex polyhedron (planar_caps.hpp).
+#include "api/planar_caps.hpp"
+
+#include <isopatch/error.hpp>
+#include <isopatch/remesh.hpp>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "api/cap_wedges.hpp"
+#include "api/facet_polygons.hpp"
+#include "csg/face_set.hpp"
+#include "planar/lattice_points.hpp"
+#include "planar/region_triangulation.hpp"
+#include "remesh/remesh_presets.hpp"
+
+namespace isopatch {
+
+namespace {
+
+using Edge = std::array<std::uint32_t, 2>;
+
+/// A cap's lattice points keep this share of an edge from its boundary (the clean-up evens the band).
+constexpr double kLatticeClearance = 0.5;
+/// A cap's corner narrower than this (degrees) keeps one triangle: two would halve its angle under the
+/// 25 degree floor (cap_wedges.hpp).
+constexpr double kNarrowCorner = 60.0;
+
+std::string where(const Vec3& p) {
+  return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) + ")";
+}
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return (static_cast<std::uint64_t>(a) << 32) | b;
+}
+
+/// The mesh's boundary edges, directed as their one triangle runs them, in triangle order.
+std::vector<Edge> boundary_edges(const Mesh& mesh) {
+  std::unordered_set<std::uint64_t> directed;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) directed.insert(edge_key(t[static_cast<std::size_t>(k)], t[(k + 1) % 3]));
+  std::vector<Edge> out;
+  for (const Triangle& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = t[static_cast<std::size_t>(k)], b = t[(k + 1) % 3];
+      if (!directed.count(edge_key(b, a))) out.push_back({a, b});
+    }
+  return out;
+}
+
+/// The exact bits of a position: boundary vertices keep them through the cap's clean-up.
+struct PositionHash {
+  std::size_t operator()(const Vec3& p) const {
+    std::uint64_t h = 1469598103934665603ULL;
+    for (int k = 0; k < 3; ++k) h = (h ^ std::bit_cast<std::uint64_t>(p[k])) * 1099511628211ULL;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+/// The pieces of the polyhedron's edges inside the solid, sampled once: chains of vertex ids from the
+/// side's first corner towards its second, shared by the two faces beside it.
+struct EdgeChains {
+  Vec3 from, to;
+  std::vector<std::vector<std::uint32_t>> chains;
+};
+
+class CapBuilder {
+ public:
+  CapBuilder(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, const Box& box, double edge,
+             double tolerance, const Settings& settings)
+      : mesh_(mesh),
+        smooth_(smooth),
+        planes_(planes),
+        box_(box),
+        edge_(edge),
+        tol_(tolerance),
+        settings_(settings),
+        boundary_(boundary_edges(mesh)),
+        assigned_(boundary_.size(), 0) {
+    for (const Edge& e : boundary_)
+      for (std::uint32_t v : e)
+        if (seen_.insert(v).second) cut_vertices_.push_back(v);
+  }
+
+  CapReport run() {
+    const std::vector<FacetPolygon> facets = facet_polygons(planes_, box_);
+    CapReport report;
+    report.crease_vertices = cut_vertices_.size();
+    const std::size_t before = mesh_.positions.size();
+    for (std::size_t i = 0; i < facets.size(); ++i)
+      if (!facets[i].corners.empty() && cap(static_cast<int>(i), facets[i])) ++report.caps;
+    for (std::size_t e = 0; e < boundary_.size(); ++e)
+      if (assigned_[e] != 1)
+        throw CreaseError("the cut of the smooth part has an edge on " + std::to_string(assigned_[e]) +
+                          " of the capping planes near " + where(mesh_.positions[boundary_[e][0]]) +
+                          " (a plane tangent to the surface there?); --creases off meshes it as a smooth "
+                          "surface");
+    drop_unused_vertices(before);
+    // The caps' vertices in the attributes of the cut (--vertex-roles: made by the caps' clean-up).
+    for (VertexAttribute& a : mesh_.attributes)
+      a.values.resize(mesh_.positions.size(), a.name == "role" ? 5.0f : 0.0f);
+    report.cap_vertices = mesh_.positions.size() - before;
+    report.crease_vertices += edge_vertices_;
+    return report;
+  }
+
+ private:
+  Mesh& mesh_;
+  const Surface* smooth_;
+  const ConvexRegion& planes_;
+  const Box& box_;
+  double edge_, tol_;
+  const Settings& settings_;
+  std::vector<Edge> boundary_;
+  std::vector<int> assigned_;
+  std::unordered_set<std::uint32_t> seen_;
+  std::vector<std::uint32_t> cut_vertices_;
+  std::vector<std::pair<Vec3, std::uint32_t>> corners_;
+  std::map<std::pair<int, int>, EdgeChains> chains_;
+  std::size_t edge_vertices_ = 0;
+
+  /// Removes the vertices from `first` on that no triangle uses (a corner of the polyhedron outside the
+  /// solid), renumbering the rest in order.
+  void drop_unused_vertices(std::size_t first) {
+    std::vector<bool> used(mesh_.positions.size(), false);
+    for (const Triangle& t : mesh_.triangles)
+      for (std::uint32_t v : t) used[v] = true;
+    std::vector<std::uint32_t> id(mesh_.positions.size());
+    std::size_t kept = first;
+    for (std::size_t v = 0; v < mesh_.positions.size(); ++v) {
+      if (v >= first && !used[v]) continue;
+      id[v] = static_cast<std::uint32_t>(v < first ? v : kept);
+      if (v >= first) mesh_.positions[kept++] = mesh_.positions[v];
+    }
+    mesh_.positions.resize(kept);
+    for (Triangle& t : mesh_.triangles)
+      for (std::uint32_t& v : t) v = id[v];
+  }
+
+  std::uint32_t add_vertex(const Vec3& p) {
+    mesh_.positions.push_back(p);
+    return static_cast<std::uint32_t>(mesh_.positions.size() - 1);
+  }
+
+  /// One vertex per corner of the polyhedron, however many faces compute it: the cut's own vertex where
+  /// g = 0 passes through the corner (a gyroid through the corners of a box of whole periods).
+  std::uint32_t corner(const Vec3& p) {
+    for (const auto& [q, id] : corners_)
+      if ((q - p).norm() <= tol_) return id;
+    for (std::uint32_t v : cut_vertices_)
+      if ((mesh_.positions[v] - p).norm() <= tol_) {
+        corners_.emplace_back(p, v);
+        return v;
+      }
+    corners_.emplace_back(p, add_vertex(p));
+    ++edge_vertices_;
+    return corners_.back().second;
+  }
+
+  bool on(int plane, const Vec3& p) const {
+    return std::abs(plane_value(planes_[static_cast<std::size_t>(plane)], p)) <= tol_;
+  }
+
+  /// The chains of the side from `a` to `b` on planes i and j, made on first use.
+  const EdgeChains& side_chains(int i, int j, const Vec3& a, const Vec3& b) {
+    const auto key = std::minmax(i, j);
+    auto it = chains_.find(key);
+    if (it != chains_.end()) return it->second;
+    EdgeChains out{a, b, {}};
+    const Vec3 d = b - a;
+    // The cut's vertices on this edge of the polyhedron split it where g changes sign.
+    std::vector<std::pair<double, std::uint32_t>> stops{{0.0, corner(a)}, {1.0, corner(b)}};
+    for (std::uint32_t v : cut_vertices_) {
+      const Vec3& p = mesh_.positions[v];
+      if (!on(i, p) || !on(j, p)) continue;
+      const double t = (p - a).dot(d) / d.squaredNorm();
+      if (t > 0.0 && t < 1.0 && v != stops[0].second && v != stops[1].second) stops.emplace_back(t, v);
+    }
+    std::sort(stops.begin(), stops.end());
+    for (std::size_t k = 0; k + 1 < stops.size(); ++k) {
+      const Vec3 p = mesh_.positions[stops[k].second], q = mesh_.positions[stops[k + 1].second];
+      if (smooth_ && !(smooth_->value(0.5 * (p + q)) < 0.0)) continue;
+      std::vector<std::uint32_t> chain{stops[k].second};
+      const auto n = std::max<long>(1, std::lround((q - p).norm() / edge_));
+      for (long s = 1; s < n; ++s) {
+        chain.push_back(add_vertex(p + (static_cast<double>(s) / static_cast<double>(n)) * (q - p)));
+        ++edge_vertices_;
+      }
+      chain.push_back(stops[k + 1].second);
+      out.chains.push_back(std::move(chain));
+    }
+    return chains_.emplace(key, std::move(out)).first->second;
+  }
+
+  /// The directed segments bounding the cap of plane i (the cap on their left seen along its normal).
+  std::vector<Edge> cap_segments(int i, const FacetPolygon& facet) {
+    std::vector<Edge> out;
+    const std::size_t n = facet.corners.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const Vec3& a = facet.corners[k];
+      const Vec3& b = facet.corners[(k + 1) % n];
+      if (facet.across[k] < 0)
+        throw CreaseError("the capping planes reach the box near " + where(a) +
+                          ": a box holding the whole part meshes it along its creases");
+      const EdgeChains& side = side_chains(i, facet.across[k], a, b);
+      const bool forward = (side.from - a).norm() <= (side.from - b).norm();
+      for (const auto& chain : side.chains)
+        for (std::size_t s = 0; s + 1 < chain.size(); ++s)
+          out.push_back(forward ? Edge{chain[s], chain[s + 1]} : Edge{chain[s + 1], chain[s]});
+    }
+    for (std::size_t e = 0; e < boundary_.size(); ++e) {
+      const Vec3& p = mesh_.positions[boundary_[e][0]];
+      const Vec3& q = mesh_.positions[boundary_[e][1]];
+      if (!on(i, p) || !on(i, q)) continue;
+      ++assigned_[e];
+      out.push_back({boundary_[e][1], boundary_[e][0]});
+    }
+    return out;
+  }
+
+  /// Meshes the cap of plane i; false when the solid does not meet the plane.
+  bool cap(int i, const FacetPolygon& facet) {
+    const std::vector<Edge> segments = cap_segments(i, facet);
+    if (segments.empty()) return false;
+    const HalfSpace& h = planes_[static_cast<std::size_t>(i)];
+    const Vec3 normal(h.a, h.b, h.c);
+    const Vec3 u = (std::abs(normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(normal).normalized();
+    const Vec3 v = normal.cross(u);
+    const Vec3 origin = facet.corners.front();
+    // The cap's own numbering: its boundary vertices, then the lattice inside.
+    std::unordered_map<std::uint32_t, std::uint32_t> local;
+    std::vector<std::uint32_t> global;
+    planar::Region region;
+    for (const Edge& s : segments) {
+      Edge l{};
+      for (int k = 0; k < 2; ++k) {
+        const std::uint32_t g = s[static_cast<std::size_t>(k)];
+        auto [it, added] = local.emplace(g, static_cast<std::uint32_t>(global.size()));
+        if (added) {
+          global.push_back(g);
+          const Vec3 d = mesh_.positions[g] - origin;
+          region.points.emplace_back(d.dot(u), d.dot(v));
+        }
+        l[static_cast<std::size_t>(k)] = it->second;
+      }
+      region.segments.push_back(l);
+    }
+    const std::vector<planar::Vec2> inner =
+        planar::interior_lattice_points(region, edge_, kLatticeClearance * edge_);
+    Mesh cap;
+    for (std::uint32_t g : global) cap.positions.push_back(mesh_.positions[g]);
+    for (const planar::Vec2& p : inner) cap.positions.push_back(origin + p.x() * u + p.y() * v);
+    for (const auto& t : planar::triangulate_region(region, inner)) cap.triangles.push_back(t);
+    clean_up(cap, normal, h.d);
+    // Boundary vertices are held by the clean-up, bit for bit: they keep their ids.
+    std::unordered_map<Vec3, std::uint32_t, PositionHash> held;
+    for (std::uint32_t g : global) held.emplace(mesh_.positions[g], g);
+    std::vector<bool> on_boundary(cap.positions.size());
+    for (std::size_t k = 0; k < cap.positions.size(); ++k) on_boundary[k] = held.count(cap.positions[k]) > 0;
+    open_narrow_corners(cap, on_boundary, normal, kNarrowCorner);
+    std::vector<std::uint32_t> id(cap.positions.size());
+    for (std::size_t k = 0; k < cap.positions.size(); ++k) {
+      const auto it = held.find(cap.positions[k]);
+      id[k] = it != held.end() ? it->second : add_vertex(cap.positions[k]);
+    }
+    for (const Triangle& t : cap.triangles) mesh_.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
+    return true;
+  }
+
+  /// The surface-bound clean-up on the cap's plane with its boundary held.
+  void clean_up(Mesh& cap, const Vec3& normal, double d) {
+    RemeshSettings r = preset_remesh_settings(settings_, kDefaultRemeshIterations);
+    r.sizes.largest = edge_;
+    r.sizes.smallest = edge_;
+    r.hold_cut = true;
+    const SurfacePtr plane = plane_surface(normal, -d, box_);
+    remesh_on_surface(cap, *plane, r);
+  }
+};
+
+}  // namespace
+
+CapReport close_with_caps(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, const Box& box,
+                          double edge, double tolerance, const Settings& settings) {
+  return CapBuilder(mesh, smooth, planes, box, edge, tolerance, settings).run();
+}
+
+}  // namespace isopatch

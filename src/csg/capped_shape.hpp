@@ -1,0 +1,34 @@
+#pragma once
+// A smooth solid capped by a convex polyhedron, read from its formula: f = max(g, p_1, ..., p_k) with
+// every p_i affine (a plane) and g the one operand that is not. That is how lattice parts are written
+// (a gyroid capped by its box: max(gyroid, max(max(abs(x), abs(y)), abs(z)) - a)), and such a shape is
+// meshed as g = 0 cut open by the polyhedron, closed by planar caps (api/capped_meshing.hpp), which
+// needs no cut of g's face into discs, whatever its genus (docs/lattices.md).
+
+#include <isopatch/convex_region.hpp>
+#include <isopatch/geometry.hpp>
+#include <isopatch/surface.hpp>
+
+#include <optional>
+
+namespace isopatch {
+
+/// f split into the smooth operand and the caps' planes.
+struct CappedShape {
+  SurfacePtr smooth;    ///< g: f where the planes do not decide it (a formula of its own); null for a
+                        ///< polyhedron (every operand a plane)
+  ConvexRegion planes;  ///< unit normals (a, b, c) pointing out of the solid; p_i = n . x + d
+};
+
+/// The most planes a capped shape may have (a polyhedron of more faces is meshed the general way).
+inline constexpr std::size_t kMaxCapPlanes = 64;
+
+/// Splits `f` when it is max(g, p_1, ..., p_k): a tree of max whose leaves are reached through
+/// increasing steps only (adding a constant, multiplying or dividing by a positive one), `abs` of an
+/// affine operand counting as the max of it and its negation, with exactly one leaf that is not affine
+/// and 1..kMaxCapPlanes affine ones, or with every leaf affine (a polyhedron, `smooth` null). Returns nullopt
+/// for any other formula (nothing is evaluated but the planes' coefficients; `f` without an expression gives
+/// nullopt). Duplicate planes are kept once. g is a formula surface over `box`.
+std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box);
+
+}  // namespace isopatch
