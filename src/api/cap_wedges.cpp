@@ -1,4 +1,4 @@
-// Narrow corners of a planar cap (cap_wedges.hpp).
+// Narrow corners at a held boundary (cap_wedges.hpp).
 #include "api/cap_wedges.hpp"
 
 #include <algorithm>
@@ -9,6 +9,8 @@
 #include <set>
 
 #include "core/triangle_angle.hpp"
+#include "surface/project_point.hpp"
+#include "surface/sampler.hpp"
 
 namespace isopatch {
 
@@ -27,8 +29,8 @@ double angle_at(const Vec3& at, const Vec3& a, const Vec3& b) {
 
 class Corners {
  public:
-  Corners(Mesh& cap, const std::vector<bool>& held, const Vec3& normal)
-      : cap_(cap), held_(held), normal_(normal), around_(cap.positions.size()) {
+  Corners(Mesh& cap, const Surface& surface, const std::vector<bool>& held, double tolerance)
+      : cap_(cap), f_(surface), held_(held), tolerance_(tolerance), around_(cap.positions.size()) {
     for (std::size_t t = 0; t < cap.triangles.size(); ++t)
       for (std::uint32_t v : cap.triangles[t]) around_[v].insert(t);
   }
@@ -36,12 +38,16 @@ class Corners {
   void open(double narrow) {
     std::set<std::uint32_t> freed;
     for (std::uint32_t v = 0; v < cap_.positions.size(); ++v) {
-      if (!held_[v] || around_[v].size() < 2 || span(v) >= narrow) continue;
+      if (!held_[v] || around_[v].size() < 2) continue;
+      const double angle = span(v);
+      if (angle >= narrow) continue;
+      // The triangles the corner's angle holds at about 60 degrees each.
+      const std::size_t want = std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(angle / 60.0)));
       // Flip the inner edges at v while one's quadrilateral is convex; where none is, relax the free
       // vertices at v first (a vertex just inside the line of v's neighbours makes its quadrilateral
       // concave).
-      for (int attempt = 0; attempt < kFlipAttempts && around_[v].size() > 1; ++attempt) {
-        for (bool flipped = true; flipped && around_[v].size() > 1;) {
+      for (int attempt = 0; attempt < kFlipAttempts && around_[v].size() > want; ++attempt) {
+        for (bool flipped = true; flipped && around_[v].size() > want;) {
           flipped = false;
           for (std::size_t t : std::set<std::size_t>(around_[v]))
             if (flip_next_edge(v, t, freed)) {
@@ -58,13 +64,16 @@ class Corners {
 
  private:
   Mesh& cap_;
+  Sampler f_;
   const std::vector<bool>& held_;
-  Vec3 normal_;
+  double tolerance_;
   std::vector<std::set<std::size_t>> around_;
 
   const Vec3& at(std::uint32_t v) const { return cap_.positions[v]; }
+  /// Twice the triangle's area about grad f at its centroid: > 0 when it faces along the surface.
   double area(std::uint32_t a, std::uint32_t b, std::uint32_t c) const {
-    return (at(b) - at(a)).cross(at(c) - at(a)).dot(normal_);
+    const Vec3 normal = f_.value_gradient((at(a) + at(b) + at(c)) / 3.0).gradient.normalized();
+    return (at(b) - at(a)).cross(at(c) - at(a)).dot(normal);
   }
 
   /// The angle the cap spans at v (its triangles' angles there, summed).
@@ -113,6 +122,7 @@ class Corners {
     const Vec3 start = at(w), middle = 0.5 * (at(a) + at(b));
     for (const double share : {0.3, 0.6}) {
       cap_.positions[w] = middle + share * (middle - at(v));
+      if (!settle(w, start)) continue;
       bool upright = area(a, w, b) > 0.0;
       for (std::size_t t : around_[w]) {
         const Triangle& tri = cap_.triangles[t];
@@ -122,6 +132,12 @@ class Corners {
     }
     cap_.positions[w] = start;
     return false;
+  }
+
+  /// Puts w back on f = 0 (Newton steps no longer than its move from `from`).
+  bool settle(std::uint32_t w, const Vec3& from) {
+    const double step = (cap_.positions[w] - from).norm() + tolerance_;
+    return project_to_surface(f_, cap_.positions[w], tolerance_, step);
   }
 
   double smallest_angle_around(std::uint32_t w) const {
@@ -152,6 +168,7 @@ class Corners {
     const double before = smallest_angle_around(w);
     for (const double step : kRelaxSteps) {
       cap_.positions[w] = start + step * (centroid - start);
+      if (!settle(w, start)) continue;
       bool upright = true;
       for (std::size_t t : around_[w]) {
         const Triangle& tri = cap_.triangles[t];
@@ -165,9 +182,9 @@ class Corners {
 
 }  // namespace
 
-void open_narrow_corners(Mesh& cap, const std::vector<bool>& held, const Vec3& normal,
-                         double narrow_degrees) {
-  Corners(cap, held, normal).open(narrow_degrees);
+void open_narrow_corners(Mesh& mesh, const Surface& surface, const std::vector<bool>& held, double narrow_degrees,
+                         double tolerance) {
+  Corners(mesh, surface, held, tolerance).open(narrow_degrees);
 }
 
 }  // namespace isopatch

@@ -31,9 +31,11 @@ using Edge = std::array<std::uint32_t, 2>;
 
 /// A cap's lattice points keep this share of an edge from its boundary (the clean-up evens the band).
 constexpr double kLatticeClearance = 0.5;
-/// A cap's corner narrower than this (degrees) keeps one triangle: two would halve its angle under the
-/// 25 degree floor (cap_wedges.hpp).
-constexpr double kNarrowCorner = 60.0;
+/// A corner of the cut or a cap narrower than this (degrees) keeps one triangle per 60 degrees of it:
+/// more would split its angle under the 25 degree floor (cap_wedges.hpp).
+constexpr double kNarrowCorner = 150.0;
+/// A vertex moved there is put back on its surface to this share of the on-plane tolerance.
+constexpr double kSettle = 1e-5;
 
 std::string where(const Vec3& p) {
   return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) + ")";
@@ -92,6 +94,12 @@ class CapBuilder {
   }
 
   CapReport run() {
+    // The cut's own narrow corners, where it meets a polyhedron edge or corner (cap_wedges.hpp).
+    if (smooth_) {
+      std::vector<bool> held(mesh_.positions.size(), false);
+      for (std::uint32_t v : cut_vertices_) held[v] = true;
+      open_narrow_corners(mesh_, *smooth_, held, kNarrowCorner, kSettle * tol_);
+    }
     const std::vector<FacetPolygon> facets = facet_polygons(planes_, box_);
     CapReport report;
     report.crease_vertices = cut_vertices_.size();
@@ -260,13 +268,14 @@ class CapBuilder {
     for (std::uint32_t g : global) cap.positions.push_back(mesh_.positions[g]);
     for (const planar::Vec2& p : inner) cap.positions.push_back(origin + p.x() * u + p.y() * v);
     for (const auto& t : planar::triangulate_region(region, inner)) cap.triangles.push_back(t);
-    clean_up(cap, normal, h.d);
+    const SurfacePtr plane = plane_surface(normal, -h.d, box_);
+    clean_up(cap, *plane);
     // Boundary vertices are held by the clean-up, bit for bit: they keep their ids.
     std::unordered_map<Vec3, std::uint32_t, PositionHash> held;
     for (std::uint32_t g : global) held.emplace(mesh_.positions[g], g);
     std::vector<bool> on_boundary(cap.positions.size());
     for (std::size_t k = 0; k < cap.positions.size(); ++k) on_boundary[k] = held.count(cap.positions[k]) > 0;
-    open_narrow_corners(cap, on_boundary, normal, kNarrowCorner);
+    open_narrow_corners(cap, *plane, on_boundary, kNarrowCorner, kSettle * tol_);
     std::vector<std::uint32_t> id(cap.positions.size());
     for (std::size_t k = 0; k < cap.positions.size(); ++k) {
       const auto it = held.find(cap.positions[k]);
@@ -277,13 +286,12 @@ class CapBuilder {
   }
 
   /// The surface-bound clean-up on the cap's plane with its boundary held.
-  void clean_up(Mesh& cap, const Vec3& normal, double d) {
+  void clean_up(Mesh& cap, const Surface& plane) {
     RemeshSettings r = preset_remesh_settings(settings_, kDefaultRemeshIterations);
     r.sizes.largest = edge_;
     r.sizes.smallest = edge_;
     r.hold_cut = true;
-    const SurfacePtr plane = plane_surface(normal, -d, box_);
-    remesh_on_surface(cap, *plane, r);
+    remesh_on_surface(cap, plane, r);
   }
 };
 
