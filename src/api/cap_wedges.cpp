@@ -182,8 +182,8 @@ class Corners {
 
 }  // namespace
 
-void open_narrow_corners(Mesh& mesh, const Surface& surface, const std::vector<bool>& held, double narrow_degrees,
-                         double tolerance) {
+void open_narrow_corners(Mesh& mesh, const Surface& surface, const std::vector<bool>& held,
+                         double narrow_degrees, double tolerance) {
   Corners(mesh, surface, held, tolerance).open(narrow_degrees);
 }
 

@@ -20,7 +20,7 @@ namespace isopatch {
 /// on f = 0 to `tolerance`, where that raises the smallest angle of its triangles. Held vertices never
 /// move; no triangle turns over.
 /// 	hrow EvaluationError where f or grad f is not finite.
-void open_narrow_corners(Mesh& mesh, const Surface& surface, const std::vector<bool>& held, double narrow_degrees,
-                         double tolerance);
+void open_narrow_corners(Mesh& mesh, const Surface& surface, const std::vector<bool>& held,
+                         double narrow_degrees, double tolerance);
 
 }  // namespace isopatch

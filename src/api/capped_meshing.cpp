@@ -42,6 +42,13 @@ bool inside(const ConvexRegion& planes, const Box& box, double margin) {
   return any;
 }
 
+/// Whether the polyhedron of `planes` has a face inside `box`.
+bool meets(const ConvexRegion& planes, const Box& box) {
+  for (const FacetPolygon& facet : facet_polygons(planes, box))
+    if (!facet.corners.empty()) return true;
+  return false;
+}
+
 /// Refuses caps that could hold more vertices than Settings::max_vertices (the faces' whole areas at the
 /// equilateral lattice's density): the smooth mesher's own estimate covers the cut surface.
 void check_cap_size(const ConvexRegion& planes, const Box& box, double edge, std::size_t max_vertices) {
@@ -71,11 +78,13 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
   const Box box = settings.box.value_or(surface.box());
   std::optional<CappedShape> shape = split_capped_shape(surface, box);
   if (!shape) return std::nullopt;
-  if (!inside(shape->planes, box, kOnPlane * box.diagonal())) return std::nullopt;
+  // A polyhedron that leaves the box is cut open by it: the part's boundary lies on the box's faces.
+  const bool closed = inside(shape->planes, box, kOnPlane * box.diagonal());
+  if (!closed && !meets(shape->planes, box)) return std::nullopt;
   const SurfacePtr& smooth = shape->smooth;
-  // A polyhedron is the general crease path's but in a rotated frame, which that path cannot take: its
-  // caps alone mesh it there, whatever the frame.
-  if (!smooth && !settings.frame) return std::nullopt;
+  // A polyhedron is the general crease path's, except in a rotated frame or cut open by the box, which
+  // that path cannot take: its caps alone mesh it there.
+  if (!smooth && closed && !settings.frame) return std::nullopt;
   Settings open = settings;
   open.box = box;
   open.frame.reset();
@@ -88,7 +97,7 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
   // length stays that of the given box.
   const double edge = default_edge_length(settings, box);
   check_cap_size(shape->planes, box, edge, settings.max_vertices);
-  if (!inside(shape->planes, box, -2.0 * edge)) {
+  if (closed && !inside(shape->planes, box, -2.0 * edge)) {
     if (!settings.edge_length) open.edge_length = edge;
     open.box = Box{box.lo - Vec3::Constant(2.0 * edge), box.hi + Vec3::Constant(2.0 * edge)};
   }
@@ -104,14 +113,20 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
   const CapReport caps = run_in_task_arena(settings, stats, [&] {
     CapReport added = close_with_caps(mesh, smooth.get(), shape->planes, cut_box, edge,
                                       kOnPlane * box.diagonal(), settings);
-    // Triangles at the creases, which both sides' clean-ups hold, brought over the floor on the faces.
-    repair = repair_crease_angles(mesh, faces, box);
+    // Triangles at the creases, which both sides' clean-ups hold, brought over the floor on the faces;
+    // the vertices on the box's faces stay there.
+    std::vector<std::uint8_t> held(mesh.vertex_count(), 0);
+    for (std::size_t v = 0; v < held.size(); ++v)
+      held[v] = box.contains(mesh.positions[v], -kOnPlane * box.diagonal()) ? 0 : 1;
+    repair = repair_crease_angles(mesh, faces, box, &held);
     return added;
   });
   const TopologyReport topology = analyze_topology(mesh);
-  if (!topology.watertight() || !topology.manifold() || !topology.consistently_oriented())
+  if (topology.boundary_edges != caps.open_edges + caps.open_cap_edges || !topology.manifold() ||
+      !topology.consistently_oriented())
     throw CreaseError("the capped shape's mesh is not a closed 2-manifold (" +
-                      std::to_string(topology.boundary_edges) + " boundary edges, " +
+                      std::to_string(topology.boundary_edges - caps.open_edges - caps.open_cap_edges) +
+                      " boundary edges off the box, " +
                       std::to_string(topology.non_manifold_edges + topology.non_manifold_vertices) +
                       " non-manifold places): a cap plane tangent to the surface or a feature narrower "
                       "than an edge; a smaller --edge-length, or --creases off for a smooth mesh");

@@ -107,7 +107,10 @@ class CapBuilder {
     for (std::size_t i = 0; i < facets.size(); ++i)
       if (!facets[i].corners.empty() && cap(static_cast<int>(i), facets[i])) ++report.caps;
     for (std::size_t e = 0; e < boundary_.size(); ++e)
-      if (assigned_[e] != 1)
+      if (assigned_[e] == 0 &&
+          box_faces(mesh_.positions[boundary_[e][0]]) & box_faces(mesh_.positions[boundary_[e][1]]))
+        ++report.open_edges;  // the box cuts the part open there
+      else if (assigned_[e] != 1)
         throw CreaseError("the cut of the smooth part has an edge on " + std::to_string(assigned_[e]) +
                           " of the capping planes near " + where(mesh_.positions[boundary_[e][0]]) +
                           " (a plane tangent to the surface there?); --creases off meshes it as a smooth "
@@ -118,6 +121,7 @@ class CapBuilder {
       a.values.resize(mesh_.positions.size(), a.name == "role" ? 5.0f : 0.0f);
     report.cap_vertices = mesh_.positions.size() - before;
     report.crease_vertices += edge_vertices_;
+    report.open_cap_edges = open_cap_edges_;
     return report;
   }
 
@@ -135,6 +139,7 @@ class CapBuilder {
   std::vector<std::pair<Vec3, std::uint32_t>> corners_;
   std::map<std::pair<int, int>, EdgeChains> chains_;
   std::size_t edge_vertices_ = 0;
+  std::size_t open_cap_edges_ = 0;
 
   /// Removes the vertices from `first` on that no triangle uses (a corner of the polyhedron outside the
   /// solid), renumbering the rest in order.
@@ -174,11 +179,24 @@ class CapBuilder {
     return corners_.back().second;
   }
 
+  /// The faces of the box p lies on, one bit each (axis * 2, + 1 for the upper one).
+  unsigned box_faces(const Vec3& p) const {
+    unsigned faces = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (std::abs(p[axis] - box_.lo[axis]) <= tol_) faces |= 1u << (2 * axis);
+      if (std::abs(p[axis] - box_.hi[axis]) <= tol_) faces |= 1u << (2 * axis + 1);
+    }
+    return faces;
+  }
+
+  /// Whether p lies on plane `plane` (>= 0), or on box face -1 - plane (< 0).
   bool on(int plane, const Vec3& p) const {
+    if (plane < 0) return (box_faces(p) >> (-1 - plane)) & 1u;
     return std::abs(plane_value(planes_[static_cast<std::size_t>(plane)], p)) <= tol_;
   }
 
-  /// The chains of the side from `a` to `b` on planes i and j, made on first use.
+  /// The chains of the side from `a` to `b` on planes i and j (j < 0: box face -1 - j, a side only
+  /// cap i has: the box cuts the part open along it), made on first use.
   const EdgeChains& side_chains(int i, int j, const Vec3& a, const Vec3& b) {
     const auto key = std::minmax(i, j);
     auto it = chains_.find(key);
@@ -216,14 +234,19 @@ class CapBuilder {
     for (std::size_t k = 0; k < n; ++k) {
       const Vec3& a = facet.corners[k];
       const Vec3& b = facet.corners[(k + 1) % n];
-      if (facet.across[k] < 0)
-        throw CreaseError("the capping planes reach the box near " + where(a) +
-                          ": a box holding the whole part meshes it along its creases");
-      const EdgeChains& side = side_chains(i, facet.across[k], a, b);
+      int across = facet.across[k];
+      if (across < 0) {
+        const unsigned face = box_faces(a) & box_faces(b);
+        if (face == 0) throw CreaseError("a cap's side on the box lies on no face of it near " + where(a));
+        across = -1 - std::countr_zero(face);
+      }
+      const EdgeChains& side = side_chains(i, across, a, b);
       const bool forward = (side.from - a).norm() <= (side.from - b).norm();
       for (const auto& chain : side.chains)
-        for (std::size_t s = 0; s + 1 < chain.size(); ++s)
+        for (std::size_t s = 0; s + 1 < chain.size(); ++s) {
           out.push_back(forward ? Edge{chain[s], chain[s + 1]} : Edge{chain[s + 1], chain[s]});
+          if (across < 0) ++open_cap_edges_;
+        }
     }
     for (std::size_t e = 0; e < boundary_.size(); ++e) {
       const Vec3& p = mesh_.positions[boundary_[e][0]];

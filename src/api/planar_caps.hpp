@@ -19,16 +19,19 @@ struct CapReport {
   std::size_t caps = 0;             ///< planes with a cap
   std::size_t crease_vertices = 0;  ///< vertices on g = 0 and a plane, or on two planes
   std::size_t cap_vertices = 0;     ///< vertices added (polyhedron edges and cap interiors)
+  std::size_t open_edges = 0;       ///< boundary edges of the cut left open on the box's faces
+  std::size_t open_cap_edges = 0;   ///< boundary edges of the caps on the box's faces
 };
 
 /// Closes `mesh`, a mesh of g = 0 (`smooth`, triangles along grad g; null for a polyhedron: `mesh`
 /// empty and every face a whole cap) cut open by `planes` (unit
 /// normals out of the solid; every boundary vertex on a plane to `tolerance`, those where the cut turns
 /// from one plane to the next on both), with one cap per plane that the solid g <= 0 meets, oriented
-/// along the plane's normal, at edge length `edge`. `settings` give the clean-up's preset; `box` the
-/// extent of the planes' polygons (the polyhedron must lie in it).
-/// \throw CreaseError naming the place when a boundary edge lies on no plane, the polyhedron leaves the
-///        box, or a cap's boundary does not bound a region (curves crossing, not closing).
+/// along the plane's normal, at edge length `edge`. `settings` give the clean-up's preset; `box` clips
+/// the planes' polygons: where the polyhedron leaves it, the box cuts the part open (the cut's boundary
+/// edges on the box's faces and the caps' sides there stay boundary, exactly on those faces).
+/// \throw CreaseError naming the place when a boundary edge lies on no plane or box face, or a cap's
+///        boundary does not bound a region (curves crossing, not closing).
 CapReport close_with_caps(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, const Box& box,
                           double edge, double tolerance, const Settings& settings);
 

@@ -202,6 +202,36 @@ TEST(CappedLattice, CreasesOffMeshesTheFormulaAsASmoothSurface) {
   EXPECT_FALSE(run.stats.creases);
 }
 
+TEST(CappedLattice, APolyhedronLeavingTheBoxIsCutOpenByItWithItsCreasesExact) {
+  // A gyroid under the plane z = 1 in a box the plane does not close: the box cuts the part open.
+  const std::string part = "max(" + kCapGyroid + ",z-1)";
+  const CappedRun run = mesh_capped(part, 3.0, 0.15);
+  ASSERT_TRUE(run.stats.creases);
+  EXPECT_EQ(run.stats.creases->caps, 1u);
+  const TopologyReport t = analyze_topology(run.mesh);
+  EXPECT_GT(t.boundary_edges, 0u);
+  EXPECT_TRUE(t.manifold() && t.consistently_oriented());
+  EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
+  const double diagonal = capped_box(3.0).diagonal();
+  EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-9 * diagonal);
+  for (std::uint32_t v : test::boundary_vertices(run.mesh)) {
+    const Vec3& p = run.mesh.positions[v];
+    EXPECT_LT((p.cwiseAbs() - Vec3::Constant(3.0)).cwiseAbs().minCoeff(), 1e-12)
+        << "boundary vertex off the box";
+  }
+  // The crease z = 1: every vertex on the plane and on the gyroid is on both.
+  const std::vector<SurfacePtr> faces{expression_surface(kCapGyroid, capped_box(3.0)),
+                                      expression_surface("z-1", capped_box(3.0))};
+  std::size_t crease = 0;
+  for (const Vec3& p : run.mesh.positions)
+    if (std::abs(p.z() - 1.0) < 1e-9 && std::abs(faces[0]->value(p)) < 1e-6) {
+      ++crease;
+      EXPECT_LT(std::abs(faces[0]->value(p)) / faces[0]->value_gradient(p).gradient.norm(), 1e-9 * diagonal);
+    }
+  EXPECT_GT(crease, 20u);
+  EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0);
+}
+
 /// Vertices on two or more of the unit cube's faces (its creases and corners).
 std::size_t cube_crease_vertices(const Mesh& mesh) {
   std::size_t count = 0;

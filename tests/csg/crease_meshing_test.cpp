@@ -93,11 +93,19 @@ TEST(CreaseMeshing, BadShapesGetClearErrors) {
   EXPECT_THROW(mesh_csg("min(max(max(abs(x),abs(y)),abs(z))-1,x^2+y^2+(z-1.5)^2-0.25)",
                         Box{Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 2.2)}),
                CreaseError);
-  // Creases that leave the box: meshed as a smooth surface (an open mesh, as before), with a warning.
+  // Creases that leave the box: a polyhedron is cut open by the box along its creases (its caps, open
+  // on the box's face: docs/lattices.md), nothing to warn about.
   const test::CsgRun open = mesh_csg(kCube, Box{Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 0.5)});
-  EXPECT_FALSE(open.stats.creases);
-  EXPECT_EQ(open.stats.warnings.creases_leave_box, 1u);
+  ASSERT_TRUE(open.stats.creases);
+  EXPECT_EQ(open.stats.creases->caps, 5u);
+  EXPECT_EQ(open.stats.warnings.creases_leave_box, 0u);
   EXPECT_GT(open.mesh.triangle_count(), 100u);
+  for (std::uint32_t v : test::boundary_vertices(open.mesh)) EXPECT_EQ(open.mesh.positions[v].z(), 0.5);
+  // A formula whose creases leave the box and that is no capped solid: a smooth surface, with a warning.
+  const test::CsgRun smooth = mesh_csg("min(" + std::string(kCube) + ",x^2+y^2+(z-1)^2-0.25)",
+                                       Box{Vec3(-1.5, -1.5, -1.5), Vec3(1.5, 1.5, 0.5)});
+  EXPECT_FALSE(smooth.stats.creases);
+  EXPECT_EQ(smooth.stats.warnings.creases_leave_box, 1u);
 }
 
 }  // namespace
