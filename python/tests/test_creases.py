@@ -79,3 +79,12 @@ def test_a_frame_keeps_a_polyhedrons_creases_and_says_when_it_drops_others():
     union = "min(max(max(abs(x),abs(y)),abs(z))-1,max(max(abs(x-1.5),abs(y)),abs(z-0.3))-0.5)"
     smooth = isopatch.mesh(union, box=((-1.5, -1.5, -1.5), (2.5, 1.5, 1.5)), frame=(30, 20, 10), edge_length=0.15)
     assert smooth.stats["warnings"]["creases_in_partition"] == 1
+
+
+def test_a_region_half_space_cuts_a_cube_open_along_its_creases():
+    m = isopatch.mesh(CUBE, box=BOX, region="1,0,0,-0.5", edge_length=0.1)
+    assert m.stats["creases"]["caps"] == 5
+    assert np.max(m.vertices[:, 0]) <= 0.5 + 1e-12
+    report = m.analyze()
+    assert not report["topology"]["watertight"] and report["topology"]["boundary_edges"] > 0
+    assert report["shape"]["min_angle_degrees"]["min"] >= 25.0

@@ -19,6 +19,7 @@
 #include "api/task_arena_run.hpp"
 #include "csg/capped_shape.hpp"
 #include "csg/face_set.hpp"
+#include "projection/convex_meshing.hpp"
 
 namespace isopatch {
 
@@ -42,10 +43,11 @@ bool inside(const ConvexRegion& planes, const Box& box, double margin) {
   return any;
 }
 
-/// Whether the polyhedron of `planes` has a face inside `box`.
-bool meets(const ConvexRegion& planes, const Box& box) {
-  for (const FacetPolygon& facet : facet_polygons(planes, box))
-    if (!facet.corners.empty()) return true;
+/// Whether one of the first `capped` planes bounds a face of the polyhedron of `planes` inside `box`.
+bool meets(const ConvexRegion& planes, std::size_t capped, const Box& box) {
+  const std::vector<FacetPolygon> facets = facet_polygons(planes, box);
+  for (std::size_t i = 0; i < capped; ++i)
+    if (!facets[i].corners.empty()) return true;
   return false;
 }
 
@@ -71,16 +73,25 @@ void check_cap_size(const ConvexRegion& planes, const Box& box, double edge, std
 }  // namespace
 
 std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats) {
-  if (settings.creases == Creases::Off || settings.method != Method::Projection || !settings.region.empty() ||
-      !settings.cells.empty() || !surface.expression())
+  if (settings.creases == Creases::Off || settings.method != Method::Projection || !settings.cells.empty() ||
+      !surface.expression())
     return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
-  const Box box = settings.box.value_or(surface.box());
+  // A region decides the box when none is given (as for any surface: convex_meshing.hpp).
+  const Box box =
+      settings.box ? *settings.box : convex_meshing_box(surface, settings).value_or(surface.box());
   std::optional<CappedShape> shape = split_capped_shape(surface, box);
   if (!shape) return std::nullopt;
-  // A polyhedron that leaves the box is cut open by it: the part's boundary lies on the box's faces.
-  const bool closed = inside(shape->planes, box, kOnPlane * box.diagonal());
-  if (!closed && !meets(shape->planes, box)) return std::nullopt;
+  // The part's planes, then the region's (unit normals): the region cuts the part open like the box.
+  const std::size_t capped = shape->planes.size();
+  ConvexRegion planes = shape->planes;
+  for (const HalfSpace& h : settings.region) {
+    const double n = Vec3(h.a, h.b, h.c).norm();
+    planes.push_back({h.a / n, h.b / n, h.c / n, h.d / n});
+  }
+  // A polyhedron that leaves the box (or the region) is cut open by it: the part's boundary lies there.
+  const bool closed = settings.region.empty() && inside(shape->planes, box, kOnPlane * box.diagonal());
+  if (!closed && !meets(planes, capped, box)) return std::nullopt;
   const SurfacePtr& smooth = shape->smooth;
   // A polyhedron is the general crease path's, except in a rotated frame or cut open by the box, which
   // that path cannot take: its caps alone mesh it there.
@@ -88,6 +99,7 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
   Settings open = settings;
   open.box = box;
   open.frame.reset();
+  open.region.clear();
   // g with creases of its own (struts joined by min, say) is a shape for the general crease path.
   if (smooth && analyse_creases(*smooth, open)) return std::nullopt;
   open.frame = settings.frame;
@@ -101,7 +113,7 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
     if (!settings.edge_length) open.edge_length = edge;
     open.box = Box{box.lo - Vec3::Constant(2.0 * edge), box.hi + Vec3::Constant(2.0 * edge)};
   }
-  open.region = shape->planes;
+  open.region = planes;
   open.creases = Creases::Off;
   Mesh mesh = smooth ? mesh_surface(*smooth, open, stats) : Mesh{};
   const auto caps_start = std::chrono::steady_clock::now();
@@ -111,13 +123,18 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
   for (const HalfSpace& h : shape->planes) faces.push_back(plane_surface(Vec3(h.a, h.b, h.c), -h.d, box));
   AngleRepair repair;
   const CapReport caps = run_in_task_arena(settings, stats, [&] {
-    CapReport added = close_with_caps(mesh, smooth.get(), shape->planes, cut_box, edge,
+    CapReport added = close_with_caps(mesh, smooth.get(), planes, capped, cut_box, edge,
                                       kOnPlane * box.diagonal(), settings);
     // Triangles at the creases, which both sides' clean-ups hold, brought over the floor on the faces;
-    // the vertices on the box's faces stay there.
+    // the vertices on the box's faces or the region's planes stay there.
     std::vector<std::uint8_t> held(mesh.vertex_count(), 0);
-    for (std::size_t v = 0; v < held.size(); ++v)
-      held[v] = box.contains(mesh.positions[v], -kOnPlane * box.diagonal()) ? 0 : 1;
+    for (std::size_t v = 0; v < held.size(); ++v) {
+      const Vec3& p = mesh.positions[v];
+      bool on_cut = !box.contains(p, -kOnPlane * box.diagonal());
+      for (std::size_t j = capped; j < planes.size() && !on_cut; ++j)
+        on_cut = std::abs(plane_value(planes[j], p)) <= kOnPlane * box.diagonal();
+      held[v] = on_cut ? 1 : 0;
+    }
     repair = repair_crease_angles(mesh, faces, box, &held);
     return added;
   });

@@ -15,11 +15,12 @@
 namespace isopatch {
 
 /// The mesh of `surface` as a capped smooth solid, or nullopt when it is not one: not a formula, not of
-/// the form max(g, planes) (capped_shape.hpp), creases off, another method, a region or given cells, a
-/// polyhedron that leaves the box, g with creases of its own inside the box, or a polyhedron alone
-/// outside a rotated frame (the general crease path meshes those). A frame rotates the cut's partition;
-/// a polyhedron alone is its caps. The mesh is closed, outward, with every vertex of the cut on g = 0 and its
-/// plane (on both planes at the polyhedron's edges) and the caps' vertices on their planes; `stats`
+/// the form max(g, planes) (capped_shape.hpp), creases off, another method, given cells, no face of
+/// the part in the box and region, g with creases of its own inside the box, or a polyhedron alone
+/// in the box and outside a frame and a region (the general crease path meshes those). A frame
+/// rotates the cut's partition; a polyhedron alone is its caps; the box and a region cut the part open
+/// (its boundary exactly on their faces). The mesh is closed, outward, with every vertex of the cut on g = 0
+/// and its plane (on both planes at the polyhedron's edges) and the caps' vertices on their planes; `stats`
 /// holds the smooth run's statistics with the caps added (MeshStats::creases).
 /// \throw CreaseError naming the place when the caps cannot close the cut (a plane tangent to g = 0 on
 ///        a cut edge, curves crossing); the errors of mesh_surface().

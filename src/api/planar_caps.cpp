@@ -77,11 +77,12 @@ struct EdgeChains {
 
 class CapBuilder {
  public:
-  CapBuilder(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, const Box& box, double edge,
-             double tolerance, const Settings& settings)
+  CapBuilder(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, std::size_t capped,
+             const Box& box, double edge, double tolerance, const Settings& settings)
       : mesh_(mesh),
         smooth_(smooth),
         planes_(planes),
+        capped_(capped),
         box_(box),
         edge_(edge),
         tol_(tolerance),
@@ -104,12 +105,12 @@ class CapBuilder {
     CapReport report;
     report.crease_vertices = cut_vertices_.size();
     const std::size_t before = mesh_.positions.size();
-    for (std::size_t i = 0; i < facets.size(); ++i)
+    for (std::size_t i = 0; i < capped_; ++i)
       if (!facets[i].corners.empty() && cap(static_cast<int>(i), facets[i])) ++report.caps;
     for (std::size_t e = 0; e < boundary_.size(); ++e)
       if (assigned_[e] == 0 &&
-          box_faces(mesh_.positions[boundary_[e][0]]) & box_faces(mesh_.positions[boundary_[e][1]]))
-        ++report.open_edges;  // the box cuts the part open there
+          on_open_face(mesh_.positions[boundary_[e][0]], mesh_.positions[boundary_[e][1]]))
+        ++report.open_edges;  // the box or a region plane cuts the part open there
       else if (assigned_[e] != 1)
         throw CreaseError("the cut of the smooth part has an edge on " + std::to_string(assigned_[e]) +
                           " of the capping planes near " + where(mesh_.positions[boundary_[e][0]]) +
@@ -129,6 +130,7 @@ class CapBuilder {
   Mesh& mesh_;
   const Surface* smooth_;
   const ConvexRegion& planes_;
+  std::size_t capped_;
   const Box& box_;
   double edge_, tol_;
   const Settings& settings_;
@@ -189,6 +191,14 @@ class CapBuilder {
     return faces;
   }
 
+  /// Whether p and q lie on one face of the box or one region plane (planes from capped_ on).
+  bool on_open_face(const Vec3& p, const Vec3& q) const {
+    if (box_faces(p) & box_faces(q)) return true;
+    for (std::size_t j = capped_; j < planes_.size(); ++j)
+      if (on(static_cast<int>(j), p) && on(static_cast<int>(j), q)) return true;
+    return false;
+  }
+
   /// Whether p lies on plane `plane` (>= 0), or on box face -1 - plane (< 0).
   bool on(int plane, const Vec3& p) const {
     if (plane < 0) return (box_faces(p) >> (-1 - plane)) & 1u;
@@ -245,7 +255,7 @@ class CapBuilder {
       for (const auto& chain : side.chains)
         for (std::size_t s = 0; s + 1 < chain.size(); ++s) {
           out.push_back(forward ? Edge{chain[s], chain[s + 1]} : Edge{chain[s + 1], chain[s]});
-          if (across < 0) ++open_cap_edges_;
+          if (across < 0 || across >= static_cast<int>(capped_)) ++open_cap_edges_;
         }
     }
     for (std::size_t e = 0; e < boundary_.size(); ++e) {
@@ -314,15 +324,17 @@ class CapBuilder {
     r.sizes.largest = edge_;
     r.sizes.smallest = edge_;
     r.hold_cut = true;
+    // A plane's cotangent Laplacian is exact for quadratics already: no curvature sweeps.
+    r.cleanup.curvature_sweeps = 0;
     remesh_on_surface(cap, plane, r);
   }
 };
 
 }  // namespace
 
-CapReport close_with_caps(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, const Box& box,
-                          double edge, double tolerance, const Settings& settings) {
-  return CapBuilder(mesh, smooth, planes, box, edge, tolerance, settings).run();
+CapReport close_with_caps(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, std::size_t capped,
+                          const Box& box, double edge, double tolerance, const Settings& settings) {
+  return CapBuilder(mesh, smooth, planes, capped, box, edge, tolerance, settings).run();
 }
 
 }  // namespace isopatch

@@ -24,15 +24,16 @@ struct CapReport {
 };
 
 /// Closes `mesh`, a mesh of g = 0 (`smooth`, triangles along grad g; null for a polyhedron: `mesh`
-/// empty and every face a whole cap) cut open by `planes` (unit
-/// normals out of the solid; every boundary vertex on a plane to `tolerance`, those where the cut turns
-/// from one plane to the next on both), with one cap per plane that the solid g <= 0 meets, oriented
-/// along the plane's normal, at edge length `edge`. `settings` give the clean-up's preset; `box` clips
-/// the planes' polygons: where the polyhedron leaves it, the box cuts the part open (the cut's boundary
-/// edges on the box's faces and the caps' sides there stay boundary, exactly on those faces).
-/// \throw CreaseError naming the place when a boundary edge lies on no plane or box face, or a cap's
+/// empty and every face a whole cap) cut open by `planes` (unit normals out of the solid; the first
+/// `capped` are the part's and get caps, the rest a region's, which cut the part open like the box; every
+/// boundary vertex on a plane to `tolerance`, those where the cut turns from one plane to the next on both),
+/// with one cap per plane that the solid g <= 0 meets, oriented along the plane's normal, at edge length
+/// `edge`. `settings` give the clean-up's preset; `box` clips the planes' polygons: where the polyhedron
+/// leaves it, the box cuts the part open (the cut's boundary edges on the box's faces or a region's planes
+/// and the caps' sides there stay boundary, exactly on them). \throw CreaseError naming the place when a
+/// boundary edge lies on no plane or box face, or a cap's
 ///        boundary does not bound a region (curves crossing, not closing).
-CapReport close_with_caps(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, const Box& box,
-                          double edge, double tolerance, const Settings& settings);
+CapReport close_with_caps(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, std::size_t capped,
+                          const Box& box, double edge, double tolerance, const Settings& settings);
 
 }  // namespace isopatch
