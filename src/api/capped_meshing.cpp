@@ -2,75 +2,17 @@
 // (capped_meshing.hpp).
 #include "api/capped_meshing.hpp"
 
-#include <isopatch/error.hpp>
 #include <isopatch/isopatch.hpp>
-#include <isopatch/topology.hpp>
 
 #include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <string>
 #include <utility>
-#include <vector>
 
 #include "api/crease_meshing.hpp"
-#include "api/facet_polygons.hpp"
-#include "api/planar_caps.hpp"
-#include "api/task_arena_run.hpp"
+#include "api/cut_and_caps.hpp"
 #include "csg/capped_shape.hpp"
-#include "csg/face_set.hpp"
 #include "projection/convex_meshing.hpp"
 
 namespace isopatch {
-
-namespace {
-
-/// A cut vertex lies on its planes within this share of the box diagonal (the smooth mesher puts it
-/// there to rounding).
-constexpr double kOnPlane = 1e-9;
-
-/// Whether the polyhedron of `planes` is bounded, has a face, and lies in `box` (to `margin`).
-bool inside(const ConvexRegion& planes, const Box& box, double margin) {
-  const Box far{box.lo - box.size(), box.hi + box.size()};
-  bool any = false;
-  for (const FacetPolygon& facet : facet_polygons(planes, far)) {
-    for (int across : facet.across)
-      if (across < 0) return false;
-    for (const Vec3& p : facet.corners)
-      if (!box.contains(p, margin)) return false;
-    any = any || !facet.corners.empty();
-  }
-  return any;
-}
-
-/// Whether one of the first `capped` planes bounds a face of the polyhedron of `planes` inside `box`.
-bool meets(const ConvexRegion& planes, std::size_t capped, const Box& box) {
-  const std::vector<FacetPolygon> facets = facet_polygons(planes, box);
-  for (std::size_t i = 0; i < capped; ++i)
-    if (!facets[i].corners.empty()) return true;
-  return false;
-}
-
-/// Refuses caps that could hold more vertices than Settings::max_vertices (the faces' whole areas at the
-/// equilateral lattice's density): the smooth mesher's own estimate covers the cut surface.
-void check_cap_size(const ConvexRegion& planes, const Box& box, double edge, std::size_t max_vertices) {
-  if (max_vertices == 0) return;
-  double area = 0.0;
-  for (const FacetPolygon& facet : facet_polygons(planes, box))
-    for (std::size_t k = 0; k + 2 < facet.corners.size(); ++k)
-      area += 0.5 *
-              (facet.corners[k + 1] - facet.corners[0]).cross(facet.corners[k + 2] - facet.corners[0]).norm();
-  const double vertices = area / (edge * edge * std::sqrt(3.0) / 2.0);
-  if (vertices <= static_cast<double>(max_vertices)) return;
-  char text[256];
-  std::snprintf(text, sizeof text,
-                "the caps would have about %.3g vertices at edge length %.3g, more than the vertex budget of "
-                "%zu: give a longer edge length or a larger budget",
-                vertices, edge, max_vertices);
-  throw LimitError(text, "max_vertices");
-}
-
-}  // namespace
 
 std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats) {
   if (settings.creases == Creases::Off || settings.method != Method::Projection || !settings.cells.empty() ||
@@ -90,80 +32,21 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
     planes.push_back({h.a / n, h.b / n, h.c / n, h.d / n});
   }
   // A polyhedron that leaves the box (or the region) is cut open by it: the part's boundary lies there.
-  const bool closed = settings.region.empty() && inside(shape->planes, box, kOnPlane * box.diagonal());
-  if (!closed && !meets(planes, capped, box)) return std::nullopt;
+  const bool closed =
+      settings.region.empty() && polyhedron_inside(shape->planes, box, kCapOnPlane * box.diagonal());
+  if (!closed && !polyhedron_meets(planes, capped, box)) return std::nullopt;
   const SurfacePtr& smooth = shape->smooth;
   // A polyhedron is the general crease path's, except in a rotated frame or cut open by the box, which
   // that path cannot take: its caps alone mesh it there.
   if (!smooth && closed && !settings.frame) return std::nullopt;
-  Settings open = settings;
-  open.box = box;
-  open.frame.reset();
-  open.region.clear();
+  Settings plain = settings;
+  plain.box = box;
+  plain.frame.reset();
+  plain.region.clear();
   // g with creases of its own (struts joined by min, say) is a shape for the general crease path.
-  if (smooth && analyse_creases(*smooth, open)) return std::nullopt;
-  open.frame = settings.frame;
+  if (smooth && analyse_creases(*smooth, plain)) return std::nullopt;
   const double analysis = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // The planes meet g = 0 inside the box: where a plane lies on a face of the box (a part meshed in its
-  // own box), the cut is made in a box grown by two edges so that the box's faces cut nothing; the edge
-  // length stays that of the given box.
-  const double edge = default_edge_length(settings, box);
-  check_cap_size(shape->planes, box, edge, settings.max_vertices);
-  if (closed && !inside(shape->planes, box, -2.0 * edge)) {
-    if (!settings.edge_length) open.edge_length = edge;
-    open.box = Box{box.lo - Vec3::Constant(2.0 * edge), box.hi + Vec3::Constant(2.0 * edge)};
-  }
-  open.region = planes;
-  open.creases = Creases::Off;
-  Mesh mesh = smooth ? mesh_surface(*smooth, open, stats) : Mesh{};
-  const auto caps_start = std::chrono::steady_clock::now();
-  const Box& cut_box = *open.box;
-  std::vector<SurfacePtr> faces;
-  if (smooth) faces.push_back(smooth);
-  for (const HalfSpace& h : shape->planes) faces.push_back(plane_surface(Vec3(h.a, h.b, h.c), -h.d, box));
-  AngleRepair repair;
-  const CapReport caps = run_in_task_arena(settings, stats, [&] {
-    CapReport added = close_with_caps(mesh, smooth.get(), planes, capped, cut_box, edge,
-                                      kOnPlane * box.diagonal(), settings);
-    // Triangles at the creases, which both sides' clean-ups hold, brought over the floor on the faces;
-    // the vertices on the box's faces or the region's planes stay there.
-    std::vector<std::uint8_t> held(mesh.vertex_count(), 0);
-    for (std::size_t v = 0; v < held.size(); ++v) {
-      const Vec3& p = mesh.positions[v];
-      bool on_cut = !box.contains(p, -kOnPlane * box.diagonal());
-      for (std::size_t j = capped; j < planes.size() && !on_cut; ++j)
-        on_cut = std::abs(plane_value(planes[j], p)) <= kOnPlane * box.diagonal();
-      held[v] = on_cut ? 1 : 0;
-    }
-    repair = repair_crease_angles(mesh, faces, box, &held);
-    return added;
-  });
-  const TopologyReport topology = analyze_topology(mesh);
-  if (topology.boundary_edges != caps.open_edges + caps.open_cap_edges || !topology.manifold() ||
-      !topology.consistently_oriented())
-    throw CreaseError("the capped shape's mesh is not a closed 2-manifold (" +
-                      std::to_string(topology.boundary_edges - caps.open_edges - caps.open_cap_edges) +
-                      " boundary edges off the box, " +
-                      std::to_string(topology.non_manifold_edges + topology.non_manifold_vertices) +
-                      " non-manifold places): a cap plane tangent to the surface or a feature narrower "
-                      "than an edge; a smaller --edge-length, or --creases off for a smooth mesh");
-  const double capping = std::chrono::duration<double>(std::chrono::steady_clock::now() - caps_start).count();
-  if (stats) {
-    CreaseStats c;
-    c.faces = (smooth ? 1 : 0) + caps.caps;
-    c.pieces = c.faces;
-    c.caps = caps.caps;
-    c.crease_vertices = caps.crease_vertices;
-    c.repair_moves = repair.moved;
-    c.seconds = analysis + capping;
-    stats->creases = c;
-    stats->seconds += c.seconds;
-    stats->times.add("creases", analysis);
-    stats->times.add("caps", capping);
-    stats->vertices = mesh.vertex_count();
-    stats->triangles = mesh.triangle_count();
-  }
-  return mesh;
+  return mesh_cut_and_caps({smooth, planes, capped, closed, box}, settings, stats, analysis);
 }
 
 }  // namespace isopatch
