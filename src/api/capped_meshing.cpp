@@ -9,10 +9,59 @@
 
 #include "api/crease_meshing.hpp"
 #include "api/cut_and_caps.hpp"
+#include "api/facet_polygons.hpp"
 #include "csg/capped_shape.hpp"
 #include "projection/convex_meshing.hpp"
 
 namespace isopatch {
+
+namespace {
+
+/// Whether every corner of the polyhedron `inner` lies inside `outer` by at least `clearance`.
+bool strictly_inside(const ConvexRegion& inner, const ConvexRegion& outer, const Box& box, double clearance) {
+  for (const FacetPolygon& facet : facet_polygons(inner, box))
+    for (const Vec3& p : facet.corners)
+      for (const HalfSpace& h : outer)
+        if (plane_value(h, p) > -clearance) return false;
+  return true;
+}
+
+/// A lattice shelled by its box (split_shelled_shape): the outer polyhedron's caps, and the hollows
+/// inside the inner one (the capped solid -g < 0 there) turned inside out; nullopt when f is no such
+/// shape, a region or cells are given, or the inner polyhedron is not clear of the outer one.
+std::optional<Mesh> mesh_shelled(const Surface& surface, const Settings& settings, const Box& box,
+                                 MeshStats* stats, std::chrono::steady_clock::time_point start) {
+  if (!settings.region.empty()) return std::nullopt;
+  const std::optional<ShelledShape> shape = split_shelled_shape(surface, box);
+  if (!shape || !polyhedron_inside(shape->outer, box, kCapOnPlane * box.diagonal()) ||
+      !strictly_inside(shape->inner, shape->outer, box, kCapOnPlane * box.diagonal()))
+    return std::nullopt;
+  Settings plain = settings;
+  plain.box = box;
+  plain.frame.reset();
+  if (analyse_creases(*shape->hollow, plain)) return std::nullopt;
+  const double analysis = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  MeshStats outer_stats;
+  Mesh mesh =
+      mesh_cut_and_caps({nullptr, shape->outer, shape->outer.size(), true, box}, settings, &outer_stats, 0.0);
+  const Mesh hollows = mesh_cut_and_caps({shape->hollow, shape->inner, shape->inner.size(), true, box},
+                                         settings, stats, analysis);
+  const auto offset = static_cast<std::uint32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), hollows.positions.begin(), hollows.positions.end());
+  for (const Triangle& t : hollows.triangles)
+    mesh.triangles.push_back({t[0] + offset, t[2] + offset, t[1] + offset});
+  if (stats && stats->creases && outer_stats.creases) {
+    stats->creases->caps += outer_stats.creases->caps;
+    stats->creases->faces += outer_stats.creases->faces;
+    stats->creases->pieces += outer_stats.creases->pieces;
+    stats->creases->crease_vertices += outer_stats.creases->crease_vertices;
+    stats->vertices = mesh.vertex_count();
+    stats->triangles = mesh.triangle_count();
+  }
+  return mesh;
+}
+
+}  // namespace
 
 std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats) {
   if (settings.creases == Creases::Off || settings.method != Method::Projection || !settings.cells.empty() ||
@@ -23,7 +72,7 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
   const Box box =
       settings.box ? *settings.box : convex_meshing_box(surface, settings).value_or(surface.box());
   std::optional<CappedShape> shape = split_capped_shape(surface, box);
-  if (!shape) return std::nullopt;
+  if (!shape) return mesh_shelled(surface, settings, box, stats, start);
   // The part's planes, then the region's (unit normals): the region cuts the part open like the box.
   const std::size_t capped = shape->planes.size();
   ConvexRegion planes = shape->planes;

@@ -24,6 +24,8 @@ namespace isopatch {
 /// holds the smooth run's statistics with the caps added (MeshStats::creases).
 /// \throw CreaseError naming the place when the caps cannot close the cut (a plane tangent to g = 0 on
 ///        a cut edge, curves crossing); the errors of mesh_surface().
+/// A lattice shelled by its box (csg/capped_shape.hpp ShelledShape) is meshed here too: the outer
+/// polyhedron's caps and the hollows inside the inner one, closed and outward.
 std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats);
 
 }  // namespace isopatch

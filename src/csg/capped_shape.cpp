@@ -109,12 +109,17 @@ class LeafWalk {
                        [this](const BranchChoice& c) { return leaf_kind(c) != Kind::Other; });
   }
 
-  std::vector<BranchChoice> collect(int node, const BranchChoice& choice) {
+  /// The leaves under `node`; `negated` when an odd number of decreasing steps lie above it (a max
+  /// there is a min of the whole: one leaf, as is abs).
+  std::vector<BranchChoice> collect(int node, const BranchChoice& choice, bool negated = false) {
     if (overflow_ || node < 0) return {choice};
     const Instruction& in = tape_.code[static_cast<std::size_t>(node)];
     const auto index = static_cast<std::size_t>(node);
     const bool increasing = in.op == Op::AddC || ((in.op == Op::MulC || in.op == Op::DivC) && in.imm > 0.0);
-    if (increasing) return collect(def_a_[index], choice);
+    const bool decreasing =
+        in.op == Op::Neg || in.op == Op::RSubC || ((in.op == Op::MulC || in.op == Op::DivC) && in.imm < 0.0);
+    if (increasing || decreasing) return collect(def_a_[index], choice, negated != decreasing);
+    if (negated) return {choice};
     if (in.op == Op::Abs) {
       // abs(u) = max(u, -u): two planes when u is affine, else one leaf.
       BranchChoice plus = choice, minus = choice;
@@ -138,7 +143,76 @@ class LeafWalk {
   }
 };
 
+/// `tape` with its result negated.
+Tape negated(Tape tape) {
+  const std::uint32_t out = tape.registers++;
+  tape.code.push_back(Instruction{Op::Neg, out, tape.result, tape.result, 0.0});
+  tape.result = out;
+  return tape;
+}
+
+/// The same planes, in any order (to rounding).
+bool same_planes(const ConvexRegion& a, const ConvexRegion& b) {
+  if (a.size() != b.size()) return false;
+  return std::all_of(a.begin(), a.end(), [&b](const HalfSpace& h) {
+    return std::any_of(b.begin(), b.end(), [&h](const HalfSpace& o) {
+      return std::abs(o.a - h.a) + std::abs(o.b - h.b) + std::abs(o.c - h.c) + std::abs(o.d - h.d) < 1e-12;
+    });
+  });
+}
+
 }  // namespace
+
+std::optional<ShelledShape> split_shelled_shape(const Surface& f, const Box& box) {
+  const Expression* formula = f.expression();
+  if (formula == nullptr || formula->tape().code.empty()) return std::nullopt;
+  const Tape& tape = formula->tape();
+  // The root through increasing steps to a min.
+  std::vector<int> writer(std::max<std::size_t>(tape.registers, Tape::kVariables), -1);
+  std::vector<int> operand(tape.code.size(), -1);
+  for (std::size_t i = 0; i < tape.code.size(); ++i) {
+    operand[i] = writer[tape.code[i].a];
+    writer[tape.code[i].out] = static_cast<int>(i);
+  }
+  int node = writer[tape.result];
+  while (node >= 0) {
+    const Instruction& in = tape.code[static_cast<std::size_t>(node)];
+    const bool increasing = in.op == Op::AddC || ((in.op == Op::MulC || in.op == Op::DivC) && in.imm > 0.0);
+    if (!increasing) break;
+    node = operand[static_cast<std::size_t>(node)];
+  }
+  if (node < 0 || tape.code[static_cast<std::size_t>(node)].op != Op::Min) return std::nullopt;
+  const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);
+  const auto s = static_cast<std::size_t>(
+      std::find(switches.begin(), switches.end(), static_cast<std::uint32_t>(node)) - switches.begin());
+  std::optional<CappedShape> side[2];
+  for (std::int8_t k = 0; k < 2; ++k) {
+    BranchChoice choice(switches.size(), expr::kOpen);
+    choice[s] = k;
+    const SurfacePtr operand_surface =
+        expression_surface(Expression(std::make_shared<const Tape>(expr::specialise(tape, switches, choice))),
+                           box, "an operand");
+    side[k] = split_capped_shape(*operand_surface, box);
+    if (!side[k] || !side[k]->smooth) return std::nullopt;
+  }
+  for (int lattice = 0; lattice < 2; ++lattice) {
+    const CappedShape& part = *side[lattice];
+    const CappedShape& skin = *side[1 - lattice];
+    const Expression* lattice_formula = part.smooth->expression();
+    const Expression* skin_formula = skin.smooth->expression();
+    if (lattice_formula == nullptr || skin_formula == nullptr || !same_planes(part.planes, skin.planes))
+      continue;
+    // The skin's curved operand is minus a polyhedron: -R.
+    const SurfacePtr inner_surface = expression_surface(
+        Expression(std::make_shared<const Tape>(negated(skin_formula->tape()))), box, "the inner polyhedron");
+    const std::optional<CappedShape> inner = split_capped_shape(*inner_surface, box);
+    if (!inner || inner->smooth) continue;
+    SurfacePtr hollow = expression_surface(
+        Expression(std::make_shared<const Tape>(negated(lattice_formula->tape()))), box, "the hollows");
+    return ShelledShape{std::move(hollow), part.planes, inner->planes};
+  }
+  return std::nullopt;
+}
 
 std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box) {
   const Expression* formula = f.expression();

@@ -31,4 +31,17 @@ inline constexpr std::size_t kMaxCapPlanes = 64;
 /// nullopt). Duplicate planes are kept once. g is a formula surface over `box`.
 std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box);
 
+/// A lattice closed by a skin: f = min(max(g, P), max(P, -R)) (either order, through increasing steps
+/// at the root; each operand a capped shape as above): the polyhedron P of the part's planes, solid
+/// between it and the inner polyhedron R, the lattice g < 0 inside R ("a lattice shelled by its box").
+struct ShelledShape {
+  SurfacePtr hollow;   ///< -g: the hollows inside R, where the lattice is not (a formula of its own)
+  ConvexRegion outer;  ///< P, unit normals out of the part
+  ConvexRegion inner;  ///< R, unit normals out of R
+};
+
+/// Splits `f` when it is a shelled lattice (ShelledShape); nullopt for any other formula. The caller
+/// checks that R lies inside P.
+std::optional<ShelledShape> split_shelled_shape(const Surface& f, const Box& box);
+
 }  // namespace isopatch

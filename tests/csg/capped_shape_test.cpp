@@ -261,6 +261,30 @@ TEST(CappedLattice, ACubeClippedByARegionHalfSpaceKeepsItsCreasesAndItsCut) {
   EXPECT_EQ(test::count_self_intersections(mesh, 10), 0u);
 }
 
+TEST(CappedLattice, ALatticeShelledByItsBoxIsTheBoxAndItsHollowsAlongTheCreases) {
+  // min(max(P, box), max(box, inner - box)): Schwarz P inside the box of one period, a skin from there
+  // to the box of half-side 3.5. The hollows (P > 0 inside the inner box) are half of it by symmetry.
+  const std::string outer = "max(max(abs(x),abs(y)),abs(z))-3.5";
+  const std::string part =
+      "min(max(" + kCapSchwarzP + "," + outer + "),max(" + outer + ",pi-max(max(abs(x),abs(y)),abs(z))))";
+  const std::optional<ShelledShape> split_part =
+      split_shelled_shape(*expression_surface(part, capped_box(4.0)), capped_box(4.0));
+  ASSERT_TRUE(split_part);
+  EXPECT_EQ(split_part->outer.size(), 6u);
+  EXPECT_EQ(split_part->inner.size(), 6u);
+  const CappedRun run = mesh_capped(part, 4.0, 0.2);
+  ASSERT_TRUE(run.stats.creases);
+  EXPECT_EQ(run.stats.creases->caps, 12u);
+  const TopologyReport t = analyze_topology(run.mesh);
+  EXPECT_TRUE(t.watertight() && t.manifold() && t.consistently_oriented());
+  EXPECT_EQ(t.components.size(), 2u);  // the box's skin and the hollows' surface inside it
+  EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
+  EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-9 * capped_box(4.0).diagonal());
+  const double expected = 7.0 * 7.0 * 7.0 - 0.5 * std::pow(2.0 * std::numbers::pi, 3);
+  EXPECT_NEAR(test::enclosed_volume(run.mesh) / expected, 1.0, 2e-3);
+  EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0);
+}
+
 /// Vertices on two or more of the unit cube's faces (its creases and corners).
 std::size_t cube_crease_vertices(const Mesh& mesh) {
   std::size_t count = 0;
