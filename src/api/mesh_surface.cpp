@@ -242,7 +242,18 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   } catch (const CreaseError&) {
     if (stats) *stats = before;
   }
-  CreasedMesh creased = mesh_along_creases(surface, settings, stats);
+  CreasedMesh creased;
+  try {
+    creased = mesh_along_creases(surface, settings, stats);
+  } catch (const CreaseError& e) {
+    // Every refusal says what would mesh the shape.
+    const std::string what = e.what();
+    if (what.find("creases off") != std::string::npos) throw;
+    throw CreaseError(
+        what +
+        "; turning creases off (--creases off, creases=\"off\" in Python) meshes it as a smooth "
+        "surface, and a lattice capped by planes is meshed along its creases (docs/lattices.md)");
+  }
   if (creased.mesh) return std::move(*creased.mesh);
   Mesh mesh = run_in_task_arena(settings, stats, [&] {
     if (settings.max_evaluations == 0 && settings.time_limit == 0.0)
