@@ -109,11 +109,11 @@ Mesh mesh_cut_and_caps(const CappedPart& part, const Settings& settings, MeshSta
     return added;
   });
   const TopologyReport topology = analyze_topology(mesh);
-  if (topology.boundary_edges != caps.open_edges + caps.open_cap_edges || !topology.manifold() ||
-      !topology.consistently_oriented())
+  const std::size_t open_edges = caps.open_edges + caps.open_cap_edges;
+  if (topology.boundary_edges != open_edges || !topology.manifold() || !topology.consistently_oriented())
     throw CreaseError("the capped shape's mesh is not a closed 2-manifold (" +
-                      std::to_string(topology.boundary_edges - caps.open_edges - caps.open_cap_edges) +
-                      " boundary edges off the box, " +
+                      std::to_string(topology.boundary_edges) +
+                      " boundary edges where the box and region cut " + std::to_string(open_edges) + ", " +
                       std::to_string(topology.non_manifold_edges + topology.non_manifold_vertices) +
                       " non-manifold places): a cap plane tangent to the surface or a feature narrower "
                       "than an edge; a smaller --edge-length, or --creases off for a smooth mesh");
