@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include <tbb/parallel_for.h>
+
 #include "api/cap_wedges.hpp"
 #include "api/facet_polygons.hpp"
 #include "csg/face_set.hpp"
@@ -105,8 +107,20 @@ class CapBuilder {
     CapReport report;
     report.crease_vertices = cut_vertices_.size();
     const std::size_t before = mesh_.positions.size();
+    // The caps' boundaries first (they share the polyhedron's edges), then each cap on its own, side by
+    // side (the same caps for any thread count), added to the mesh in plane order.
+    std::vector<std::vector<Edge>> segments(capped_);
     for (std::size_t i = 0; i < capped_; ++i)
-      if (!facets[i].corners.empty() && cap(static_cast<int>(i), facets[i])) ++report.caps;
+      if (!facets[i].corners.empty()) segments[i] = cap_segments(static_cast<int>(i), facets[i]);
+    std::vector<Mesh> caps(capped_);
+    tbb::parallel_for(std::size_t{0}, capped_, [&](std::size_t i) {
+      if (!segments[i].empty()) caps[i] = cap(static_cast<int>(i), facets[i], segments[i]);
+    });
+    for (std::size_t i = 0; i < capped_; ++i)
+      if (!segments[i].empty()) {
+        add_cap(caps[i], segments[i]);
+        ++report.caps;
+      }
     for (std::size_t e = 0; e < boundary_.size(); ++e)
       if (assigned_[e] == 0 &&
           on_open_face(mesh_.positions[boundary_[e][0]], mesh_.positions[boundary_[e][1]]))
@@ -269,9 +283,9 @@ class CapBuilder {
   }
 
   /// Meshes the cap of plane i; false when the solid does not meet the plane.
-  bool cap(int i, const FacetPolygon& facet) {
-    const std::vector<Edge> segments = cap_segments(i, facet);
-    if (segments.empty()) return false;
+  /// The cap of plane i within `segments` (its boundary vertices at their positions in the mesh, bit
+  /// for bit); reads the mesh only.
+  Mesh cap(int i, const FacetPolygon& facet, const std::vector<Edge>& segments) const {
     const HalfSpace& h = planes_[static_cast<std::size_t>(i)];
     const Vec3 normal(h.a, h.b, h.c);
     const Vec3 u = (std::abs(normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(normal).normalized();
@@ -303,23 +317,36 @@ class CapBuilder {
     for (const auto& t : planar::triangulate_region(region, inner)) cap.triangles.push_back(t);
     const SurfacePtr plane = plane_surface(normal, -h.d, box_);
     clean_up(cap, *plane);
-    // Boundary vertices are held by the clean-up, bit for bit: they keep their ids.
-    std::unordered_map<Vec3, std::uint32_t, PositionHash> held;
-    for (std::uint32_t g : global) held.emplace(mesh_.positions[g], g);
+    // Boundary vertices are held by the clean-up, bit for bit.
+    const std::unordered_map<Vec3, std::uint32_t, PositionHash> held = boundary_ids(segments);
     std::vector<bool> on_boundary(cap.positions.size());
     for (std::size_t k = 0; k < cap.positions.size(); ++k) on_boundary[k] = held.count(cap.positions[k]) > 0;
     open_narrow_corners(cap, *plane, on_boundary, kNarrowCorner, kSettle * tol_);
+    return cap;
+  }
+
+  /// The ids of a cap's boundary vertices by their exact positions.
+  std::unordered_map<Vec3, std::uint32_t, PositionHash> boundary_ids(
+      const std::vector<Edge>& segments) const {
+    std::unordered_map<Vec3, std::uint32_t, PositionHash> held;
+    for (const Edge& s : segments)
+      for (std::uint32_t g : s) held.emplace(mesh_.positions[g], g);
+    return held;
+  }
+
+  /// Adds a cap to the mesh: its boundary vertices keep their ids, the others are new.
+  void add_cap(const Mesh& cap, const std::vector<Edge>& segments) {
+    const std::unordered_map<Vec3, std::uint32_t, PositionHash> held = boundary_ids(segments);
     std::vector<std::uint32_t> id(cap.positions.size());
     for (std::size_t k = 0; k < cap.positions.size(); ++k) {
       const auto it = held.find(cap.positions[k]);
       id[k] = it != held.end() ? it->second : add_vertex(cap.positions[k]);
     }
     for (const Triangle& t : cap.triangles) mesh_.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
-    return true;
   }
 
   /// The surface-bound clean-up on the cap's plane with its boundary held.
-  void clean_up(Mesh& cap, const Surface& plane) {
+  void clean_up(Mesh& cap, const Surface& plane) const {
     RemeshSettings r = preset_remesh_settings(settings_, kDefaultRemeshIterations);
     r.sizes.largest = edge_;
     r.sizes.smallest = edge_;
