@@ -10,6 +10,7 @@ packages=(build-essential cmake ninja-build pkg-config libeigen3-dev libcli11-de
           libbenchmark-dev nlohmann-json3-dev libstb-dev libpng-dev libtbb-dev libcgal-dev python3 zlib1g-dev
           python3-dev pybind11-dev python3-numpy python3-pytest python3-meshio python3-skimage
           libtinygltf-dev libcpp-httplib-dev lib3mf-dev nodejs npm chromium doxygen)
+# libcgal-dev (above): header-only CGAL, the tests' exact checks and the library's planar caps (src/planar)
 packages+=(prusa-slicer)  # the tests' slicer: python/tests/test_print_clients.py runs prusa-slicer --info
 packages+=(python3-distributed)  # isopatch.distributed: blocked runs on Dask (docs/distributed.md)
 packages+=(clang-format clang-tidy)  # scripts/check_format.sh, scripts/check_tidy.sh (version 14 on Debian 12)
