@@ -94,6 +94,13 @@ class CapBuilder {
     for (const Edge& e : boundary_)
       for (std::uint32_t v : e)
         if (seen_.insert(v).second) cut_vertices_.push_back(v);
+    // Sizes that vary (an error bound, a size field) make the cut's edges shorter than the largest size
+    // where it meets the planes: the caps follow the cut's mean edge there, not the largest size.
+    if ((settings.max_error || settings.size_field) && !boundary_.empty()) {
+      double sum = 0.0;
+      for (const Edge& e : boundary_) sum += (mesh_.positions[e[0]] - mesh_.positions[e[1]]).norm();
+      edge_ = std::min(edge_, sum / static_cast<double>(boundary_.size()));
+    }
   }
 
   CapReport run() {

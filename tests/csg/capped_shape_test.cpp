@@ -169,6 +169,19 @@ TEST(CappedLattice, ASchwarzPSheetCappedByItsBoxIsAClosedPart) {
   expect_valid_part(run, faces_of(sheet, capped_box(3.3)), capped_box(3.3).diagonal());
 }
 
+TEST(CappedLattice, AnErrorBoundGradesTheCutAndTheCapsFollowIt) {
+  // With an error bound the cut's edges are shorter than the largest size where it meets the box: the
+  // caps take the cut's mean edge, so no triangle at the creases spans the two sizes.
+  const std::string part = "max(" + kCapGyroid + "," + kCapBox + ")";
+  CappedRun run;
+  run.surface = expression_surface(part, capped_box(3.3));
+  Settings s;
+  s.box = capped_box(3.3);
+  s.max_error = 0.01;
+  run.mesh = mesh_surface(*run.surface, s, &run.stats);
+  expect_valid_part(run, faces_of(kCapGyroid, capped_box(3.3)), capped_box(3.3).diagonal());
+}
+
 TEST(CappedLattice, TheVolumeConvergesAndTheTopologyHolds) {
   // Schwarz P capped by the box of one period: half the cube is solid by symmetry (f(-p - pi) = -f(p)).
   const std::string part = "max(" + kCapSchwarzP + "," + kCapBox + ")";
