@@ -213,6 +213,14 @@ auto guarded(const std::string& name, F&& read) {
   }
 }
 
+/// Keeps a grid read in the child process alive until the child leaves (by _exit, right after it
+/// answers): OpenVDB frees a tree with oneTBB's parallel loops, whose worker threads do not exist after
+/// fork, and the child hung there waiting for them (seen in the test suite).
+void keep_in_child(const openvdb::GridBase::Ptr& grid) {
+  static std::vector<openvdb::GridBase::Ptr>* const kept = new std::vector<openvdb::GridBase::Ptr>;
+  kept->push_back(grid);
+}
+
 }  // namespace
 
 SparseSamples read_grid(const std::string& path, const std::string& grid, std::string& chosen) {
@@ -246,6 +254,7 @@ SparseSamples decode_grid(std::string_view bytes, const std::string& grid, const
         const openvdb::GridPtrVecPtr metadata = file.readAllGridMetadata();
         grid_name = choose(*metadata, grid, name)->getName();
         const openvdb::GridBase::Ptr g = file.readGrid(grid_name);
+        keep_in_child(g);
         return take(*g, name);
       }
       std::istringstream in{std::string(bytes)};
@@ -255,6 +264,7 @@ SparseSamples decode_grid(std::string_view bytes, const std::string& grid, const
       if (in.fail()) throw IoError(name + ": the file is truncated (it ends inside its grids)");
       if (!grids) throw IoError(name + ": the file holds no grid");
       const openvdb::GridBase::Ptr g = choose(*grids, grid, name);
+      keep_in_child(g);
       grid_name = g->getName();
       return take(*g, name);
     });
