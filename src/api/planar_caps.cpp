@@ -358,8 +358,6 @@ class CapBuilder {
     r.sizes.largest = edge_;
     r.sizes.smallest = edge_;
     r.hold_cut = true;
-    // A plane's cotangent Laplacian is exact for quadratics already: no curvature sweeps.
-    r.cleanup.curvature_sweeps = 0;
     remesh_on_surface(cap, plane, r);
   }
 };

@@ -65,28 +65,52 @@ Kind result_kind(const Tape& tape) {
   return kind[tape.result];
 }
 
+/// +1 for a step that keeps the order of its operand (adding a constant, scaling by a positive one),
+/// -1 for one that reverses it (negating, subtracting from a constant, scaling by a negative one), 0 else.
+int monotone(const Instruction& in) {
+  if (in.op == Op::AddC) return 1;
+  if (in.op == Op::Neg || in.op == Op::RSubC) return -1;
+  if (in.op == Op::MulC || in.op == Op::DivC) return in.imm > 0.0 ? 1 : (in.imm < 0.0 ? -1 : 0);
+  return 0;
+}
+
+/// For every instruction, the instructions its operands read (the last to write their registers before
+/// it; -1 for x, y, z and the constants), and the one that writes f.
+struct Writers {
+  std::vector<int> a, b;
+  int root = -1;
+};
+Writers operand_writers(const Tape& tape) {
+  Writers w;
+  std::vector<int> writer(std::max<std::size_t>(tape.registers, Tape::kVariables), -1);
+  w.a.resize(tape.code.size());
+  w.b.resize(tape.code.size());
+  for (std::size_t i = 0; i < tape.code.size(); ++i) {
+    w.a[i] = writer[tape.code[i].a];
+    w.b[i] = expr::is_binary(tape.code[i].op) ? writer[tape.code[i].b] : -1;
+    writer[tape.code[i].out] = static_cast<int>(i);
+  }
+  w.root = writer[tape.result];
+  return w;
+}
+
+/// The same plane to `tolerance` (sum of the coefficients' differences).
+bool same_plane(const HalfSpace& h, const HalfSpace& o, double tolerance) {
+  return std::abs(o.a - h.a) + std::abs(o.b - h.b) + std::abs(o.c - h.c) + std::abs(o.d - h.d) < tolerance;
+}
+
 /// The walk down f's tree of max: every leaf as the branch choice that leads to it.
 class LeafWalk {
  public:
-  explicit LeafWalk(const Tape& tape) : tape_(tape), switches_(expr::switch_instructions(tape)) {
+  explicit LeafWalk(const Tape& tape)
+      : tape_(tape), switches_(expr::switch_instructions(tape)), writers_(operand_writers(tape)) {
     switch_of_.assign(tape.code.size(), -1);
     for (std::size_t s = 0; s < switches_.size(); ++s) switch_of_[switches_[s]] = static_cast<int>(s);
-    // The instruction each operand reads (the last to write its register before), -1 for x, y, z and
-    // the constants.
-    std::vector<int> writer(std::max<std::size_t>(tape.registers, Tape::kVariables), -1);
-    def_a_.resize(tape.code.size());
-    def_b_.resize(tape.code.size());
-    for (std::size_t i = 0; i < tape.code.size(); ++i) {
-      def_a_[i] = writer[tape.code[i].a];
-      def_b_[i] = expr::is_binary(tape.code[i].op) ? writer[tape.code[i].b] : -1;
-      writer[tape.code[i].out] = static_cast<int>(i);
-    }
-    root_ = writer[tape.result];
   }
 
   /// The leaves under f's root, or false when there are too many.
   bool run(std::vector<BranchChoice>& leaves) {
-    leaves = collect(root_, BranchChoice(switches_.size(), expr::kOpen));
+    leaves = collect(writers_.root, BranchChoice(switches_.size(), expr::kOpen));
     return !overflow_;
   }
 
@@ -100,8 +124,8 @@ class LeafWalk {
 
   const Tape& tape_;
   std::vector<std::uint32_t> switches_;
-  std::vector<int> switch_of_, def_a_, def_b_;
-  int root_ = -1;
+  Writers writers_;
+  std::vector<int> switch_of_;
   bool overflow_ = false;
 
   bool has_plane(const std::vector<BranchChoice>& leaves) const {
@@ -115,10 +139,7 @@ class LeafWalk {
     if (overflow_ || node < 0) return {choice};
     const Instruction& in = tape_.code[static_cast<std::size_t>(node)];
     const auto index = static_cast<std::size_t>(node);
-    const bool increasing = in.op == Op::AddC || ((in.op == Op::MulC || in.op == Op::DivC) && in.imm > 0.0);
-    const bool decreasing =
-        in.op == Op::Neg || in.op == Op::RSubC || ((in.op == Op::MulC || in.op == Op::DivC) && in.imm < 0.0);
-    if (increasing || decreasing) return collect(def_a_[index], choice, negated != decreasing);
+    if (const int order = monotone(in)) return collect(writers_.a[index], choice, negated != (order < 0));
     if (negated) return {choice};
     if (in.op == Op::Abs) {
       // abs(u) = max(u, -u): two planes when u is affine, else one leaf.
@@ -133,7 +154,7 @@ class LeafWalk {
     for (std::int8_t side = 0; side < 2; ++side) {
       BranchChoice c = choice;
       c[static_cast<std::size_t>(switch_of_[index])] = side;
-      std::vector<BranchChoice> leaves = collect(side == 0 ? def_a_[index] : def_b_[index], c);
+      std::vector<BranchChoice> leaves = collect(side == 0 ? writers_.a[index] : writers_.b[index], c);
       // An operand with no plane under it is one smooth leaf, its own switches left open.
       if (!has_plane(leaves)) leaves = {c};
       out.insert(out.end(), leaves.begin(), leaves.end());
@@ -155,9 +176,7 @@ Tape negated(Tape tape) {
 bool same_planes(const ConvexRegion& a, const ConvexRegion& b) {
   if (a.size() != b.size()) return false;
   return std::all_of(a.begin(), a.end(), [&b](const HalfSpace& h) {
-    return std::any_of(b.begin(), b.end(), [&h](const HalfSpace& o) {
-      return std::abs(o.a - h.a) + std::abs(o.b - h.b) + std::abs(o.c - h.c) + std::abs(o.d - h.d) < 1e-12;
-    });
+    return std::any_of(b.begin(), b.end(), [&h](const HalfSpace& o) { return same_plane(h, o, 1e-12); });
   });
 }
 
@@ -168,19 +187,10 @@ std::optional<ShelledShape> split_shelled_shape(const Surface& f, const Box& box
   if (formula == nullptr || formula->tape().code.empty()) return std::nullopt;
   const Tape& tape = formula->tape();
   // The root through increasing steps to a min.
-  std::vector<int> writer(std::max<std::size_t>(tape.registers, Tape::kVariables), -1);
-  std::vector<int> operand(tape.code.size(), -1);
-  for (std::size_t i = 0; i < tape.code.size(); ++i) {
-    operand[i] = writer[tape.code[i].a];
-    writer[tape.code[i].out] = static_cast<int>(i);
-  }
-  int node = writer[tape.result];
-  while (node >= 0) {
-    const Instruction& in = tape.code[static_cast<std::size_t>(node)];
-    const bool increasing = in.op == Op::AddC || ((in.op == Op::MulC || in.op == Op::DivC) && in.imm > 0.0);
-    if (!increasing) break;
-    node = operand[static_cast<std::size_t>(node)];
-  }
+  const Writers writers = operand_writers(tape);
+  int node = writers.root;
+  while (node >= 0 && monotone(tape.code[static_cast<std::size_t>(node)]) > 0)
+    node = writers.a[static_cast<std::size_t>(node)];
   if (node < 0 || tape.code[static_cast<std::size_t>(node)].op != Op::Min) return std::nullopt;
   const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);
   const auto s = static_cast<std::size_t>(
@@ -238,9 +248,8 @@ std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box) 
     if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(at_origin.value)) return std::nullopt;
     const Vec3 n = at_origin.gradient / length;
     const HalfSpace h{n.x(), n.y(), n.z(), at_origin.value / length};
-    const bool repeated = std::any_of(planes.begin(), planes.end(), [&h](const HalfSpace& o) {
-      return std::abs(o.a - h.a) + std::abs(o.b - h.b) + std::abs(o.c - h.c) + std::abs(o.d - h.d) < 1e-14;
-    });
+    const bool repeated = std::any_of(planes.begin(), planes.end(),
+                                      [&h](const HalfSpace& o) { return same_plane(h, o, 1e-14); });
     if (!repeated) planes.push_back(h);
   }
   if (planes.empty() || planes.size() > kMaxCapPlanes) return std::nullopt;

@@ -87,15 +87,20 @@ struct CappedRun {
   MeshStats stats;
 };
 
-CappedRun mesh_capped(const std::string& formula, double box, double edge, int threads = 0) {
+/// The formula meshed in the cube of half-side `box` with `s` (its box set).
+CappedRun mesh_capped(const std::string& formula, double box, Settings s) {
   CappedRun run;
   run.surface = expression_surface(formula, capped_box(box));
-  Settings s;
   s.box = capped_box(box);
-  s.edge_length = edge;
-  s.threads = threads;
   run.mesh = mesh_surface(*run.surface, s, &run.stats);
   return run;
+}
+
+CappedRun mesh_capped(const std::string& formula, double box, double edge, int threads = 0) {
+  Settings s;
+  s.edge_length = edge;
+  s.threads = threads;
+  return mesh_capped(formula, box, s);
 }
 
 /// Checks a capped part: closed, manifold, outward, no self-intersection, vertices on f = 0, every
@@ -172,13 +177,9 @@ TEST(CappedLattice, ASchwarzPSheetCappedByItsBoxIsAClosedPart) {
 TEST(CappedLattice, AnErrorBoundGradesTheCutAndTheCapsFollowIt) {
   // With an error bound the cut's edges are shorter than the largest size where it meets the box: the
   // caps take the cut's mean edge, so no triangle at the creases spans the two sizes.
-  const std::string part = "max(" + kCapGyroid + "," + kCapBox + ")";
-  CappedRun run;
-  run.surface = expression_surface(part, capped_box(3.3));
   Settings s;
-  s.box = capped_box(3.3);
   s.max_error = 0.01;
-  run.mesh = mesh_surface(*run.surface, s, &run.stats);
+  const CappedRun run = mesh_capped("max(" + kCapGyroid + "," + kCapBox + ")", 3.3, s);
   expect_valid_part(run, faces_of(kCapGyroid, capped_box(3.3)), capped_box(3.3).diagonal());
 }
 
@@ -204,14 +205,10 @@ TEST(CappedLattice, TheSameBytesForOneAndTwoThreads) {
 }
 
 TEST(CappedLattice, CreasesOffMeshesTheFormulaAsASmoothSurface) {
-  const std::string part = "max(" + kCapSchwarzP + "," + kCapBox + ")";
-  CappedRun run;
-  run.surface = expression_surface(part, capped_box(3.0));
   Settings s;
-  s.box = capped_box(3.0);
   s.edge_length = 0.3;
   s.creases = Creases::Off;
-  run.mesh = mesh_surface(*run.surface, s, &run.stats);
+  const CappedRun run = mesh_capped("max(" + kCapSchwarzP + "," + kCapBox + ")", 3.0, s);
   EXPECT_FALSE(run.stats.creases);
 }
 
