@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The lattice catalogue of docs/lattices.md: each TPMS as a solid (f < 0) and a sheet (|f| - t < 0)
-# capped by the box of two periods, meshed at 1/N of the part's side; prints one Markdown row per part
+# capped by the box of two periods (CUT=box) or cut by the ball of radius 6 (CUT=ball), meshed at 1/N
+# of the part's side (diameter); prints one Markdown row per part
 # (whole-process seconds timed from outside, vertices, watertight/manifold/outward, self-intersections,
 # smallest angle, valence-6 share) or the exit code and message of a refusal.
-# Usage: bench/lattice_catalogue.sh [ISOPATCH_BIN] [SHEET_T] [N]   (default build-test/bin/isopatch, 0.3, 60)
+# Usage: bench/lattice_catalogue.sh [ISOPATCH_BIN] [SHEET_T] [N] [CUT]
+#        (default build-test/bin/isopatch, 0.3, 60, box)
 set -uo pipefail
 bin="${1:-build-test/bin/isopatch}"
 t="${2:-0.3}"
@@ -16,9 +18,14 @@ declare -A tpms=(
   [neovius]="3*(cos(x)+cos(y)+cos(z))+4*cos(x)*cos(y)*cos(z)"
   [iwp]="2*(cos(x)*cos(y)+cos(y)*cos(z)+cos(z)*cos(x))-(cos(2*x)+cos(2*y)+cos(2*z))"
 )
-cap="max(max(abs(x),abs(y)),abs(z))-2*pi"
 divisor="${3:-60}"
-edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 4 * atan2(0, -1) / n }')  # the side 4 pi over N
+if [ "${4:-box}" = ball ]; then
+  cap="x*x+y*y+z*z-36"
+  edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 12 / n }')  # the diameter 12 over N
+else
+  cap="max(max(abs(x),abs(y)),abs(z))-2*pi"
+  edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 4 * atan2(0, -1) / n }')  # the side 4 pi over N
+fi
 echo "| part | kind | exit | seconds (whole) | vertices | closed, manifold, outward | self-intersections | smallest angle | valence 6 |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for name in gyroid diamond schwarz_p neovius iwp; do

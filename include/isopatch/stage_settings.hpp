@@ -43,6 +43,11 @@ struct SizeSettings {
   /// quarter edge (a rim or tube thinner than an edge: docs/algorithms.md 4.12), so that no triangle
   /// must span it (MeshStats::local_sizes).
   bool uniform = false;
+  /// Projection, without `uniform`: whether the sizes also shrink where the box or a region plane cuts
+  /// f = 0 (true by default). A caller that trims the mesh well inside its box (the faces of two solids
+  /// intersected, api/curved_cut.hpp) turns it off: refining a cut that is thrown away costs vertices and
+  /// the multiresolution refinement.
+  bool cut_sizes = true;
   /// Projection: points around which sizes shrink to the edge length / 2^refine_around_depth, graded
   /// at 0.2 per unit distance; ignored with `uniform`. The command line passes the
   /// singular points of f = 0 it found (singular_points.hpp), so the mesh around a cusp or a crossing

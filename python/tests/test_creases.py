@@ -71,6 +71,22 @@ def test_a_gyroid_capped_by_its_box_is_one_closed_part_with_planar_caps(lattice)
     assert report["valence"]["share_6"] >= 0.9
 
 
+def test_a_gyroid_cut_by_a_ball_is_one_closed_part_along_its_crease():
+    # docs/lattices.md: the gyroid and the ball meshed whole, trimmed to each other, joined at the crease.
+    m = isopatch.mesh(f"max({GYROID},x^2+y^2+z^2-9)", box=((-3.4,) * 3, (3.4,) * 3), edge_length=0.1)
+    assert m.stats["creases"]["faces"] == 2 and m.stats["creases"]["crease_vertices"] > 100
+    x, y, z = m.vertices.T
+    g = np.sin(x) * np.cos(y) + np.sin(y) * np.cos(z) + np.sin(z) * np.cos(x)
+    ball = x * x + y * y + z * z - 9
+    assert np.max(np.abs(np.maximum(g, ball))) < 1e-9  # every vertex on the part's surface
+    on_both = (np.abs(g) < 1e-9) & (np.abs(ball) < 1e-9)
+    assert on_both.sum() == m.stats["creases"]["crease_vertices"]
+    report = m.analyze()
+    assert report["topology"]["watertight"] and report["topology"]["outward_oriented"]
+    assert report["valence"]["share_6"] >= 0.9
+    assert report["shape"]["min_angle_degrees"]["min"] >= 25.0
+
+
 def test_a_frame_keeps_a_polyhedrons_creases_and_says_when_it_drops_others():
     m = isopatch.mesh(CUBE, box=BOX, frame=(30, 20, 10))
     assert m.stats["creases"]["caps"] == 6

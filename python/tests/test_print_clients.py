@@ -40,8 +40,10 @@ def check_part(path, volume: float) -> None:
     "surface,box",
     [("torus", None), ("max(max(abs(x),abs(y)),abs(z))-1", ((-1.5,) * 3, (1.5,) * 3)),
      # A gyroid lattice capped by its box (docs/lattices.md): one closed part with sharp caps.
-     ("max(sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x),max(max(abs(x),abs(y)),abs(z))-pi)", ((-3.3,) * 3, (3.3,) * 3))],
-    ids=["torus", "cube_with_creases", "capped_gyroid"],
+     ("max(sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x),max(max(abs(x),abs(y)),abs(z))-pi)", ((-3.3,) * 3, (3.3,) * 3)),
+     # The same lattice cut by a ball: two curved faces joined along their crease.
+     ("max(sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x),x^2+y^2+z^2-9)", ((-3.4,) * 3, (3.4,) * 3))],
+    ids=["torus", "cube_with_creases", "capped_gyroid", "ball_cut_gyroid"],
 )
 @pytest.mark.parametrize("extension", ["3mf", "stl"])
 def test_a_slicer_reads_one_manifold_part_of_the_meshs_volume(tmp_path, surface, box, extension):

@@ -15,6 +15,7 @@
 
 #include "api/capped_meshing.hpp"
 #include "api/crease_meshing.hpp"
+#include "api/curved_cut.hpp"
 #include "api/curvature_feature_sizes.hpp"
 #include "api/cut_feature_sizes.hpp"
 #include "api/frame_meshing.hpp"
@@ -99,7 +100,8 @@ std::optional<LocalRefinement> local_refinement(const Surface& surface, const Se
     return std::nullopt;
   const double edge = default_edge_length(settings, box);
   const double smallest = std::min(target_sizes(settings, box).smallest, edge);
-  std::vector<SizeSource> sources = cut_feature_sources(surface, box, settings.region, edge, smallest);
+  std::vector<SizeSource> sources;
+  if (settings.cut_sizes) sources = cut_feature_sources(surface, box, settings.region, edge, smallest);
   const std::size_t cut_sources = sources.size();
   // Rims and tubes thinner than an edge may ask for sizes below the usual floor (1/2048 of the box),
   // down to a share of the edge length: the octree then deepens to follow them.
@@ -242,12 +244,21 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   } catch (const CreaseError&) {
     if (stats) *stats = before;
   }
+  // Two smooth solids intersected (a lattice cut by a sphere) are their trimmed faces joined along the
+  // crease, whatever the faces' genus; where they cannot be joined, the general crease path meshes them.
+  std::string cut_failure;
+  try {
+    if (std::optional<Mesh> cut = mesh_curved_cut(surface, settings, stats)) return std::move(*cut);
+  } catch (const CreaseError& e) {
+    cut_failure = e.what();
+    if (stats) *stats = before;
+  }
   CreasedMesh creased;
   try {
     creased = mesh_along_creases(surface, settings, stats);
   } catch (const CreaseError& e) {
-    // Every refusal says what would mesh the shape.
-    const std::string what = e.what();
+    // Every refusal says what would mesh the shape; for two solids intersected, why their join failed.
+    const std::string what = cut_failure.empty() ? std::string(e.what()) : cut_failure;
     if (what.find("creases off") != std::string::npos) throw;
     throw CreaseError(
         what +

@@ -257,4 +257,17 @@ std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box) 
   return CappedShape{std::move(g), std::move(planes)};
 }
 
+std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box) {
+  const Expression* formula = f.expression();
+  if (formula == nullptr || formula->tape().code.empty()) return std::nullopt;
+  LeafWalk walk(formula->tape());
+  std::vector<BranchChoice> leaves;
+  if (!walk.run(leaves) || leaves.size() != 2) return std::nullopt;
+  for (const BranchChoice& leaf : leaves)
+    if (walk.leaf_kind(leaf) != Kind::Other) return std::nullopt;
+  return CutShape{
+      expression_surface(Expression(std::make_shared<const Tape>(walk.leaf_tape(leaves[0]))), box, "the first operand"),
+      expression_surface(Expression(std::make_shared<const Tape>(walk.leaf_tape(leaves[1]))), box, "the second operand")};
+}
+
 }  // namespace isopatch

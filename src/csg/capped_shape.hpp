@@ -31,6 +31,17 @@ inline constexpr std::size_t kMaxCapPlanes = 64;
 /// nullopt). Duplicate planes are kept once. g is a formula surface over `box`.
 std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box);
 
+/// Two smooth solids intersected: f = max(a, b) through increasing steps, neither operand with a plane
+/// under it (a lattice cut by a sphere: max(gyroid, x^2 + y^2 + z^2 - r^2)). Meshed as a = 0 trimmed where
+/// b < 0 and b = 0 trimmed where a < 0, joined along their crease (api/curved_cut.hpp).
+struct CutShape {
+  SurfacePtr first, second;  ///< a and b, in the formula's order (formulas of their own over the box)
+};
+
+/// Splits `f` when it is max(a, b) as above (exactly two leaves of f's tree of max, both not affine);
+/// nullopt for any other formula (nothing is evaluated; `f` without an expression gives nullopt).
+std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box);
+
 /// A lattice closed by a skin: f = min(max(g, P), max(P, -R)) (either order, through increasing steps
 /// at the root; each operand a capped shape as above): the polyhedron P of the part's planes, solid
 /// between it and the inner polyhedron R, the lattice g < 0 inside R ("a lattice shelled by its box").

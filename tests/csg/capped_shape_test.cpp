@@ -20,6 +20,7 @@
 #include "core/triangle_angle.hpp"
 #include "csg/capped_shape.hpp"
 #include "mesh_checks.hpp"
+#include "part_checks.hpp"
 #include "self_intersection.hpp"
 
 namespace isopatch {
@@ -81,73 +82,20 @@ TEST(CappedShape, OtherFormulasAreNotCappedShapes) {
   EXPECT_FALSE(split("max(" + kCapGyroid + ",-2)"));                // a constant operand
 }
 
-struct CappedRun {
-  SurfacePtr surface;
-  Mesh mesh;
-  MeshStats stats;
-};
-
 /// The formula meshed in the cube of half-side `box` with `s` (its box set).
-CappedRun mesh_capped(const std::string& formula, double box, Settings s) {
-  CappedRun run;
+test::CappedRun mesh_capped(const std::string& formula, double box, Settings s) {
+  test::CappedRun run;
   run.surface = expression_surface(formula, capped_box(box));
   s.box = capped_box(box);
   run.mesh = mesh_surface(*run.surface, s, &run.stats);
   return run;
 }
 
-CappedRun mesh_capped(const std::string& formula, double box, double edge, int threads = 0) {
+test::CappedRun mesh_capped(const std::string& formula, double box, double edge, int threads = 0) {
   Settings s;
   s.edge_length = edge;
   s.threads = threads;
   return mesh_capped(formula, box, s);
-}
-
-/// Checks a capped part: closed, manifold, outward, no self-intersection, vertices on f = 0, every
-/// vertex where a cap triangle meets a triangle off that cap on both faces, the angle and valence floors.
-void expect_valid_part(const CappedRun& run, const std::vector<SurfacePtr>& faces, double diagonal) {
-  const TopologyReport t = analyze_topology(run.mesh);
-  EXPECT_TRUE(t.watertight());
-  EXPECT_TRUE(t.manifold());
-  EXPECT_TRUE(t.consistently_oriented());
-  EXPECT_EQ(t.unreferenced_vertices, 0u);
-  EXPECT_GT(test::enclosed_volume(run.mesh), 0.0);
-  EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
-  EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-9 * diagonal);
-  // The face each triangle lies on (the first whose function vanishes at its three corners).
-  std::vector<std::vector<int>> around(run.mesh.vertex_count());
-  for (const Triangle& tri : run.mesh.triangles)
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      bool on = true;
-      for (std::uint32_t v : tri)
-        on = on && std::abs(faces[f]->value(run.mesh.positions[v])) < 1e-9 * diagonal;
-      if (!on) continue;
-      for (std::uint32_t v : tri) around[v].push_back(static_cast<int>(f));
-      break;
-    }
-  std::size_t crease = 0;
-  for (std::size_t v = 0; v < around.size(); ++v) {
-    std::vector<int> a = around[v];
-    std::sort(a.begin(), a.end());
-    a.erase(std::unique(a.begin(), a.end()), a.end());
-    if (a.size() < 2) continue;
-    ++crease;
-    for (int f : a) {
-      const ValueGradient g = faces[static_cast<std::size_t>(f)]->value_gradient(run.mesh.positions[v]);
-      EXPECT_LT(std::abs(g.value) / g.gradient.norm(), 1e-9 * diagonal) << "vertex " << v << " face " << f;
-    }
-  }
-  EXPECT_GT(crease, 0u);
-  ASSERT_TRUE(run.stats.creases);
-  EXPECT_GT(run.stats.creases->caps, 0u);
-  EXPECT_GE(run.stats.creases->crease_vertices, crease);
-  const std::vector<int> valence = test::valences(run.mesh);
-  EXPECT_GE(static_cast<double>(std::count(valence.begin(), valence.end(), 6)) /
-                static_cast<double>(valence.size()),
-            0.90);
-  // The crease path's floor: narrow corners where the cut meets the polyhedron's edges and corners keep
-  // one triangle per 60 degrees (cap_wedges.hpp).
-  EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0);
 }
 
 std::vector<SurfacePtr> faces_of(const std::string& smooth, const Box& box) {
@@ -163,15 +111,15 @@ std::vector<SurfacePtr> faces_of(const std::string& smooth, const Box& box) {
 TEST(CappedLattice, AGyroidCappedByItsBoxIsAClosedPartAlongItsCreases) {
   // The box through the gyroid's zeros at its corners and edge midpoints (whole half periods): the
   // cut vertices there are the polyhedron's corners.
-  const CappedRun run = mesh_capped("max(" + kCapGyroid + "," + kCapBox + ")", 3.3, 0.21);
-  expect_valid_part(run, faces_of(kCapGyroid, capped_box(3.3)), capped_box(3.3).diagonal());
+  const test::CappedRun run = mesh_capped("max(" + kCapGyroid + "," + kCapBox + ")", 3.3, 0.21);
+  test::expect_valid_part(run, faces_of(kCapGyroid, capped_box(3.3)), capped_box(3.3).diagonal());
   EXPECT_EQ(run.stats.creases->caps, 6u);
 }
 
 TEST(CappedLattice, ASchwarzPSheetCappedByItsBoxIsAClosedPart) {
   const std::string sheet = "abs(" + kCapSchwarzP + ")-0.4";
-  const CappedRun run = mesh_capped("max(" + sheet + "," + kCapBox + ")", 3.3, 0.2);
-  expect_valid_part(run, faces_of(sheet, capped_box(3.3)), capped_box(3.3).diagonal());
+  const test::CappedRun run = mesh_capped("max(" + sheet + "," + kCapBox + ")", 3.3, 0.2);
+  test::expect_valid_part(run, faces_of(sheet, capped_box(3.3)), capped_box(3.3).diagonal());
 }
 
 TEST(CappedLattice, AnErrorBoundGradesTheCutAndTheCapsFollowIt) {
@@ -179,15 +127,15 @@ TEST(CappedLattice, AnErrorBoundGradesTheCutAndTheCapsFollowIt) {
   // caps take the cut's mean edge, so no triangle at the creases spans the two sizes.
   Settings s;
   s.max_error = 0.01;
-  const CappedRun run = mesh_capped("max(" + kCapGyroid + "," + kCapBox + ")", 3.3, s);
-  expect_valid_part(run, faces_of(kCapGyroid, capped_box(3.3)), capped_box(3.3).diagonal());
+  const test::CappedRun run = mesh_capped("max(" + kCapGyroid + "," + kCapBox + ")", 3.3, s);
+  test::expect_valid_part(run, faces_of(kCapGyroid, capped_box(3.3)), capped_box(3.3).diagonal());
 }
 
 TEST(CappedLattice, TheVolumeConvergesAndTheTopologyHolds) {
   // Schwarz P capped by the box of one period: half the cube is solid by symmetry (f(-p - pi) = -f(p)).
   const std::string part = "max(" + kCapSchwarzP + "," + kCapBox + ")";
-  const CappedRun coarse = mesh_capped(part, 3.3, 0.2);
-  const CappedRun fine = mesh_capped(part, 3.3, 0.1);
+  const test::CappedRun coarse = mesh_capped(part, 3.3, 0.2);
+  const test::CappedRun fine = mesh_capped(part, 3.3, 0.1);
   const double half = 0.5 * std::pow(2.0 * std::numbers::pi, 3);
   EXPECT_NEAR(test::enclosed_volume(coarse.mesh) / half, 1.0, 2e-3);
   EXPECT_NEAR(test::enclosed_volume(fine.mesh) / half, 1.0, 5e-4);
@@ -197,8 +145,8 @@ TEST(CappedLattice, TheVolumeConvergesAndTheTopologyHolds) {
 
 TEST(CappedLattice, TheSameBytesForOneAndTwoThreads) {
   const std::string part = "max(" + kCapGyroid + "," + kCapBox + ")";
-  const CappedRun one = mesh_capped(part, 3.3, 0.25, 1);
-  const CappedRun two = mesh_capped(part, 3.3, 0.25, 2);
+  const test::CappedRun one = mesh_capped(part, 3.3, 0.25, 1);
+  const test::CappedRun two = mesh_capped(part, 3.3, 0.25, 2);
   ASSERT_EQ(one.mesh.positions.size(), two.mesh.positions.size());
   EXPECT_EQ(one.mesh.positions, two.mesh.positions);
   EXPECT_EQ(one.mesh.triangles, two.mesh.triangles);
@@ -208,14 +156,14 @@ TEST(CappedLattice, CreasesOffMeshesTheFormulaAsASmoothSurface) {
   Settings s;
   s.edge_length = 0.3;
   s.creases = Creases::Off;
-  const CappedRun run = mesh_capped("max(" + kCapSchwarzP + "," + kCapBox + ")", 3.0, s);
+  const test::CappedRun run = mesh_capped("max(" + kCapSchwarzP + "," + kCapBox + ")", 3.0, s);
   EXPECT_FALSE(run.stats.creases);
 }
 
 TEST(CappedLattice, APolyhedronLeavingTheBoxIsCutOpenByItWithItsCreasesExact) {
   // A gyroid under the plane z = 1 in a box the plane does not close: the box cuts the part open.
   const std::string part = "max(" + kCapGyroid + ",z-1)";
-  const CappedRun run = mesh_capped(part, 3.0, 0.15);
+  const test::CappedRun run = mesh_capped(part, 3.0, 0.15);
   ASSERT_TRUE(run.stats.creases);
   EXPECT_EQ(run.stats.creases->caps, 1u);
   const TopologyReport t = analyze_topology(run.mesh);
@@ -293,7 +241,7 @@ TEST(CappedLattice, ALatticeShelledByItsBoxIsTheBoxAndItsHollowsAlongTheCreases)
   ASSERT_TRUE(split_part);
   EXPECT_EQ(split_part->outer.size(), 6u);
   EXPECT_EQ(split_part->inner.size(), 6u);
-  const CappedRun run = mesh_capped(part, 4.0, 0.2);
+  const test::CappedRun run = mesh_capped(part, 4.0, 0.2);
   ASSERT_TRUE(run.stats.creases);
   EXPECT_EQ(run.stats.creases->caps, 12u);
   const TopologyReport t = analyze_topology(run.mesh);

@@ -1,0 +1,28 @@
+#pragma once
+// Two smooth solids intersected, f = max(a, b) (csg/capped_shape.hpp CutShape): a lattice cut by a
+// sphere, a sheet inside a cylinder's solid, a ball with a bored bump. Each operand is meshed whole by
+// the smooth mesher (the multiresolution refinement, any genus), the crease a = b = 0 is traced once on
+// a's mesh (crease_loops.hpp), and each mesh is trimmed to the other's solid and joined to the crease
+// (zipped_face.hpp): no face is ever cut into discs, so faces of hundreds of handles are meshed like any
+// surface. docs/lattices.md.
+
+#include <isopatch/mesh.hpp>
+#include <isopatch/mesh_stats.hpp>
+#include <isopatch/settings.hpp>
+#include <isopatch/surface.hpp>
+
+#include <optional>
+
+namespace isopatch {
+
+/// The mesh of `surface` as two smooth solids intersected, or nullopt when it is not one: not a formula,
+/// not max(a, b) with both operands curved, creases off, another method, a region or cells given, an
+/// operand with creases of its own, or neither operand's solid inside the box (the part would leave it).
+/// The mesh is closed, outward, a 2-manifold; every crease vertex lies on a = 0 and b = 0 to 1e-9 of the
+/// box's diagonal, every other vertex on its face. `stats` holds the lattice operand's run with the
+/// other's vertices and the crease added (MeshStats::creases, stage "caps").
+/// \throw CreaseError naming the place when the faces cannot be joined (surfaces meeting tangentially,
+///        a feature narrower than an edge at the crease); the errors of mesh_surface().
+std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& settings, MeshStats* stats);
+
+}  // namespace isopatch

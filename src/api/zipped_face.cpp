@@ -1,0 +1,291 @@
+// One face of two smooth solids' intersection, trimmed and joined to the crease loops (zipped_face.hpp).
+#include "api/zipped_face.hpp"
+
+#include <isopatch/error.hpp>
+#include <isopatch/remesh.hpp>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <map>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "api/band_join.hpp"
+#include "api/local_cleanup.hpp"
+#include "csg/crease_graph.hpp"
+#include "remesh/remesh_presets.hpp"
+
+namespace isopatch {
+
+namespace {
+
+/// Vertices closer to o = 0 than this share of an edge (or beyond it) are trimmed: the band to the
+/// crease is then at least that wide, and the clean-up evens it. Narrower bands are tried in turn where
+/// the join fails (creases closer than the band is wide).
+constexpr double kTrimWidths[] = {0.3, 0.15, 0.05};
+/// A trimmed piece with no vertex farther than this many edges from o = 0 lies in a strip between creases
+/// (a sheet's wall meeting the cutter): it is dropped, and the strip joined crease to crease.
+constexpr double kStripWidth = 1.5;
+/// The opening keeps what lies within this many rings of a vertex farther than kStripWidth edges.
+constexpr int kOpeningRings = 2;
+/// The clean-up reaches this many rings from the band of new triangles.
+constexpr int kCleanedRings = 3;
+
+std::uint64_t half_edge_key(std::uint32_t u, std::uint32_t v) {
+  return (static_cast<std::uint64_t>(u) << 32) | v;
+}
+
+/// `triangles` without those at a vertex where two fans of them meet (a bow tie), until none is left.
+std::vector<Triangle> without_pinches(std::vector<Triangle> kept) {
+  while (true) {
+    std::unordered_set<std::uint64_t> half;
+    for (const Triangle& t : kept)
+      for (std::size_t k = 0; k < 3; ++k) half.insert(half_edge_key(t[k], t[(k + 1) % 3]));
+    std::unordered_map<std::uint32_t, int> outgoing;
+    for (const Triangle& t : kept)
+      for (std::size_t k = 0; k < 3; ++k)
+        if (!half.count(half_edge_key(t[(k + 1) % 3], t[k]))) ++outgoing[t[k]];
+    std::unordered_set<std::uint32_t> pinched;
+    for (const auto& [v, count] : outgoing)
+      if (count > 1) pinched.insert(v);
+    if (pinched.empty()) return kept;
+    std::erase_if(kept, [&pinched](const Triangle& t) {
+      return pinched.count(t[0]) || pinched.count(t[1]) || pinched.count(t[2]);
+    });
+  }
+}
+
+/// The triangles of `kept` within kOpeningRings rings (through `kept`) of a vertex farther than
+/// kStripWidth edges from o = 0: the thin tails of a piece, and thin pieces, go (a morphological opening).
+std::vector<Triangle> opened(const std::vector<Triangle>& kept, const std::vector<double>& distance, double edge) {
+  std::unordered_map<std::uint32_t, int> ring;
+  for (const Triangle& t : kept)
+    for (std::uint32_t v : t)
+      if (distance[v] < -kStripWidth * edge) ring[v] = 0;
+  for (int r = 1; r <= kOpeningRings; ++r) {
+    std::vector<std::uint32_t> reached;
+    for (const Triangle& t : kept) {
+      bool near = false;
+      for (std::uint32_t v : t) {
+        const auto it = ring.find(v);
+        near = near || (it != ring.end() && it->second == r - 1);
+      }
+      if (near)
+        for (std::uint32_t v : t)
+          if (!ring.count(v)) reached.push_back(v);
+    }
+    for (std::uint32_t v : reached) ring.emplace(v, r);
+  }
+  std::vector<Triangle> out;
+  for (const Triangle& t : kept)
+    if (ring.count(t[0]) && ring.count(t[1]) && ring.count(t[2])) out.push_back(t);
+  return without_pinches(std::move(out));
+}
+
+/// `kept` (triangles of a mesh whose vertices lie at `distance` from o = 0) without its edge-connected
+/// pieces that lie within kStripWidth edges of o = 0 throughout.
+std::vector<Triangle> without_thin_pieces(const std::vector<Triangle>& kept, const std::vector<double>& distance,
+                                          double edge) {
+  std::unordered_map<std::uint32_t, std::uint32_t> parent;
+  const auto find = [&parent](std::uint32_t v) {
+    auto it = parent.try_emplace(v, v).first;
+    while (it->second != v) {
+      v = it->second;
+      it = parent.find(v);
+    }
+    return v;
+  };
+  for (const Triangle& t : kept)
+    for (std::size_t k = 1; k < 3; ++k) {
+      const std::uint32_t a = find(t[0]), b = find(t[k]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::unordered_set<std::uint32_t> thick;
+  for (const Triangle& t : kept)
+    for (std::uint32_t v : t)
+      if (distance[v] < -kStripWidth * edge) thick.insert(find(v));
+  std::vector<Triangle> out;
+  for (const Triangle& t : kept)
+    if (thick.count(find(t[0]))) out.push_back(t);
+  return out;
+}
+
+/// The boundary loops of `triangles` (a 2-manifold), each in its triangles' direction (the face on the
+/// left), starting at its smallest vertex, in the order of those.
+std::vector<std::vector<std::uint32_t>> boundary_loops(const std::vector<Triangle>& triangles) {
+  std::unordered_set<std::uint64_t> half;
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) half.insert(half_edge_key(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]));
+  std::map<std::uint32_t, std::uint32_t> next;
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t u = t[static_cast<std::size_t>(k)], v = t[static_cast<std::size_t>((k + 1) % 3)];
+      if (!half.count(half_edge_key(v, u))) next[u] = v;
+    }
+  std::vector<std::vector<std::uint32_t>> loops;
+  std::unordered_set<std::uint32_t> used;
+  for (const auto& [first, unused] : next) {
+    if (used.count(first)) continue;
+    std::vector<std::uint32_t> loop;
+    std::uint32_t v = first;
+    while (!used.count(v)) {
+      used.insert(v);
+      loop.push_back(v);
+      const auto it = next.find(v);
+      if (it == next.end()) break;
+      v = it->second;
+    }
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+/// A point of s = 0 near `p` (Newton steps along grad s).
+Vec3 onto_surface(const Surface& s, Vec3 p) {
+  for (int it = 0; it < 30; ++it) {
+    const ValueGradient g = s.value_gradient(p);
+    const double n2 = g.gradient.squaredNorm();
+    if (!(n2 > 0.0) || !std::isfinite(g.value)) break;
+    const Vec3 step = g.value / n2 * g.gradient;
+    p -= step;
+    if (step.norm() < 1e-15 * (1.0 + p.norm())) break;
+  }
+  return p;
+}
+
+/// Whether the loop lies within two edges of its centroid (a face that small, closed by a fan).
+bool small_loop(const std::vector<std::uint32_t>& loop, const std::vector<Vec3>& positions, double edge) {
+  Vec3 centre = Vec3::Zero();
+  for (std::uint32_t v : loop) centre += positions[v];
+  centre /= static_cast<double>(loop.size());
+  return std::all_of(loop.begin(), loop.end(),
+                     [&](std::uint32_t v) { return (positions[v] - centre).norm() <= 2.0 * edge; });
+}
+
+}  // namespace
+
+Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
+                         bool reversed, double edge, const Settings& settings, const Box& box) {
+  // The crease points first, every loop in this face's boundary direction.
+  Mesh face;
+  std::vector<std::vector<std::uint32_t>> crease;
+  for (const CreaseLoop& loop : loops) {
+    std::vector<std::uint32_t> ids;
+    for (const Vec3& p : loop.points) {
+      ids.push_back(static_cast<std::uint32_t>(face.positions.size()));
+      face.positions.push_back(p);
+    }
+    if (reversed) std::reverse(ids.begin(), ids.end());
+    crease.push_back(std::move(ids));
+  }
+  const std::vector<Vec3> crease_points(face.positions);
+  const std::size_t held = crease_points.size();
+  // The distance to o = 0 at every vertex, to first order.
+  std::vector<ValueGradient> values(mesh.positions.size());
+  o.value_gradients(mesh.positions, values);
+  std::vector<double> distance(mesh.positions.size());
+  for (std::size_t v = 0; v < distance.size(); ++v) {
+    const double n = values[v].gradient.norm();
+    if (!std::isfinite(values[v].value) || !std::isfinite(n))
+      throw EvaluationError("the cutting surface is not finite at " + point_text(mesh.positions[v]));
+    distance[v] = n > 0.0 ? values[v].value / n : values[v].value;
+  }
+  // The mesh where o < 0, clear of the crease by a band, joined to it; a narrower band where that fails.
+  std::optional<BandJoin> band;
+  std::size_t kept_triangles = 0;
+  std::string failure;
+  for (int trial = 0; trial < 3 * static_cast<int>(std::size(kTrimWidths)) && !band; ++trial) {
+    // At each width: thin tails and pieces dropped (their strips joined crease to crease), then only thin
+    // pieces, then none (walked, where the strips branch).
+    const double width = kTrimWidths[trial / 3];
+    std::vector<std::uint8_t> keep(mesh.positions.size(), 0);
+    for (std::size_t v = 0; v < keep.size(); ++v) keep[v] = distance[v] < -width * edge ? 1 : 0;
+    std::vector<Triangle> kept;
+    for (const Triangle& t : mesh.triangles)
+      if (keep[t[0]] && keep[t[1]] && keep[t[2]]) kept.push_back(t);
+    kept = without_pinches(std::move(kept));
+    if (trial % 3 == 0) kept = opened(kept, distance, edge);
+    if (trial % 3 == 1) kept = without_thin_pieces(kept, distance, edge);
+    face.positions.resize(held);
+    face.triangles.clear();
+    std::vector<std::int64_t> id(mesh.positions.size(), -1);
+    for (const Triangle& t : kept) {
+      Triangle f{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (id[t[k]] < 0) {
+          id[t[k]] = static_cast<std::int64_t>(face.positions.size());
+          face.positions.push_back(mesh.positions[t[k]]);
+        }
+        f[k] = static_cast<std::uint32_t>(id[t[k]]);
+      }
+      face.triangles.push_back(f);
+    }
+    const std::vector<std::vector<std::uint32_t>> boundary = boundary_loops(face.triangles);
+    band = join_band({face.positions, crease, boundary, edge}, failure);
+    if (!band) continue;
+    // Crease loops no walk reached and no strip took: faces under an edge, closed by fans.
+    for (std::size_t c = 0; c < crease.size() && band; ++c)
+      if (band->untouched[c] && !small_loop(crease[c], face.positions, edge)) {
+        failure = "the face of max(a, b) has a crease with no face beside it near " +
+                  point_text(face.positions[crease[c].front()]) + ": creases closer than an edge";
+        band.reset();
+      }
+    if (band) kept_triangles = face.triangles.size();
+  }
+  if (!band) throw CreaseError(failure + "; a smaller edge length");
+  for (const Vec3& p : band->extra) face.positions.push_back(onto_surface(s, p));
+  face.triangles.insert(face.triangles.end(), band->triangles.begin(), band->triangles.end());
+  for (std::size_t c = 0; c < crease.size(); ++c) {
+    if (!band->untouched[c]) continue;
+    Vec3 centre = Vec3::Zero();
+    for (std::uint32_t v : crease[c]) centre += face.positions[v];
+    centre /= static_cast<double>(crease[c].size());
+    const auto middle = static_cast<std::uint32_t>(face.positions.size());
+    face.positions.push_back(onto_surface(s, centre));
+    for (std::size_t k = 0; k < crease[c].size(); ++k)
+      face.triangles.push_back({crease[c][k], crease[c][(k + 1) % crease[c].size()], middle});
+  }
+  // The clean-up on s near the band, the crease held: its vertices come back bit for bit.
+  RemeshSettings r = preset_remesh_settings(settings, kDefaultRemeshIterations);
+  r.sizes = target_sizes(settings, box);
+  r.sizes.largest = edge;
+  r.sizes.smallest = std::min(r.sizes.smallest, edge);
+  std::vector<std::uint8_t> seed(face.positions.size(), 0);
+  for (std::size_t t = kept_triangles; t < face.triangles.size(); ++t)
+    for (std::uint32_t v : face.triangles[t]) seed[v] = 1;
+  clean_up_near(face, s, seed, kCleanedRings, r);
+  // Referenced vertices only, the crease's first (found by their bits), the others in triangle order.
+  std::map<std::array<std::uint64_t, 3>, std::uint32_t> crease_id;
+  const auto bits = [](const Vec3& p) {
+    return std::array<std::uint64_t, 3>{std::bit_cast<std::uint64_t>(p.x()), std::bit_cast<std::uint64_t>(p.y()),
+                                        std::bit_cast<std::uint64_t>(p.z())};
+  };
+  for (std::uint32_t k = 0; k < held; ++k) crease_id[bits(crease_points[k])] = k;
+  std::vector<Vec3> positions(crease_points);
+  std::vector<std::int64_t> renumber(face.positions.size(), -1);
+  for (Triangle& t : face.triangles)
+    for (std::uint32_t& v : t) {
+      if (renumber[v] < 0) {
+        const auto it = crease_id.find(bits(face.positions[v]));
+        if (it != crease_id.end()) {
+          renumber[v] = it->second;
+        } else {
+          renumber[v] = static_cast<std::int64_t>(positions.size());
+          positions.push_back(face.positions[v]);
+        }
+      }
+      v = static_cast<std::uint32_t>(renumber[v]);
+    }
+  face.positions = std::move(positions);
+  face.attributes.clear();
+  return face;
+}
+
+}  // namespace isopatch

@@ -1,0 +1,76 @@
+#pragma once
+// The checks of a lattice part meshed along its creases (capped by planes or cut by a curved solid):
+// closed, manifold, outward, free of self-intersections, every vertex on f = 0, every crease vertex on
+// both of its faces, the valence and angle floors.
+#include <gtest/gtest.h>
+
+#include <isopatch/isopatch.hpp>
+#include <isopatch/topology.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mesh_checks.hpp"
+#include "self_intersection.hpp"
+
+namespace isopatch::test {
+
+struct CappedRun {
+  SurfacePtr surface;
+  Mesh mesh;
+  MeshStats stats;
+};
+
+/// Checks a capped part: closed, manifold, outward, no self-intersection, vertices on f = 0, every
+/// vertex where a cap triangle meets a triangle off that cap on both faces, the angle and valence floors;
+/// `planar_caps`: the statistics count planar caps (a curved cut has none).
+inline void expect_valid_part(const CappedRun& run, const std::vector<SurfacePtr>& faces, double diagonal,
+                              bool planar_caps = true) {
+  const TopologyReport t = analyze_topology(run.mesh);
+  EXPECT_TRUE(t.watertight());
+  EXPECT_TRUE(t.manifold());
+  EXPECT_TRUE(t.consistently_oriented());
+  EXPECT_EQ(t.unreferenced_vertices, 0u);
+  EXPECT_GT(test::enclosed_volume(run.mesh), 0.0);
+  EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
+  EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-9 * diagonal);
+  // The face each triangle lies on (the first whose function vanishes at its three corners).
+  std::vector<std::vector<int>> around(run.mesh.vertex_count());
+  for (const Triangle& tri : run.mesh.triangles)
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      bool on = true;
+      for (std::uint32_t v : tri)
+        on = on && std::abs(faces[f]->value(run.mesh.positions[v])) < 1e-9 * diagonal;
+      if (!on) continue;
+      for (std::uint32_t v : tri) around[v].push_back(static_cast<int>(f));
+      break;
+    }
+  std::size_t crease = 0;
+  for (std::size_t v = 0; v < around.size(); ++v) {
+    std::vector<int> a = around[v];
+    std::sort(a.begin(), a.end());
+    a.erase(std::unique(a.begin(), a.end()), a.end());
+    if (a.size() < 2) continue;
+    ++crease;
+    for (int f : a) {
+      const ValueGradient g = faces[static_cast<std::size_t>(f)]->value_gradient(run.mesh.positions[v]);
+      EXPECT_LT(std::abs(g.value) / g.gradient.norm(), 1e-9 * diagonal) << "vertex " << v << " face " << f;
+    }
+  }
+  EXPECT_GT(crease, 0u);
+  ASSERT_TRUE(run.stats.creases);
+  if (planar_caps) {
+    EXPECT_GT(run.stats.creases->caps, 0u);
+  }
+  EXPECT_GE(run.stats.creases->crease_vertices, crease);
+  const std::vector<int> valence = test::valences(run.mesh);
+  EXPECT_GE(static_cast<double>(std::count(valence.begin(), valence.end(), 6)) /
+                static_cast<double>(valence.size()),
+            0.90);
+  // The crease path's floor: narrow corners where the cut meets the polyhedron's edges and corners keep
+  // one triangle per 60 degrees (cap_wedges.hpp).
+  EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0);
+}
+
+}  // namespace isopatch::test
