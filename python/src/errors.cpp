@@ -5,6 +5,9 @@
 #include <isopatch/error.hpp>
 #include <isopatch/expression.hpp>
 
+#include <regex>
+#include <string>
+
 namespace py = pybind11;
 
 namespace isopatch::python {
@@ -37,6 +40,31 @@ const char* class_name(ErrorKind kind) {
   return "InternalError";
 }
 
+/// A message in Python's words: the command line's flags the library names (`--creases off`, a smaller
+/// `--edge-length`, `--grid NAME`) become the keyword arguments of isopatch.mesh (`creases="off"`,
+/// `edge_length`, `grid=NAME`).
+std::string in_python_words(const std::string& message) {
+  static const std::regex flag(
+      R"((^|[\s(,;])--([a-z][a-z-]*)(?: (off|auto|on|preview|default|fine|[A-Z]+)\b)?)");
+  std::string out;
+  std::size_t last = 0;
+  for (std::sregex_iterator it(message.begin(), message.end(), flag), end; it != end; ++it) {
+    const std::smatch& m = *it;
+    out += message.substr(last, static_cast<std::size_t>(m.position(0)) - last);
+    std::string name = m[2].str();
+    for (char& c : name)
+      if (c == '-') c = '_';
+    out += m[1].str() + name;
+    if (m[3].matched) {
+      const std::string value = m[3].str();
+      const bool placeholder = value.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ") == std::string::npos;
+      out += placeholder ? "=" + value : "=\"" + value + "\"";
+    }
+    last = static_cast<std::size_t>(m.position(0) + m.length(0));
+  }
+  return out + message.substr(last);
+}
+
 void raise(const Error& e) {
   const py::module_ errors = py::module_::import("isopatch._errors");
   // An InputError about one setting is a SettingError (a subclass of InputError).
@@ -47,7 +75,7 @@ void raise(const Error& e) {
     instance = cls(e.what(), py::arg("line") = parse->line(), py::arg("column") = parse->column(),
                    py::arg("excerpt") = parse->excerpt());
   else
-    instance = cls(e.what(), py::arg("setting") = e.setting());
+    instance = cls(in_python_words(e.what()), py::arg("setting") = e.setting());
   PyErr_SetObject(cls.ptr(), instance.ptr());
 }
 

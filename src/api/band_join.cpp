@@ -61,12 +61,13 @@ class CreaseGrid {
 
  private:
   std::array<std::int64_t, 3> cell_of(const Vec3& p) const {
-    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)), static_cast<std::int64_t>(std::floor(p.y() / cell_)),
+    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)),
+            static_cast<std::int64_t>(std::floor(p.y() / cell_)),
             static_cast<std::int64_t>(std::floor(p.z() / cell_))};
   }
   static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
-    return (static_cast<std::uint64_t>(c[0] & 0x1FFFFF) << 42) | (static_cast<std::uint64_t>(c[1] & 0x1FFFFF) << 21) |
-           static_cast<std::uint64_t>(c[2] & 0x1FFFFF);
+    return (static_cast<std::uint64_t>(c[0] & 0x1FFFFF) << 42) |
+           (static_cast<std::uint64_t>(c[1] & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(c[2] & 0x1FFFFF);
   }
 
   const std::vector<Vec3>& points_;
@@ -89,12 +90,12 @@ struct Run {
 
 /// Triangles joining the open chain `p` (the band on its right) to the open chain `q` (the band on its
 /// left) that starts beside p's first point, across the shorter diagonal each time.
-void zip_chains(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& p, const std::vector<std::uint32_t>& q,
-                std::vector<Triangle>& out) {
+void zip_chains(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& p,
+                const std::vector<std::uint32_t>& q, std::vector<Triangle>& out) {
   std::size_t i = 0, j = 0;
   while (i + 1 < p.size() || j + 1 < q.size()) {
-    const bool advance_p =
-        j + 1 == q.size() || (i + 1 < p.size() && (x[p[i + 1]] - x[q[j]]).norm() <= (x[q[j + 1]] - x[p[i]]).norm());
+    const bool advance_p = j + 1 == q.size() || (i + 1 < p.size() && (x[p[i + 1]] - x[q[j]]).norm() <=
+                                                                         (x[q[j + 1]] - x[p[i]]).norm());
     if (advance_p) {
       out.push_back({p[i + 1], p[i], q[j]});
       ++i;
@@ -117,7 +118,8 @@ class BandJoiner {
   BandJoiner(const BandJoinInput& in, std::string& failure)
       : in_(in), failure_(failure), grid_(in.positions, held(in), kBandReach * in.edge) {
     for (std::size_t c = 0; c < in.crease.size(); ++c)
-      for (std::size_t k = 0; k < in.crease[c].size(); ++k) place_[in.crease[c][k]] = {static_cast<std::int64_t>(c), k};
+      for (std::size_t k = 0; k < in.crease[c].size(); ++k)
+        place_[in.crease[c][k]] = {static_cast<std::int64_t>(c), k};
     runs_.resize(in.crease.size());
     used_.resize(in.crease.size());
     for (std::size_t c = 0; c < in.crease.size(); ++c) used_[c].assign(in.crease[c].size(), 0);
@@ -155,20 +157,25 @@ class BandJoiner {
   }
 
   std::size_t size(std::int64_t loop) const { return in_.crease[static_cast<std::size_t>(loop)].size(); }
-  std::uint32_t id(const Place& p) const { return in_.crease[static_cast<std::size_t>(p.loop)][p.index % size(p.loop)]; }
+  std::uint32_t id(const Place& p) const {
+    return in_.crease[static_cast<std::size_t>(p.loop)][p.index % size(p.loop)];
+  }
   const Vec3& at(std::uint32_t v) const { return in_.positions[v]; }
 
-  void use(std::int64_t loop, std::size_t index) { ++used_[static_cast<std::size_t>(loop)][index % size(loop)]; }
+  void use(std::int64_t loop, std::size_t index) {
+    ++used_[static_cast<std::size_t>(loop)][index % size(loop)];
+  }
 
   /// Walks one boundary loop of the trimmed face along the creases beside it.
   bool walk(const std::vector<std::uint32_t>& p) {
     const std::size_t n = p.size();
     std::vector<Place> near(n);
     for (std::size_t i = 0; i < n; ++i) {
-      const std::int64_t k = grid_.nearest(at(p[i]), kBandReach * in_.edge, [](std::uint32_t) { return false; });
+      const std::int64_t k =
+          grid_.nearest(at(p[i]), kBandReach * in_.edge, [](std::uint32_t) { return false; });
       if (k < 0) {
-        failure_ = "the face of max(a, b) has a boundary with no crease beside it near " + point_text(at(p[i])) +
-                   ": a feature narrower than an edge";
+        failure_ = "the face of max(a, b) has a boundary with no crease beside it near " +
+                   point_text(at(p[i])) + ": a feature narrower than an edge";
         return false;
       }
       near[i] = place_.at(static_cast<std::uint32_t>(k));
@@ -184,8 +191,9 @@ class BandJoiner {
         for (std::size_t k = 1; k < length && other; ++k) other = near[(i + k) % n].loop == loop;
         if (!other) continue;
         for (std::size_t k = 0; k < length; ++k) {
-          const std::int64_t q = grid_.nearest(at(p[(i + k) % n]), kBandReach * in_.edge,
-                                               [&](std::uint32_t w) { return place_.at(w).loop != before.loop; });
+          const std::int64_t q =
+              grid_.nearest(at(p[(i + k) % n]), kBandReach * in_.edge,
+                            [&](std::uint32_t w) { return place_.at(w).loop != before.loop; });
           if (q >= 0) near[(i + k) % n] = place_.at(static_cast<std::uint32_t>(q));
         }
       }
@@ -201,7 +209,8 @@ class BandJoiner {
       // Along the same arc when the arc to the target is about as long as the way there (a nearest point
       // slightly behind is noise: no step back); else a jump across a neck of this crease.
       const double chord = (at(id(target)) - at(id(state))).norm();
-      const bool along = static_cast<double>(forward) * in_.edge <= kArcToChord * chord + kArcSlack * in_.edge;
+      const bool along =
+          static_cast<double>(forward) * in_.edge <= kArcToChord * chord + kArcSlack * in_.edge;
       if (target.loop == state.loop && (along || back <= kNoiseSteps)) {
         // Along the same arc (a nearest point slightly behind is noise: no step back).
         std::size_t steps = along ? forward : 0;
@@ -256,7 +265,8 @@ class BandJoiner {
       std::vector<Run>& runs = runs_[c];
       std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.start < b.start; });
       for (const Run& run : runs)
-        if (run.to.loop < 0 && (runs.size() != 1 || run.length != in_.crease[c].size())) return refuse(c, run.start);
+        if (run.to.loop < 0 && (runs.size() != 1 || run.length != in_.crease[c].size()))
+          return refuse(c, run.start);
     }
     std::map<std::pair<std::int64_t, std::size_t>, std::size_t> run_ending;  // (loop, end index) -> run
     for (std::size_t c = 0; c < in_.crease.size(); ++c)
@@ -282,7 +292,8 @@ class BandJoiner {
           arcs.push_back(arc(in_.crease[loop], end, gap));
           for (std::size_t k = 0; k < gap; ++k) use(static_cast<std::int64_t>(loop), end + k);
           const auto from = run_ending.find({next.from.loop, next.from.index});
-          if (next.from.loop < 0 || from == run_ending.end() || arcs.size() > kMostNeckArcs) return refuse(loop, end);
+          if (next.from.loop < 0 || from == run_ending.end() || arcs.size() > kMostNeckArcs)
+            return refuse(loop, end);
           loop = static_cast<std::size_t>(next.from.loop);
           run = from->second;
           if (loop == c && run == r) break;
@@ -293,7 +304,9 @@ class BandJoiner {
     return true;
   }
 
-  std::size_t end_of(std::size_t c, const Run& run) const { return (run.start + run.length) % in_.crease[c].size(); }
+  std::size_t end_of(std::size_t c, const Run& run) const {
+    return (run.start + run.length) % in_.crease[c].size();
+  }
 
   /// Triangles over one neck bounded by `arcs` (each along its crease, the neck on its left; the last
   /// point of each bridged to the first of the next).
@@ -320,7 +333,8 @@ class BandJoiner {
 
   bool refuse(std::size_t c, std::size_t index) {
     failure_ = "the face of max(a, b) meets its crease in a knot of necks near " +
-               point_text(in_.positions[in_.crease[c][index % in_.crease[c].size()]]) + ": creases closer than an edge";
+               point_text(in_.positions[in_.crease[c][index % in_.crease[c].size()]]) +
+               ": creases closer than an edge";
     return false;
   }
 
@@ -339,20 +353,23 @@ class BandJoiner {
         if (k >= 0) ++votes[place_.at(static_cast<std::uint32_t>(k)).loop];
       }
       for (const auto& [loop, count] : votes)
-        if (static_cast<double>(count) >= kStripShare * static_cast<double>(in_.crease[c].size())) best[c] = loop;
+        if (static_cast<double>(count) >= kStripShare * static_cast<double>(in_.crease[c].size()))
+          best[c] = loop;
     }
     for (std::size_t c = 0; c < in_.crease.size(); ++c) {
       const std::int64_t o = best[c];
-      if (o <= static_cast<std::int64_t>(c) || best[static_cast<std::size_t>(o)] != static_cast<std::int64_t>(c)) continue;
+      if (o <= static_cast<std::int64_t>(c) ||
+          best[static_cast<std::size_t>(o)] != static_cast<std::int64_t>(c))
+        continue;
       // This loop turned to have the strip on its right, closed, to the other from its nearest point.
       const std::vector<std::uint32_t>& mine = in_.crease[c];
       std::vector<std::uint32_t> side(mine.rbegin(), mine.rend());
       side.push_back(side.front());
-      const std::int64_t k = grid_.nearest(at(side.front()), kBandReach * in_.edge, [&](std::uint32_t w) {
-        return place_.at(w).loop != o;
-      });
+      const std::int64_t k = grid_.nearest(at(side.front()), kBandReach * in_.edge,
+                                           [&](std::uint32_t w) { return place_.at(w).loop != o; });
       const std::size_t start = k >= 0 ? place_.at(static_cast<std::uint32_t>(k)).index : 0;
-      zip_chains(in_.positions, side, arc(in_.crease[static_cast<std::size_t>(o)], start, size(o)), triangles_);
+      zip_chains(in_.positions, side, arc(in_.crease[static_cast<std::size_t>(o)], start, size(o)),
+                 triangles_);
       untouched[c] = untouched[static_cast<std::size_t>(o)] = 0;
       std::fill(used_[c].begin(), used_[c].end(), 1);
       std::fill(used_[static_cast<std::size_t>(o)].begin(), used_[static_cast<std::size_t>(o)].end(), 1);

@@ -31,7 +31,8 @@ std::uint64_t undirected_key(std::uint32_t u, std::uint32_t v) {
 }
 
 /// Puts every point on a = b = 0 from where it is (in parallel; each point its own).
-void settle_all(std::vector<Vec3>& points, const Surface& a, const Surface& b, double edge, double tolerance) {
+void settle_all(std::vector<Vec3>& points, const Surface& a, const Surface& b, double edge,
+                double tolerance) {
   CurvePointParams params;
   params.tolerance = tolerance;
   params.max_step = 0.5 * edge;
@@ -78,8 +79,8 @@ double loop_length(const std::vector<Vec3>& loop) {
 
 }  // namespace
 
-std::vector<CreaseLoop> trace_crease_loops(const Mesh& mesh_a, const Surface& a, const Surface& b, double edge,
-                                           double tolerance) {
+std::vector<CreaseLoop> trace_crease_loops(const Mesh& mesh_a, const Surface& a, const Surface& b,
+                                           double edge, double tolerance) {
   const std::size_t n = mesh_a.positions.size();
   std::vector<double> value(n);
   b.values(mesh_a.positions, value);
@@ -92,7 +93,8 @@ std::vector<CreaseLoop> trace_crease_loops(const Mesh& mesh_a, const Surface& a,
   std::vector<std::array<std::uint32_t, 2>> crossing_edge;
   std::vector<std::array<std::int64_t, 2>> neighbour;  // the crossing across each triangle beside it
   const auto crossing = [&](std::uint32_t u, std::uint32_t v) {
-    const auto [it, added] = crossing_of.emplace(undirected_key(u, v), static_cast<std::uint32_t>(crossing_edge.size()));
+    const auto [it, added] =
+        crossing_of.emplace(undirected_key(u, v), static_cast<std::uint32_t>(crossing_edge.size()));
     if (added) {
       crossing_edge.push_back({u, v});
       neighbour.push_back({-1, -1});

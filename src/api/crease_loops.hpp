@@ -23,7 +23,7 @@ struct CreaseLoop {
 /// \throw CreaseError naming the place when the crease reaches the mesh's boundary (it leaves the mesh's
 ///        box), the surfaces meet tangentially (no curve to settle on), or a resampled loop folds;
 ///        EvaluationError where a or b is not finite.
-std::vector<CreaseLoop> trace_crease_loops(const Mesh& mesh_a, const Surface& a, const Surface& b, double edge,
-                                           double tolerance);
+std::vector<CreaseLoop> trace_crease_loops(const Mesh& mesh_a, const Surface& a, const Surface& b,
+                                           double edge, double tolerance);
 
 }  // namespace isopatch

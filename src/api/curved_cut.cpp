@@ -30,8 +30,8 @@ constexpr double kTrimmedShare = 0.4;
 
 /// One operand meshed whole in `box` as a smooth surface; `trimmed`: its cut by the box is thrown away
 /// (no sizes graded there).
-Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& box, double edge, MeshStats* stats,
-                  bool trimmed = false) {
+Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& box, double edge,
+                  MeshStats* stats, bool trimmed = false) {
   Settings plain = settings;
   plain.cut_sizes = settings.cut_sizes && !trimmed;
   plain.box = box;
@@ -102,13 +102,15 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
   std::size_t crease_vertices = 0, loops_count = 0;
   AngleRepair repair;
   run_in_task_arena(settings, stats, [&] {
-    const std::vector<CreaseLoop> loops = trace_crease_loops(lattice_mesh, *lattice, *cutter, edge, tolerance);
+    const std::vector<CreaseLoop> loops =
+        trace_crease_loops(lattice_mesh, *lattice, *cutter, edge, tolerance);
     loops_count = loops.size();
     for (const CreaseLoop& loop : loops) crease_vertices += loop.points.size();
     mesh = zip_face_to_creases(lattice_mesh, *lattice, *cutter, loops, false, edge, settings, box);
     const Mesh other = zip_face_to_creases(cutter_mesh, *cutter, *lattice, loops, true, edge, settings, box);
     const auto offset = static_cast<std::uint32_t>(mesh.positions.size() - crease_vertices);
-    mesh.positions.insert(mesh.positions.end(), other.positions.begin() + static_cast<std::ptrdiff_t>(crease_vertices),
+    mesh.positions.insert(mesh.positions.end(),
+                          other.positions.begin() + static_cast<std::ptrdiff_t>(crease_vertices),
                           other.positions.end());
     for (Triangle t : other.triangles) {
       for (std::uint32_t& v : t)
@@ -120,8 +122,8 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
   });
   const TopologyReport topology = analyze_topology(mesh);
   if (!topology.watertight() || !topology.manifold() || !topology.consistently_oriented())
-    throw CreaseError("the two solids' mesh is not a closed 2-manifold (" + std::to_string(topology.boundary_edges) +
-                      " boundary edges, " +
+    throw CreaseError("the two solids' mesh is not a closed 2-manifold (" +
+                      std::to_string(topology.boundary_edges) + " boundary edges, " +
                       std::to_string(topology.non_manifold_edges + topology.non_manifold_vertices) +
                       " non-manifold places): a feature narrower than an edge at the crease; a smaller "
                       "--edge-length, or --creases off for a smooth mesh");

@@ -91,7 +91,8 @@ void clean_up_near(Mesh& mesh, const Surface& surface, const std::vector<std::ui
   if (part.triangles.empty()) return;
   // Held vertices come back at the same bits: found by them.
   const auto bits = [](const Vec3& p) {
-    return std::array<std::uint64_t, 3>{std::bit_cast<std::uint64_t>(p.x()), std::bit_cast<std::uint64_t>(p.y()),
+    return std::array<std::uint64_t, 3>{std::bit_cast<std::uint64_t>(p.x()),
+                                        std::bit_cast<std::uint64_t>(p.y()),
                                         std::bit_cast<std::uint64_t>(p.z())};
   };
   std::map<std::array<std::uint64_t, 3>, std::uint32_t> old_id;

@@ -15,8 +15,8 @@
 
 #include "api/capped_meshing.hpp"
 #include "api/crease_meshing.hpp"
-#include "api/curved_cut.hpp"
 #include "api/curvature_feature_sizes.hpp"
+#include "api/curved_cut.hpp"
 #include "api/cut_feature_sizes.hpp"
 #include "api/frame_meshing.hpp"
 #include "api/multiresolution.hpp"
@@ -262,7 +262,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
     if (what.find("creases off") != std::string::npos) throw;
     throw CreaseError(
         what +
-        "; turning creases off (--creases off, creases=\"off\" in Python) meshes it as a smooth "
+        "; turning creases off (--creases off) meshes it as a smooth "
         "surface, and a lattice capped by planes is meshed along its creases (docs/lattices.md)");
   }
   if (creased.mesh) return std::move(*creased.mesh);

@@ -64,7 +64,8 @@ std::vector<Triangle> without_pinches(std::vector<Triangle> kept) {
 
 /// The triangles of `kept` within kOpeningRings rings (through `kept`) of a vertex farther than
 /// kStripWidth edges from o = 0: the thin tails of a piece, and thin pieces, go (a morphological opening).
-std::vector<Triangle> opened(const std::vector<Triangle>& kept, const std::vector<double>& distance, double edge) {
+std::vector<Triangle> opened(const std::vector<Triangle>& kept, const std::vector<double>& distance,
+                             double edge) {
   std::unordered_map<std::uint32_t, int> ring;
   for (const Triangle& t : kept)
     for (std::uint32_t v : t)
@@ -91,8 +92,8 @@ std::vector<Triangle> opened(const std::vector<Triangle>& kept, const std::vecto
 
 /// `kept` (triangles of a mesh whose vertices lie at `distance` from o = 0) without its edge-connected
 /// pieces that lie within kStripWidth edges of o = 0 throughout.
-std::vector<Triangle> without_thin_pieces(const std::vector<Triangle>& kept, const std::vector<double>& distance,
-                                          double edge) {
+std::vector<Triangle> without_thin_pieces(const std::vector<Triangle>& kept,
+                                          const std::vector<double>& distance, double edge) {
   std::unordered_map<std::uint32_t, std::uint32_t> parent;
   const auto find = [&parent](std::uint32_t v) {
     auto it = parent.try_emplace(v, v).first;
@@ -122,7 +123,8 @@ std::vector<Triangle> without_thin_pieces(const std::vector<Triangle>& kept, con
 std::vector<std::vector<std::uint32_t>> boundary_loops(const std::vector<Triangle>& triangles) {
   std::unordered_set<std::uint64_t> half;
   for (const Triangle& t : triangles)
-    for (int k = 0; k < 3; ++k) half.insert(half_edge_key(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]));
+    for (int k = 0; k < 3; ++k)
+      half.insert(half_edge_key(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]));
   std::map<std::uint32_t, std::uint32_t> next;
   for (const Triangle& t : triangles)
     for (int k = 0; k < 3; ++k) {
@@ -171,8 +173,9 @@ bool small_loop(const std::vector<std::uint32_t>& loop, const std::vector<Vec3>&
 
 }  // namespace
 
-Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
-                         bool reversed, double edge, const Settings& settings, const Box& box) {
+Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
+                         const std::vector<CreaseLoop>& loops, bool reversed, double edge,
+                         const Settings& settings, const Box& box) {
   // The crease points first, every loop in this face's boundary direction.
   Mesh face;
   std::vector<std::vector<std::uint32_t>> crease;
@@ -264,7 +267,8 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o, c
   // Referenced vertices only, the crease's first (found by their bits), the others in triangle order.
   std::map<std::array<std::uint64_t, 3>, std::uint32_t> crease_id;
   const auto bits = [](const Vec3& p) {
-    return std::array<std::uint64_t, 3>{std::bit_cast<std::uint64_t>(p.x()), std::bit_cast<std::uint64_t>(p.y()),
+    return std::array<std::uint64_t, 3>{std::bit_cast<std::uint64_t>(p.x()),
+                                        std::bit_cast<std::uint64_t>(p.y()),
                                         std::bit_cast<std::uint64_t>(p.z())};
   };
   for (std::uint32_t k = 0; k < held; ++k) crease_id[bits(crease_points[k])] = k;

@@ -23,7 +23,8 @@ namespace isopatch {
 /// first vertices are the loops' points, in loop order; its triangles run along grad s.
 /// \throw CreaseError naming the place when a boundary loop has no crease beside it or two share one
 ///        (the face narrower than an edge there); the errors of remesh_on_surface().
-Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
-                         bool reversed, double edge, const Settings& settings, const Box& box);
+Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
+                         const std::vector<CreaseLoop>& loops, bool reversed, double edge,
+                         const Settings& settings, const Box& box);
 
 }  // namespace isopatch

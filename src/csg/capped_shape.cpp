@@ -265,9 +265,10 @@ std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box) {
   if (!walk.run(leaves) || leaves.size() != 2) return std::nullopt;
   for (const BranchChoice& leaf : leaves)
     if (walk.leaf_kind(leaf) != Kind::Other) return std::nullopt;
-  return CutShape{
-      expression_surface(Expression(std::make_shared<const Tape>(walk.leaf_tape(leaves[0]))), box, "the first operand"),
-      expression_surface(Expression(std::make_shared<const Tape>(walk.leaf_tape(leaves[1]))), box, "the second operand")};
+  return CutShape{expression_surface(Expression(std::make_shared<const Tape>(walk.leaf_tape(leaves[0]))), box,
+                                     "the first operand"),
+                  expression_surface(Expression(std::make_shared<const Tape>(walk.leaf_tape(leaves[1]))), box,
+                                     "the second operand")};
 }
 
 }  // namespace isopatch

@@ -100,7 +100,7 @@ openvdb::GridBase::Ptr choose(const openvdb::GridPtrVec& grids, const std::strin
   if (level_sets == 1) return level_set;
   if (level_sets == 0 && scalars == 1) return only_scalar;
   throw InputError(name + " holds " + std::to_string(grids.size()) + " grids (" + names +
-                       "): name the one to mesh (--grid NAME, or grid= in Python)",
+                       "): name the one to mesh (--grid NAME)",
                    "grid");
 }
 

@@ -158,7 +158,9 @@ TEST(CurvedCut, ARotatedFrameKeepsTheCreaseAndTheTopology) {
   const test::CappedRun plain = mesh_cut(part, 0.1);
   const test::CappedRun turned = mesh_cut(part, 0.1, 0, Frame{30.0, 20.0, 10.0});
   test::expect_valid_part(turned, cut_faces(kCutGyroid), cut_box(3.4).diagonal(), false);
-  const auto count = [](const test::CappedRun& r) { return static_cast<double>(r.stats.creases->crease_vertices); };
+  const auto count = [](const test::CappedRun& r) {
+    return static_cast<double>(r.stats.creases->crease_vertices);
+  };
   EXPECT_NEAR(count(turned) / count(plain), 1.0, 0.05);
   EXPECT_EQ(analyze_topology(turned.mesh).genus, analyze_topology(plain.mesh).genus);
 }
