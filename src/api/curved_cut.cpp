@@ -40,6 +40,21 @@ Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& b
   return mesh_surface(operand, plain, stats);
 }
 
+/// zip_face_to_creases(); where its join fails (creases closer than the trim's band), the operand meshed
+/// again at half the edge in `mesh_box` (the box `mesh` was made in), joined there, and the whole face
+/// cleaned up to the edge: twice the vertices across a strip or neck between creases.
+Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
+              bool reversed, double edge, const Settings& settings, const Box& box, const Box& mesh_box) {
+  try {
+    return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box);
+  } catch (const CreaseError&) {
+    Settings finer = settings;
+    finer.edge_length = 0.5 * edge;
+    const Mesh fine = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, true);
+    return zip_face_to_creases(fine, s, o, loops, reversed, edge, settings, box, true);
+  }
+}
+
 /// The triangles of `mesh` within `rings` rings of its first `count` vertices (the crease's).
 Mesh near_crease(const Mesh& mesh, std::size_t count, int rings) {
   std::vector<std::uint8_t> near(mesh.positions.size(), 0);
@@ -106,8 +121,8 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
         trace_crease_loops(lattice_mesh, *lattice, *cutter, edge, tolerance);
     loops_count = loops.size();
     for (const CreaseLoop& loop : loops) crease_vertices += loop.points.size();
-    mesh = zip_face_to_creases(lattice_mesh, *lattice, *cutter, loops, false, edge, settings, box);
-    const Mesh other = zip_face_to_creases(cutter_mesh, *cutter, *lattice, loops, true, edge, settings, box);
+    mesh = zip_face(lattice_mesh, *lattice, *cutter, loops, false, edge, settings, box, lattice_box);
+    const Mesh other = zip_face(cutter_mesh, *cutter, *lattice, loops, true, edge, settings, box, box);
     const auto offset = static_cast<std::uint32_t>(mesh.positions.size() - crease_vertices);
     mesh.positions.insert(mesh.positions.end(),
                           other.positions.begin() + static_cast<std::ptrdiff_t>(crease_vertices),

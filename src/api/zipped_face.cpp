@@ -175,7 +175,7 @@ bool small_loop(const std::vector<std::uint32_t>& loop, const std::vector<Vec3>&
 
 Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
                          const std::vector<CreaseLoop>& loops, bool reversed, double edge,
-                         const Settings& settings, const Box& box) {
+                         const Settings& settings, const Box& box, bool whole) {
   // The crease points first, every loop in this face's boundary direction.
   Mesh face;
   std::vector<std::vector<std::uint32_t>> crease;
@@ -263,7 +263,12 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
   std::vector<std::uint8_t> seed(face.positions.size(), 0);
   for (std::size_t t = kept_triangles; t < face.triangles.size(); ++t)
     for (std::uint32_t v : face.triangles[t]) seed[v] = 1;
-  clean_up_near(face, s, seed, kCleanedRings, r);
+  if (whole) {
+    r.hold_cut = true;
+    remesh_on_surface(face, s, r);
+  } else {
+    clean_up_near(face, s, seed, kCleanedRings, r);
+  }
   // Referenced vertices only, the crease's first (found by their bits), the others in triangle order.
   std::map<std::array<std::uint64_t, 3>, std::uint32_t> crease_id;
   const auto bits = [](const Vec3& p) {

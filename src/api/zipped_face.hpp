@@ -15,16 +15,18 @@
 namespace isopatch {
 
 /// The face of s = 0 where o < 0, from `mesh` (a mesh of s = 0, triangles along grad s, covering the
-/// face and beyond it): vertices within about half an `edge` of o = 0 and beyond are dropped, each
-/// boundary loop left is joined to the crease loop beside it, a crease loop with no boundary beside it (a
-/// face smaller than an edge) is closed by a fan, and the whole face is cleaned up on s (`settings`'
-/// preset and sizes over `box`) with the loops held bit for bit. `reversed`: the loops run against this
-/// face's boundary direction (the face on o, whose side is on the right of grad s x grad o). The result's
-/// first vertices are the loops' points, in loop order; its triangles run along grad s.
-/// \throw CreaseError naming the place when a boundary loop has no crease beside it or two share one
-///        (the face narrower than an edge there); the errors of remesh_on_surface().
+/// face and beyond it): vertices within 0.3 `edge` of o = 0 (0.15, then 0.05 where that fails) and beyond
+/// are dropped, with the thin tails and pieces lying within 1.5 edges of it throughout (then only the
+/// pieces, then none); the boundary loops left are walked to the crease loops (band_join.hpp); a crease
+/// loop no walk or strip reached, within two edges of its centroid, is closed by a fan; the band is
+/// cleaned up on s (`settings`' preset and sizes over `box`) with the loops held bit for bit, or the
+/// whole face when `whole` (a mesh finer than `edge`, brought to it). `reversed`: the loops run against
+/// this face's boundary direction (the face on o, whose side is on the right of grad s x grad o). The
+/// result's first vertices are the loops' points, in loop order; its triangles run along grad s.
+/// \throw CreaseError naming the place when no trim joins (creases closer than the band, branching
+///        strips); EvaluationError where o is not finite; the errors of remesh_on_surface().
 Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
                          const std::vector<CreaseLoop>& loops, bool reversed, double edge,
-                         const Settings& settings, const Box& box);
+                         const Settings& settings, const Box& box, bool whole = false);
 
 }  // namespace isopatch

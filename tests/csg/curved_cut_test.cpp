@@ -121,13 +121,19 @@ TEST(CurvedCut, AGyroidCutByABallIsAClosedPartAlongItsCrease) {
   EXPECT_GT(run.stats.creases->creases, 0u);
 }
 
-TEST(CurvedCut, AGyroidSheetCutByABallIsAClosedPart) {
-  // 1/120 of the part: the sheet meets the ball in strips a few edges wide, their ends in necks where
-  // the two walls' creases come within a fraction of an edge of each other.
+TEST(CurvedCut, AGyroidSheetCutByABallIsAClosedPartOfTheFinerMeshsTopology) {
+  // The sheet meets the ball in strips a few edges wide whose ends pinch where the two walls' creases come
+  // within a fraction of an edge of each other; at 1/60 of the part (edge 0.1) the ball's face is joined
+  // on a mesh of half the edge there, at 1/120 directly.
   const std::string sheet = "abs(" + kCutGyroid + ")-0.3";
-  const test::CappedRun run = mesh_cut("max(" + sheet + "," + kCutBall + ")", 0.05);
-  test::expect_valid_part(run, cut_faces(sheet), cut_box(3.4).diagonal(), false);
-  EXPECT_EQ(run.stats.creases->faces, 2u);
+  const test::CappedRun coarse = mesh_cut("max(" + sheet + "," + kCutBall + ")", 0.1);
+  const test::CappedRun fine = mesh_cut("max(" + sheet + "," + kCutBall + ")", 0.05);
+  for (const test::CappedRun* run : {&coarse, &fine}) {
+    test::expect_valid_part(*run, cut_faces(sheet), cut_box(3.4).diagonal(), false);
+    EXPECT_EQ(run->stats.creases->faces, 2u);
+  }
+  EXPECT_EQ(analyze_topology(coarse.mesh).genus, analyze_topology(fine.mesh).genus);
+  EXPECT_EQ(analyze_topology(coarse.mesh).components.size(), analyze_topology(fine.mesh).components.size());
 }
 
 TEST(CurvedCut, TheTopologyAndVolumeOfAFinerMeshHold) {
