@@ -7,9 +7,11 @@
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/remesh.hpp>
 #include <isopatch/resolve_surface.hpp>
+#include <isopatch/self_intersection.hpp>
 #include <isopatch/vdb_surface.hpp>
 #include <isopatch/volume_io.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
@@ -23,6 +25,7 @@
 #include "glb_colours.hpp"
 #include "mesh_warnings.hpp"
 #include "progress_line.hpp"
+#include "run_clock.hpp"
 #include "singular_report.hpp"
 #include "stats_output.hpp"
 #include "tiles_runner.hpp"
@@ -106,6 +109,7 @@ struct MeshOptions {
 }
 
 int run_mesh(const MeshOptions& o) {
+  RunClock clock;  // every second of the run in the statistics, from the process's start
   if (o.tiles.tiles != 0) run_mesh_in_tiles(o);
   // The blocked run's own flags mean nothing to one process: refused, not dropped.
   const TilesOptions d;
@@ -189,6 +193,7 @@ int run_mesh(const MeshOptions& o) {
       : is_volume_path(o.surface)
           ? volume_input(o.surface, o.volume)
           : resolve_surface_in_region(o.surface, settings.box, settings.region, parse_params(o.params));
+  clock.add("input", clock.lap());
   // The singular points of f = 0 in the box, before meshing: the mesh is refined around them
   // (SizeSettings::refine_around), and they are listed in a warning and the statistics
   // (singular_report.hpp). The search and the checks behind the warnings run on the meshing's threads.
@@ -197,6 +202,7 @@ int run_mesh(const MeshOptions& o) {
       arena.execute([&] { return search_singular_points(*surface, settings, sampled); });
   if (!composite && settings.method == Method::Projection && !settings.uniform)
     settings.refine_around = singular.found.singular_samples();
+  clock.add("singular_points", clock.lap());
   MeshStats stats;
   std::optional<ProgressLine> line;  // ended (newline) before anything else is printed, also on errors
   if (progress_wanted(o.progress, o.quiet)) {
@@ -207,14 +213,21 @@ int run_mesh(const MeshOptions& o) {
   Mesh mesh =
       composite ? mesh_composite(*composite, settings, &stats) : mesh_surface(*surface, settings, &stats);
   line.reset();
+  // What the call took beyond the mesher's own timer (its checks of the settings, the task arena).
+  clock.add("meshing_setup", std::max(0.0, clock.lap() - stats.seconds));
   if (o.fields) attach_fields(mesh, *surface);
+  clock.add("fields", clock.lap());
   const bool glb = format_from_path(o.output) == MeshFormat::Glb;
   write_mesh(mesh, o.output, glb ? glb_colours(mesh, surface.get(), o.colour) : std::vector<Vec3>{});
+  clock.add("write", clock.lap());
+  const SelfIntersectionReport crossings = arena.execute([&] { return find_self_intersections(mesh); });
+  clock.add("self_intersections", clock.lap());
+  clock.account(stats);
   if (!o.stats_json.empty())
     write_stats_json(o.stats_json, surface->name(), settings, stats, o.output, &singular);
   if (!o.quiet) print_summary(surface->name(), settings, stats, o.output);
   print_singular_warning(singular, stderr);
-  arena.execute([&] { print_mesh_warnings(stats, mesh, stderr); });
+  print_mesh_warnings(stats, mesh, crossings, stderr);
   return 0;
 }
 

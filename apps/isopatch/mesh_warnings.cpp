@@ -8,7 +8,8 @@
 
 namespace isopatch::cli {
 
-void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out) {
+void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, const SelfIntersectionReport& crossings,
+                         std::FILE* out) {
   const MeshWarnings& w = stats.warnings;
   const std::size_t doubtful = w.doubtful_topology_cells;
   if (doubtful > 0)
@@ -76,7 +77,7 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* ou
                    "within an edge there (a smaller --edge-length or --max-error resolves it)\n",
                    small.triangles, small.smallest);
   }
-  if (const SelfIntersectionReport r = find_self_intersections(mesh); r.pairs > 0)
+  if (const SelfIntersectionReport& r = crossings; r.pairs > 0)
     std::fprintf(
         out, "warning: the mesh intersects itself: %s%zu pairs of triangles (e.g. at %.6g, %.6g, %.6g)\n",
         r.capped ? "at least " : "", r.pairs, r.example_point.x(), r.example_point.y(), r.example_point.z());

@@ -4,6 +4,7 @@
 
 #include <isopatch/isopatch.hpp>
 #include <isopatch/mesh.hpp>
+#include <isopatch/self_intersection.hpp>
 
 #include <cstdio>
 
@@ -14,7 +15,9 @@ namespace isopatch::cli {
 /// triangles beyond the --max-error bound (MeshWarnings::error_bound_violations), triangles with an
 /// angle under 10 degrees after a clean-up (MeshStats::cleanup: marching cubes alone makes such slivers by
 /// design; not with cells in doubt, whose warning covers them), and pairs of triangles of `mesh` that
-/// intersect (find_self_intersections, up to 1000 pairs). Prints nothing for a clean run.
-void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, std::FILE* out);
+/// intersect (`crossings`: find_self_intersections of `mesh`, up to 1000 pairs, made by the caller, which
+/// times it). Prints nothing for a clean run.
+void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, const SelfIntersectionReport& crossings,
+                         std::FILE* out);
 
 }  // namespace isopatch::cli

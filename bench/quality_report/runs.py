@@ -62,14 +62,15 @@ def _summary_field(stdout: str, key: str) -> str | None:
 
 
 def isopatch_mesh(tool: str, surface: list[str], extra: list[str], out: str, run: Run) -> Run:
-    """`isopatch mesh SURFACE EXTRA -o OUT`; vertices and time from its summary."""
+    """`isopatch mesh SURFACE EXTRA -o OUT`; vertices and the mesher's time (its `meshing` line; `time` is the
+    whole run) from its summary."""
     code, stdout, err = run_command([tool, "mesh", *surface, *extra, "-o", out], MESH_TIMEOUT_S)
     if code != 0:
         return _failure(run, code, err)
     vertices = _summary_field(stdout, "vertices")
-    seconds = _summary_field(stdout, "time")
+    seconds = _summary_field(stdout, "meshing")
     if vertices is None or seconds is None:
-        return _failure(run, 1, "no 'vertices' or 'time' line in the summary of isopatch mesh")
+        return _failure(run, 1, "no 'vertices' or 'meshing' line in the summary of isopatch mesh")
     run.ok, run.vertices, run.mesh = True, int(vertices.replace(",", "")), out
     depth, resolution = _summary_field(stdout, "depth"), _summary_field(stdout, "resolution")
     if run.system == "projection" and depth and resolution:

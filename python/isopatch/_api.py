@@ -4,6 +4,7 @@ sampled 3D arrays, volume files and OpenVDB grids, read_volume() for .npy and .n
 from __future__ import annotations
 
 import os
+import time
 from typing import Any, Callable, Dict, Literal, Optional, Sequence, Tuple, Union
 
 import numpy as np
@@ -119,6 +120,7 @@ def mesh(
     Ctrl-C stops it with KeyboardInterrupt. Raises the isopatch exceptions (isopatch.Error and its
     subclasses) with the library's messages; an exception raised by the function propagates unchanged.
     """
+    started = time.perf_counter()
     options = _options(locals(), _SETTINGS + ("resolution", "grid", "max_evaluations", "creases", "region", "frame"))
     if not isinstance(surface, str) and (region is not None or frame is not None):
         raise InputError("region and frame are for formulas and catalogue names", "region")
@@ -134,7 +136,7 @@ def mesh(
         result = _isopatch.mesh_callable(surface, gradient, _box(box), samples, int(batch), options)
     else:
         raise InputError("surface must be a formula, a catalogue name or a function", "surface")
-    return Mesh(result)
+    return Mesh(result, started)
 
 
 def mesh_volume(
@@ -180,13 +182,14 @@ def mesh_volume(
     infinity (the message names the index), or an unknown grid name; IoError for an unreadable,
     malformed or unsupported file; NoSurfaceError when no sample crosses ``level``.
     """
+    started = time.perf_counter()
     options = _options(locals(), _SETTINGS)
     if inside not in ("below", "above"):
         raise InputError(f"inside must be 'below' or 'above', not {inside!r}", "inside")
     if _vdb.is_vdb_path(volume) or _vdb.is_openvdb_grid(volume):
         if spacing is not None or origin is not None:
             raise InputError("spacing and origin come from an OpenVDB grid's transform", "spacing")
-        return Mesh(_vdb.mesh_vdb(volume, grid, level, inside == "above", _box(box), options))
+        return Mesh(_vdb.mesh_vdb(volume, grid, level, inside == "above", _box(box), options), started)
     if grid is not None:
         raise InputError("grid= names a grid of a .vdb file or object", "grid")
     if isinstance(volume, (str, os.PathLike)):  # a .npy or .nrrd file: its samples, spacing and origin
@@ -202,7 +205,7 @@ def mesh_volume(
         array, float(level), _triple((1.0, 1.0, 1.0) if spacing is None else spacing, "spacing"),
         _triple((0.0, 0.0, 0.0) if origin is None else origin, "origin"), _box(box), options
     )
-    return Mesh(result)
+    return Mesh(result, started)
 
 
 def read_volume(path: str) -> Tuple[np.ndarray, Point, Point]:

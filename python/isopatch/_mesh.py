@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import time
+
 from functools import cached_property
 from typing import Any, Dict, Literal, Optional, Sequence
 
@@ -49,8 +51,10 @@ class Mesh:
 
         return Mesh(_isopatch.mesh_from_arrays(vertices, faces, surface, _box(box)))
 
-    def __init__(self, result: Any) -> None:
+    def __init__(self, result: Any, started: Optional[float] = None) -> None:
         self._result = result
+        # The call that made the mesh, from its start (time.perf_counter()) to its return.
+        self._total = None if started is None else time.perf_counter() - started
 
     @cached_property
     def vertices(self) -> np.ndarray:
@@ -76,8 +80,12 @@ class Mesh:
     def stats(self) -> Dict[str, Dict[str, float]]:
         """Every statistic of the run by stage and name, as ``isopatch mesh --stats-json`` writes them
         (stage 'mesh': seconds, evaluations, vertices, triangles; ...; 'python': calls into a Python
-        function)."""
-        return self._result.stats()
+        function). ``stats['seconds']['total']`` is the whole call of isopatch.mesh or mesh_volume that made
+        the mesh, from the call to its return; the other entries of 'seconds' are its stages."""
+        stats = self._result.stats()
+        if self._total is not None:
+            stats.setdefault("seconds", {})["total"] = self._total
+        return stats
 
     def write(self, path: str, fields: bool = False) -> None:
         """Writes the mesh, the format from the extension (.ply, .obj, .off, .stl, .glb, .3mf). With fields=True the

@@ -39,6 +39,11 @@ def test_fields_and_stats(unit_box):
     assert stats["mesh"]["vertices"] == len(m.vertices)
     assert stats["mesh"]["triangles"] == len(m.faces)
     assert stats["mesh"]["seconds"] > 0
+    # The whole call, from isopatch.mesh's start to its return, with its stages inside it.
+    seconds = dict(stats["seconds"])
+    total = seconds.pop("total")
+    assert stats["mesh"]["seconds"] <= total and sum(seconds.values()) <= total
+    assert "feature_search" in seconds and "size_estimate" in seconds
 
 
 def test_settings_pass_through(unit_box):

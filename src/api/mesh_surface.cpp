@@ -154,6 +154,10 @@ LocalSizes local_sizes_report(const LocalRefinement& r, const Mesh& mesh) {
   return l;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 /// Meshes with the method of `settings`, then cleans up (remesh.hpp) when asked.
 Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats* stats);
 
@@ -176,14 +180,23 @@ Mesh dispatch(const Surface& surface, const Settings& settings, MeshStats* stats
 Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats* stats) {
   // f = 0 everywhere is no surface, and neither mesher could tell quickly (see zero_function.hpp).
   const Box box = settings.box.value_or(surface.box());
+  const auto checks_start = std::chrono::steady_clock::now();
   reject_zero_function(surface, box);
   // Projection and every clean-up follow grad f; marching cubes alone needs only signs.
   const bool uses_gradient = settings.method == Method::Projection || settings.fair_iterations > 0 ||
                              settings.remesh_iterations.value_or(0) > 0;
   if (uses_gradient) reject_singular_level_set(surface, box);
+  // The searches before meshing count in the statistics (added once the mesher has set them).
+  const double checks = seconds_since(checks_start);
+  const auto add_before = [stats](const char* stage, double seconds) {
+    if (!stats) return;
+    stats->times.add(stage, seconds);
+    stats->seconds += seconds;
+  };
   switch (settings.method) {
     case Method::MarchingCubes: {
       Mesh mesh = marching_cubes(surface, settings, stats);
+      add_before("surface_checks", checks);
       if (settings.fair_iterations > 0) {
         const auto start = std::chrono::steady_clock::now();
         const FairingStats fairing = laplace_fair(mesh, surface, settings.fair_iterations);
@@ -197,9 +210,13 @@ Mesh dispatch_in_box(const Surface& surface, const Settings& settings, MeshStats
       return mesh;
     }
     case Method::Projection: {
+      const auto search_start = std::chrono::steady_clock::now();
       const std::optional<LocalRefinement> local = local_refinement(surface, settings, box);
+      const double search = seconds_since(search_start);
       Mesh mesh = mesh_by_projection(surface, local ? local->settings : settings, box, stats);
       if (stats && local) stats->local_sizes = local_sizes_report(*local, mesh);
+      add_before("surface_checks", checks);
+      add_before("feature_search", search);
       return mesh;
     }
   }
@@ -213,10 +230,12 @@ Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const 
   // The automatic level's first guess, from the coarse grid's curvature.
   const bool first_guess = refine && level_from_curvature(settings);
   SizeEstimate estimate;
+  const auto estimate_start = std::chrono::steady_clock::now();
   if (settings.max_vertices > 0 || first_guess) {
     estimate = estimate_size(surface, settings, box, first_guess);
     check_estimated_size(estimate, settings, box);
   }
+  const double estimating = seconds_since(estimate_start);
   const auto one_level = [&surface](const Settings& s, MeshStats* st) {
     Mesh level = mesh_projection(surface, s, st);
     clean_up(level, surface, s, st);
@@ -228,6 +247,8 @@ Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const 
   if (stats) {
     stats->value_evaluations += estimate.value_evaluations;
     stats->gradient_evaluations += estimate.gradient_evaluations;
+    stats->times.add("size_estimate", estimating);
+    stats->seconds += estimating;
   }
   return mesh;
 }
