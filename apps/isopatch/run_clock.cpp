@@ -19,9 +19,13 @@ double process_age_seconds() {
   std::FILE* f = std::fopen("/proc/self/stat", "r");
   const std::size_t n = f ? std::fread(stat, 1, sizeof stat - 1, f) : 0;
   if (f) std::fclose(f);
+  char uptime_text[64] = {};
   std::FILE* u = std::fopen("/proc/uptime", "r");
-  const bool have_uptime = u && std::fscanf(u, "%lf", &uptime) == 1;
+  const std::size_t m = u ? std::fread(uptime_text, 1, sizeof uptime_text - 1, u) : 0;
   if (u) std::fclose(u);
+  char* uptime_end = nullptr;
+  uptime = m > 0 ? std::strtod(uptime_text, &uptime_end) : 0.0;
+  const bool have_uptime = uptime_end != nullptr && uptime_end != uptime_text;
   const long ticks = sysconf(_SC_CLK_TCK);
   const char* close = n > 0 ? std::strrchr(stat, ')') : nullptr;
   if (!close || !have_uptime || ticks <= 0) return 0.0;
