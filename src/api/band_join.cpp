@@ -8,6 +8,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "core/point_grid.hpp"
 #include "csg/crease_graph.hpp"
 
 namespace isopatch {
@@ -29,50 +30,34 @@ constexpr double kStripShare = 0.9;
 /// A neck bounded by more arcs than this is refused.
 constexpr std::size_t kMostNeckArcs = 6;
 
-/// Crease points by grid cell, for the nearest one within a few edges.
+/// The nearest crease point within a few edges (core/point_grid.hpp, cubes of the reach).
 class CreaseGrid {
  public:
-  CreaseGrid(const std::vector<Vec3>& points, std::size_t count, double cell) : points_(points), cell_(cell) {
-    for (std::uint32_t k = 0; k < count; ++k) cells_[key(cell_of(points[k]))].push_back(k);
+  CreaseGrid(const std::vector<Vec3>& points, std::size_t count, double cell) : points_(points), grid_(cell) {
+    for (std::size_t k = 0; k < count; ++k) grid_.insert(points[k], k);
   }
 
-  /// The nearest point within `reach` of p for which `skip` is false, or -1 (ties: the smaller id).
+  /// The nearest point within `reach` (at most the cube's side) of p for which `skip` is false, or -1
+  /// (ties: the smaller id, whatever the order of the visit).
   template <class Skip>
   std::int64_t nearest(const Vec3& p, double reach, Skip skip) const {
-    const auto c = cell_of(p);
     std::int64_t best = -1;
     double best_distance = reach;
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          const auto it = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
-          if (it == cells_.end()) continue;
-          for (std::uint32_t k : it->second) {
-            if (skip(k)) continue;
-            const double d = (points_[k] - p).norm();
-            if (d < best_distance || (d == best_distance && best >= 0 && k < best)) {
-              best_distance = d;
-              best = k;
-            }
-          }
-        }
+    grid_.near(p, [&](std::size_t id) {
+      const auto k = static_cast<std::uint32_t>(id);
+      if (skip(k)) return;
+      const double d = (points_[k] - p).norm();
+      if (d < best_distance || (d == best_distance && best >= 0 && k < best)) {
+        best_distance = d;
+        best = k;
+      }
+    });
     return best;
   }
 
  private:
-  std::array<std::int64_t, 3> cell_of(const Vec3& p) const {
-    return {static_cast<std::int64_t>(std::floor(p.x() / cell_)),
-            static_cast<std::int64_t>(std::floor(p.y() / cell_)),
-            static_cast<std::int64_t>(std::floor(p.z() / cell_))};
-  }
-  static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
-    return (static_cast<std::uint64_t>(c[0] & 0x1FFFFF) << 42) |
-           (static_cast<std::uint64_t>(c[1] & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(c[2] & 0x1FFFFF);
-  }
-
   const std::vector<Vec3>& points_;
-  double cell_;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+  PointGrid grid_;
 };
 
 /// A place on a crease loop: the loop and the index along it (the face's direction).

@@ -1,6 +1,8 @@
 // The clean-up of the part of a mesh near some vertices (local_cleanup.hpp).
 #include "api/local_cleanup.hpp"
 
+#include "api/exact_positions.hpp"
+
 #include <array>
 #include <bit>
 #include <cstddef>
@@ -16,29 +18,21 @@ std::uint64_t half_edge(std::uint32_t u, std::uint32_t v) {
   return (static_cast<std::uint64_t>(u) << 32) | v;
 }
 
-/// Vertices of the triangles `in` marks where two fans of them meet (more than one boundary edge leaves).
-std::vector<std::uint32_t> pinched_vertices(const Mesh& mesh, const std::vector<std::uint8_t>& in) {
+}  // namespace
+
+std::vector<std::uint32_t> pinched_vertices(const std::vector<Triangle>& triangles) {
   std::unordered_set<std::uint64_t> half;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (in[t])
-      for (int k = 0; k < 3; ++k)
-        half.insert(half_edge(mesh.triangles[t][static_cast<std::size_t>(k)],
-                              mesh.triangles[t][static_cast<std::size_t>((k + 1) % 3)]));
+  for (const Triangle& t : triangles)
+    for (std::size_t k = 0; k < 3; ++k) half.insert(half_edge(t[k], t[(k + 1) % 3]));
   std::map<std::uint32_t, int> leaving;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (in[t])
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t u = mesh.triangles[t][static_cast<std::size_t>(k)];
-        const std::uint32_t v = mesh.triangles[t][static_cast<std::size_t>((k + 1) % 3)];
-        if (!half.count(half_edge(v, u))) ++leaving[u];
-      }
+  for (const Triangle& t : triangles)
+    for (std::size_t k = 0; k < 3; ++k)
+      if (!half.count(half_edge(t[(k + 1) % 3], t[k]))) ++leaving[t[k]];
   std::vector<std::uint32_t> out;
   for (const auto& [v, count] : leaving)
     if (count > 1) out.push_back(v);
   return out;
 }
-
-}  // namespace
 
 void clean_up_near(Mesh& mesh, const Surface& surface, const std::vector<std::uint8_t>& seed, int rings,
                    RemeshSettings settings) {
@@ -63,8 +57,14 @@ void clean_up_near(Mesh& mesh, const Surface& surface, const std::vector<std::ui
     in[t] = near[tri[0]] && near[tri[1]] && near[tri[2]] ? 1 : 0;
   }
   // Widened where its boundary pinches: every triangle at such a vertex joins.
-  for (std::vector<std::uint32_t> pinched = pinched_vertices(mesh, in); !pinched.empty();
-       pinched = pinched_vertices(mesh, in))
+  const auto part_triangles = [&] {
+    std::vector<Triangle> out;
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+      if (in[t]) out.push_back(mesh.triangles[t]);
+    return out;
+  };
+  for (std::vector<std::uint32_t> pinched = pinched_vertices(part_triangles()); !pinched.empty();
+       pinched = pinched_vertices(part_triangles()))
     for (std::uint32_t v : pinched)
       for (std::uint32_t t : around[v]) in[t] = 1;
   Mesh part;
@@ -89,19 +89,14 @@ void clean_up_near(Mesh& mesh, const Surface& surface, const std::vector<std::ui
     part.triangles.push_back(tri);
   }
   if (part.triangles.empty()) return;
-  // Held vertices come back at the same bits: found by them.
-  const auto bits = [](const Vec3& p) {
-    return std::array<std::uint64_t, 3>{std::bit_cast<std::uint64_t>(p.x()),
-                                        std::bit_cast<std::uint64_t>(p.y()),
-                                        std::bit_cast<std::uint64_t>(p.z())};
-  };
-  std::map<std::array<std::uint64_t, 3>, std::uint32_t> old_id;
-  for (std::size_t k = 0; k < global.size(); ++k) old_id.emplace(bits(part.positions[k]), global[k]);
+  // Held vertices come back at the same positions: found by them.
+  ExactPositionMap<std::uint32_t> old_id;
+  for (std::size_t k = 0; k < global.size(); ++k) old_id.emplace(part.positions[k], global[k]);
   settings.hold_cut = true;
   remesh_on_surface(part, surface, settings);
   std::vector<std::uint32_t> id(part.positions.size());
   for (std::size_t k = 0; k < part.positions.size(); ++k) {
-    const auto it = old_id.find(bits(part.positions[k]));
+    const auto it = old_id.find(part.positions[k]);
     if (it != old_id.end()) {
       id[k] = it->second;
     } else {

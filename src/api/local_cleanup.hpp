@@ -13,6 +13,10 @@
 
 namespace isopatch {
 
+/// The vertices of `triangles` (oriented, each edge in at most two) where two or more fans of them meet:
+/// more than one boundary edge leaves the vertex (a bow tie), in increasing order.
+std::vector<std::uint32_t> pinched_vertices(const std::vector<Triangle>& triangles);
+
 /// Cleans up `mesh` (a 2-manifold mesh of `surface`, triangles along grad f) within `rings` rings of the
 /// vertices with `seed` set, with `settings` (hold_cut is set: the part's boundary, and `mesh`'s own,
 /// keep their positions bit for bit; the part is widened until its boundary has no vertex where two fans

@@ -280,7 +280,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   } catch (const CreaseError& e) {
     // Every refusal says what would mesh the shape; for two solids intersected, why their join failed.
     const std::string what = cut_failure.empty() ? std::string(e.what()) : cut_failure;
-    if (what.find("creases off") != std::string::npos) throw;
+    if (what.find("creases off") != std::string::npos) throw CreaseError(what);
     throw CreaseError(
         what +
         "; turning creases off (--creases off) meshes it as a smooth "

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -19,6 +18,7 @@
 #include <tbb/parallel_for.h>
 
 #include "api/cap_wedges.hpp"
+#include "api/exact_positions.hpp"
 #include "api/facet_polygons.hpp"
 #include "csg/face_set.hpp"
 #include "planar/lattice_points.hpp"
@@ -60,15 +60,6 @@ std::vector<Edge> boundary_edges(const Mesh& mesh) {
     }
   return out;
 }
-
-/// The exact bits of a position: boundary vertices keep them through the cap's clean-up.
-struct PositionHash {
-  std::size_t operator()(const Vec3& p) const {
-    std::uint64_t h = 1469598103934665603ULL;
-    for (int k = 0; k < 3; ++k) h = (h ^ std::bit_cast<std::uint64_t>(p[k])) * 1099511628211ULL;
-    return static_cast<std::size_t>(h);
-  }
-};
 
 /// The pieces of the polyhedron's edges inside the solid, sampled once: chains of vertex ids from the
 /// side's first corner towards its second, shared by the two faces beside it.

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "api/band_join.hpp"
+#include "api/exact_positions.hpp"
 #include "api/local_cleanup.hpp"
 #include "csg/crease_graph.hpp"
 #include "remesh/remesh_presets.hpp"
@@ -44,22 +45,14 @@ std::uint64_t half_edge_key(std::uint32_t u, std::uint32_t v) {
 
 /// `triangles` without those at a vertex where two fans of them meet (a bow tie), until none is left.
 std::vector<Triangle> without_pinches(std::vector<Triangle> kept) {
-  while (true) {
-    std::unordered_set<std::uint64_t> half;
-    for (const Triangle& t : kept)
-      for (std::size_t k = 0; k < 3; ++k) half.insert(half_edge_key(t[k], t[(k + 1) % 3]));
-    std::unordered_map<std::uint32_t, int> outgoing;
-    for (const Triangle& t : kept)
-      for (std::size_t k = 0; k < 3; ++k)
-        if (!half.count(half_edge_key(t[(k + 1) % 3], t[k]))) ++outgoing[t[k]];
-    std::unordered_set<std::uint32_t> pinched;
-    for (const auto& [v, count] : outgoing)
-      if (count > 1) pinched.insert(v);
-    if (pinched.empty()) return kept;
-    std::erase_if(kept, [&pinched](const Triangle& t) {
-      return pinched.count(t[0]) || pinched.count(t[1]) || pinched.count(t[2]);
+  for (std::vector<std::uint32_t> pinched = pinched_vertices(kept); !pinched.empty();
+       pinched = pinched_vertices(kept)) {
+    const std::unordered_set<std::uint32_t> drop(pinched.begin(), pinched.end());
+    std::erase_if(kept, [&drop](const Triangle& t) {
+      return drop.count(t[0]) || drop.count(t[1]) || drop.count(t[2]);
     });
   }
+  return kept;
 }
 
 /// The triangles of `kept` within kOpeningRings rings (through `kept`) of a vertex farther than
@@ -269,20 +262,15 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
   } else {
     clean_up_near(face, s, seed, kCleanedRings, r);
   }
-  // Referenced vertices only, the crease's first (found by their bits), the others in triangle order.
-  std::map<std::array<std::uint64_t, 3>, std::uint32_t> crease_id;
-  const auto bits = [](const Vec3& p) {
-    return std::array<std::uint64_t, 3>{std::bit_cast<std::uint64_t>(p.x()),
-                                        std::bit_cast<std::uint64_t>(p.y()),
-                                        std::bit_cast<std::uint64_t>(p.z())};
-  };
-  for (std::uint32_t k = 0; k < held; ++k) crease_id[bits(crease_points[k])] = k;
+  // Referenced vertices only, the crease's first (found by their positions), the others in triangle order.
+  ExactPositionMap<std::uint32_t> crease_id;
+  for (std::uint32_t k = 0; k < held; ++k) crease_id.emplace(crease_points[k], k);
   std::vector<Vec3> positions(crease_points);
   std::vector<std::int64_t> renumber(face.positions.size(), -1);
   for (Triangle& t : face.triangles)
     for (std::uint32_t& v : t) {
       if (renumber[v] < 0) {
-        const auto it = crease_id.find(bits(face.positions[v]));
+        const auto it = crease_id.find(face.positions[v]);
         if (it != crease_id.end()) {
           renumber[v] = it->second;
         } else {
