@@ -30,6 +30,5 @@ endif()
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/isopatchConfigVersion.cmake
                                  COMPATIBILITY ${ISOPATCH_COMPATIBILITY})
 install(FILES ${PROJECT_BINARY_DIR}/isopatchConfig.cmake ${PROJECT_BINARY_DIR}/isopatchConfigVersion.cmake
-              ${PROJECT_SOURCE_DIR}/cmake/FindLib3MF.cmake
               ${PROJECT_SOURCE_DIR}/cmake/FindOpenVDBLibrary.cmake
         DESTINATION ${ISOPATCH_CMAKE_DIR})

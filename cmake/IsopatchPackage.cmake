@@ -49,7 +49,7 @@ set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= 3.11), python3 (<< 3.12), python3-
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-distributed")  # isopatch.distributed
 # python3-openvdb: mesh_volume() of pyopenvdb grid objects; the -dev packages: a C++ consumer of the library.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS
-    "python3-openvdb, libeigen3-dev, libtbb-dev, zlib1g-dev, libtinygltf-dev, liblib3mf-dev, libopenvdb-dev")
+    "python3-openvdb, libeigen3-dev, libtbb-dev, zlib1g-dev, libopenvdb-dev")
 # Everything installed by default, and the Python package's copy for the Debian layout (component deb).
 set(CPACK_INSTALL_CMAKE_PROJECTS "${PROJECT_BINARY_DIR};isopatch;ALL;/;${PROJECT_BINARY_DIR};isopatch;deb;/")
 include(CPack)

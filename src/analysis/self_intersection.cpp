@@ -1,8 +1,8 @@
 // Self-intersection test of a triangle mesh (see include/isopatch/self_intersection.hpp): a bounding
 // volume hierarchy over the triangles' boxes, traversed against itself so that every pair of
-// overlapping boxes is met once; each such pair is decided by segment-against-triangle tests (two
-// triangles in general position meet iff an edge of one meets the other, since each end of the segment
-// where they meet lies on an edge of one of them).
+// overlapping boxes is met once (triangle_tree.hpp); each such pair is decided by segment-against-
+// triangle tests (two triangles in general position meet iff an edge of one meets the other, since
+// each end of the segment where they meet lies on an edge of one of them).
 #include <isopatch/error.hpp>
 #include <isopatch/self_intersection.hpp>
 
@@ -17,10 +17,10 @@
 
 #include "analysis/exact_predicates.hpp"
 #include "analysis/mesh_neighbourhood.hpp"
+#include "analysis/triangle_tree.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_invoke.h>
 
 namespace isopatch {
 namespace {
@@ -133,16 +133,37 @@ bool triangles_meet(const Mesh& mesh, const Triangle& s, const Triangle& t, Vec3
   const auto vertex = [&](const Triangle& tri, int i) -> const Vec3& {
     return x[tri[static_cast<std::size_t>(i)]];
   };
+  // Whether the corners `which` of tri (-1: none) lie strictly on one side of the plane through a, b, c.
+  const auto strictly_one_side = [&](const Vec3& a, const Vec3& b, const Vec3& c, std::array<int, 3> which,
+                                     const Triangle& tri) {
+    int side = 0;
+    for (const int k : which) {
+      if (k < 0) continue;
+      const int sign = exact::orient3d(a, b, c, vertex(tri, k));
+      if (sign == 0 || (side != 0 && sign != side)) return false;
+      side = sign;
+    }
+    return true;
+  };
   const auto edge_meets = [&](const Triangle& a, int i, int j, const Triangle& b) {
     return segment_meets_triangle(vertex(a, i), vertex(a, j), vertex(b, 0), vertex(b, 1), vertex(b, 2), at);
   };
   switch (shared) {
     case 0:
+      // A triangle strictly on one side of the other's plane does not meet it.
+      if (strictly_one_side(vertex(t, 0), vertex(t, 1), vertex(t, 2), {0, 1, 2}, s) ||
+          strictly_one_side(vertex(s, 0), vertex(s, 1), vertex(s, 2), {0, 1, 2}, t))
+        return false;
       for (int i = 0; i < 3; ++i)
         if (edge_meets(s, i, (i + 1) % 3, t) || edge_meets(t, i, (i + 1) % 3, s)) return true;
       return false;
     case 1:
-      // Meeting anywhere but the common vertex means meeting the edge opposite it in the other.
+      // Meeting anywhere but the common vertex means meeting the edge opposite it in the other; when
+      // that edge of one lies strictly on one side of the other's plane, the two meet in that plane only
+      // at the common vertex.
+      if (strictly_one_side(vertex(t, 0), vertex(t, 1), vertex(t, 2), {s_only[0], s_only[1], -1}, s) ||
+          strictly_one_side(vertex(s, 0), vertex(s, 1), vertex(s, 2), {t_only[0], t_only[1], -1}, t))
+        return false;
       return edge_meets(s, s_only[0], s_only[1], t) || edge_meets(t, t_only[0], t_only[1], s);
     case 2: {
       // Folded flat: the third vertices in the plane of the common edge, on the same side of it.
@@ -166,235 +187,8 @@ bool triangles_meet(const Mesh& mesh, const Triangle& s, const Triangle& t, Vec3
   }
 }
 
-/// x rounded to a float no larger (down) or no smaller (up) than x.
-float round_down(double x) {
-  const auto f = static_cast<float>(x);
-  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-float round_up(double x) {
-  const auto f = static_cast<float>(x);
-  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
-/// A triangle's box, in doubles: computed when needed from the positions, so that the tree keeps no
-/// box per triangle (a 1M-vertex mesh has 2M triangles: 48 MB of boxes otherwise).
-struct TriangleBox {
-  Vec3 lo, hi;
-  TriangleBox() = default;
-  TriangleBox(const Mesh& mesh, std::uint32_t t) {
-    const Triangle& tri = mesh.triangles[t];
-    lo = hi = mesh.positions[tri[0]];
-    for (int k = 1; k < 3; ++k) {
-      lo = lo.cwiseMin(mesh.positions[tri[static_cast<std::size_t>(k)]]);
-      hi = hi.cwiseMax(mesh.positions[tri[static_cast<std::size_t>(k)]]);
-    }
-  }
-  bool overlaps(const TriangleBox& b) const {
-    return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all();
-  }
-};
-
-/// A node's box in floats rounded outwards (it holds the triangles' double boxes, so overlaps are never
-/// missed; the exact triangle test decides): half the memory of doubles.
-struct BoxOf {
-  Eigen::Vector3f lo = Eigen::Vector3f::Constant(std::numeric_limits<float>::infinity());
-  Eigen::Vector3f hi = Eigen::Vector3f::Constant(-std::numeric_limits<float>::infinity());
-  void add(const TriangleBox& b) {
-    for (int a = 0; a < 3; ++a) {
-      lo[a] = std::min(lo[a], round_down(b.lo[a]));
-      hi[a] = std::max(hi[a], round_up(b.hi[a]));
-    }
-  }
-  bool overlaps(const BoxOf& b) const {
-    return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all();
-  }
-};
-
-/// A bounding volume hierarchy over triangle boxes, median split on the longest axis of the centres.
 /// Triangles per piece of the parallel pair scan: a few dozen pieces on a 20k-vertex mesh.
 constexpr std::size_t kTrianglesPerJob = 1024;
-
-class TriangleTree {
- public:
-  /// Leaves hold at most this many triangles (between half of it and it, the splits being medians).
-  static constexpr std::size_t kLeafSize = 8;
-  /// Subtrees of at least this many triangles build their two halves in parallel.
-  static constexpr std::size_t kParallelBuild = std::size_t{1} << 14;
-
-  /// The tree over the triangles `order` of `mesh` (which must outlive it). Memory: 4 bytes per triangle
-  /// and a 32-byte node per 3 to 4 triangles.
-  TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order) : mesh_(mesh), order_(std::move(order)) {
-    nodes_.resize(node_count(order_.size()));
-    if (!order_.empty()) build(0, 0, order_.size());
-  }
-
-  /// Calls visit(i, j) once for every pair of triangles (i != j) whose boxes overlap, until it
-  /// returns false.
-  template <class Visit>
-  void for_overlapping_pairs(Visit&& visit) const {
-    if (!nodes_.empty()) self_pairs(0, visit);
-  }
-
-  /// A piece of that scan: the pairs within node m (self) or between nodes m and n.
-  struct Job {
-    std::size_t m = 0, n = 0;
-    bool self = false;
-  };
-  /// The scan cut into pieces of at most about `grain` triangles (or single leaves), in the order the
-  /// whole scan visits them: run(job) for each in turn visits the pairs of for_overlapping_pairs.
-  std::vector<Job> jobs(std::size_t grain) const {
-    std::vector<Job> out;
-    if (!nodes_.empty()) self_jobs(0, grain, out);
-    return out;
-  }
-  /// Calls visit(i, j) for the pairs of one job, until it returns false; false then.
-  template <class Visit>
-  bool run(const Job& job, Visit&& visit) const {
-    return job.self ? self_pairs(job.m, visit) : cross_pairs(job.m, job.n, visit);
-  }
-
- private:
-  /// 36 bytes: nodes are stored depth first, so an inner node's left child follows it.
-  struct Node {
-    BoxOf box;
-    std::uint32_t begin = 0, end = 0;  // triangle range in order_
-    std::uint32_t right = 0;           // the right child of an inner node; 0 for leaves
-    bool leaf() const { return right == 0; }
-  };
-
-  /// The nodes of a tree over n triangles (the splits of build()).
-  static std::size_t node_count(std::size_t n) {
-    if (n <= kLeafSize) return n > 0 ? 1 : 0;
-    return 1 + node_count(n / 2) + node_count(n - n / 2);
-  }
-
-  /// Builds the subtree over order_[begin, end) at nodes_[index] (its nodes at index..index +
-  /// node_count(end - begin) - 1, depth first). Splits at the median of the triangles' first corners
-  /// along the longest axis of their spread (any split gives the same pairs; this one costs one
-  /// position per triangle and level); boxes are made bottom-up, rounded once per leaf. Large subtrees
-  /// are built in parallel: the node numbers are fixed in advance, so the tree is the same for any
-  /// number of threads.
-  void build(std::size_t index, std::size_t begin, std::size_t end) {
-    Node& node = nodes_[index];
-    node.begin = static_cast<std::uint32_t>(begin);
-    node.end = static_cast<std::uint32_t>(end);
-    if (end - begin <= kLeafSize) {
-      TriangleBox box(mesh_, order_[begin]);
-      for (std::size_t k = begin + 1; k < end; ++k) {
-        const TriangleBox b(mesh_, order_[k]);
-        box.lo = box.lo.cwiseMin(b.lo);
-        box.hi = box.hi.cwiseMax(b.hi);
-      }
-      node.box.add(box);
-      return;
-    }
-    const auto first_corner = [&](std::uint32_t t) -> const Vec3& {
-      return mesh_.positions[mesh_.triangles[t][0]];
-    };
-    Vec3 lo = first_corner(order_[begin]), hi = lo;
-    for (std::size_t k = begin + 1; k < end; ++k) {
-      lo = lo.cwiseMin(first_corner(order_[k]));
-      hi = hi.cwiseMax(first_corner(order_[k]));
-    }
-    int axis = 0;
-    (hi - lo).maxCoeff(&axis);
-    const std::size_t middle = begin + (end - begin) / 2;
-    std::nth_element(
-        order_.begin() + static_cast<std::ptrdiff_t>(begin),
-        order_.begin() + static_cast<std::ptrdiff_t>(middle),
-        order_.begin() + static_cast<std::ptrdiff_t>(end),
-        [&](std::uint32_t a, std::uint32_t b) { return first_corner(a)[axis] < first_corner(b)[axis]; });
-    const std::size_t left = index + 1;
-    const std::size_t right = left + node_count(middle - begin);
-    node.right = static_cast<std::uint32_t>(right);
-    if (end - begin >= kParallelBuild)
-      tbb::parallel_invoke([&] { build(left, begin, middle); }, [&] { build(right, middle, end); });
-    else {
-      build(left, begin, middle);
-      build(right, middle, end);
-    }
-    node.box = nodes_[left].box;
-    node.box.lo = node.box.lo.cwiseMin(nodes_[right].box.lo);
-    node.box.hi = node.box.hi.cwiseMax(nodes_[right].box.hi);
-  }
-
-  void self_jobs(std::size_t n, std::size_t grain, std::vector<Job>& out) const {
-    const Node& node = nodes_[n];
-    if (node.leaf() || node.end - node.begin <= grain) {
-      out.push_back({n, n, true});
-      return;
-    }
-    self_jobs(n + 1, grain, out);  // the order of self_pairs
-    self_jobs(node.right, grain, out);
-    cross_jobs(n + 1, node.right, grain, out);
-  }
-
-  void cross_jobs(std::size_t m, std::size_t n, std::size_t grain, std::vector<Job>& out) const {
-    const Node& a = nodes_[m];
-    const Node& b = nodes_[n];
-    if (!a.box.overlaps(b.box)) return;
-    if ((a.leaf() && b.leaf()) || (a.end - a.begin) + (b.end - b.begin) <= grain) {
-      out.push_back({m, n, false});
-      return;
-    }
-    if (splits_first(a, b)) {  // the order of cross_pairs
-      cross_jobs(m + 1, n, grain, out);
-      cross_jobs(a.right, n, grain, out);
-    } else {
-      cross_jobs(m, n + 1, grain, out);
-      cross_jobs(m, b.right, grain, out);
-    }
-  }
-
-  /// Whether cross_pairs(a, b) descends into a (else into b).
-  static bool splits_first(const Node& a, const Node& b) {
-    return !a.leaf() && (b.leaf() || a.end - a.begin >= b.end - b.begin);
-  }
-
-  /// The boxes of a leaf's triangles, into `boxes` (kLeafSize of them); returns their count.
-  std::size_t leaf_boxes(const Node& leaf, TriangleBox* boxes) const {
-    for (std::uint32_t k = leaf.begin; k < leaf.end; ++k)
-      boxes[k - leaf.begin] = TriangleBox(mesh_, order_[k]);
-    return leaf.end - leaf.begin;
-  }
-
-  template <class Visit>
-  bool self_pairs(std::size_t n, Visit& visit) const {
-    const Node& node = nodes_[n];
-    if (node.leaf()) {
-      TriangleBox boxes[kLeafSize];
-      const std::size_t count = leaf_boxes(node, boxes);
-      for (std::size_t a = 0; a < count; ++a)
-        for (std::size_t b = a + 1; b < count; ++b)
-          if (boxes[a].overlaps(boxes[b]) && !visit(order_[node.begin + a], order_[node.begin + b]))
-            return false;
-      return true;
-    }
-    return self_pairs(n + 1, visit) && self_pairs(node.right, visit) && cross_pairs(n + 1, node.right, visit);
-  }
-
-  template <class Visit>
-  bool cross_pairs(std::size_t m, std::size_t n, Visit& visit) const {
-    const Node& a = nodes_[m];
-    const Node& b = nodes_[n];
-    if (!a.box.overlaps(b.box)) return true;
-    if (a.leaf() && b.leaf()) {
-      TriangleBox boxes_a[kLeafSize], boxes_b[kLeafSize];
-      const std::size_t count_a = leaf_boxes(a, boxes_a), count_b = leaf_boxes(b, boxes_b);
-      for (std::size_t i = 0; i < count_a; ++i)
-        for (std::size_t j = 0; j < count_b; ++j)
-          if (boxes_a[i].overlaps(boxes_b[j]) && !visit(order_[a.begin + i], order_[b.begin + j]))
-            return false;
-      return true;
-    }
-    if (splits_first(a, b)) return cross_pairs(m + 1, n, visit) && cross_pairs(a.right, n, visit);
-    return cross_pairs(m, n + 1, visit) && cross_pairs(m, b.right, visit);
-  }
-
-  const Mesh& mesh_;
-  std::vector<std::uint32_t> order_;
-  std::vector<Node> nodes_;
-};
 
 }  // namespace
 
@@ -402,13 +196,9 @@ SelfIntersectionReport find_self_intersections(const Mesh& mesh, std::size_t lim
   analysis::check_mesh(mesh, "find_self_intersections");
   if (mesh.triangles.size() >= std::numeric_limits<std::uint32_t>::max())
     throw InputError("find_self_intersections: more than 2^32 triangles");
-  std::vector<std::uint32_t> order;
-  order.reserve(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    if (!analysis::repeats_vertex(mesh.triangles[t])) order.push_back(static_cast<std::uint32_t>(t));
   SelfIntersectionReport report;
   if (limit == 0) return report;
-  const TriangleTree tree(mesh, std::move(order));
+  const analysis::TriangleTree tree(mesh, analysis::z_ordered_triangles(mesh));
   // The scan in pieces, in parallel; each piece counts its own pairs (up to the limit) and keeps its
   // first. In the pieces' order, the first piece with a pair has the scan's first pair: the same report
   // as one scan, for any number of threads.
@@ -417,12 +207,13 @@ SelfIntersectionReport find_self_intersections(const Mesh& mesh, std::size_t lim
     std::array<std::size_t, 2> example{};
     Vec3 at = Vec3::Zero();
   };
-  const std::vector<TriangleTree::Job> jobs = tree.jobs(kTrianglesPerJob);
+  const std::vector<analysis::TriangleTree::Job> jobs = tree.jobs(kTrianglesPerJob);
   std::vector<Found> found(jobs.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, jobs.size(), 1), [&](const auto& range) {
     for (std::size_t k = range.begin(); k != range.end(); ++k) {
       Found& f = found[k];
-      tree.run(jobs[k], [&](std::size_t i, std::size_t j) {
+      tree.run(jobs[k], [&](std::size_t a, std::size_t b) {
+        const std::size_t i = tree.triangle(a), j = tree.triangle(b);
         Vec3 at;
         if (!triangles_meet(mesh, mesh.triangles[i], mesh.triangles[j], &at)) return true;
         if (f.pairs++ == 0) {

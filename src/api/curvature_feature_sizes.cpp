@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <optional>
+#include <tuple>
 
 #include "surface/project_point.hpp"
 #include "surface/sampler.hpp"
@@ -28,8 +30,11 @@ double magnitude(const Interval& i) {
 }
 
 /// An upper bound of the angle between any two gradients in the box g (radians), or nullopt when g may
-/// hold the zero vector. With k the axis whose component is farthest from 0, every gradient lies within
-/// atan(|other components|max / |g_k|min) of that axis.
+/// hold the zero vector. Two bounds, the smaller kept: with k the axis whose component is farthest from
+/// 0, every gradient lies within atan(|other components|max / |g_k|min) of that axis; and every
+/// gradient lies within asin(r / |m|) of the box's middle m, r the box's half diagonal (the first is
+/// loose for a normal between the axes, the second for a wide box). Both are slightly widened for
+/// rounding.
 std::optional<double> cone_opening(const std::array<Interval, 3>& g) {
   int k = 0;
   for (int a = 1; a < 3; ++a)
@@ -39,7 +44,16 @@ std::optional<double> cone_opening(const std::array<Interval, 3>& g) {
   double t2 = 0.0;
   for (int a = 0; a < 3; ++a)
     if (a != k) t2 += magnitude(g[static_cast<std::size_t>(a)]) * magnitude(g[static_cast<std::size_t>(a)]);
-  return 2.0 * std::atan(std::sqrt(t2) / m);
+  const double about_axis = 2.0 * std::atan(std::sqrt(t2) / m);
+  double middle2 = 0.0, radius2 = 0.0;
+  for (const Interval& c : g) {
+    const double middle = 0.5 * c.lo + 0.5 * c.hi, radius = 0.5 * c.hi - 0.5 * c.lo;
+    middle2 += middle * middle;
+    radius2 += radius * radius;
+  }
+  const double r = std::sqrt(radius2) * (1.0 + 1e-9), mid = std::sqrt(middle2) * (1.0 - 1e-9);
+  const double about_middle = r < mid ? 2.0 * std::asin(r / mid) : std::numbers::pi;
+  return std::min(about_axis, about_middle) * (1.0 + 1e-9);
 }
 
 /// What one cube asks for: to be split, a source, or nothing.
@@ -83,6 +97,8 @@ class Search {
     const double allowed = p_.turn * std::clamp(side / (p_.relevant * edge_), 1.0, p_.coarse_turn);
     // The enclosure of grad f may be far wider than its range (high degrees, repeated variables): a
     // cube is split only when the gradients sampled at its corners and centre spread as widely too.
+    // (The samples never spread wider than the enclosure's bound: where it allows the turn, they are
+    // not sampled.)
     if (may_split && *opening > allowed && side > p_.finest_share * edge_ &&
         sampled_opening(cube) > allowed) {
       out.split = true;
@@ -135,19 +151,92 @@ class Search {
   CurvatureFeatureParams p_;
 };
 
-/// Cubes of side `side` covering box, clipped to it (z, y, x ascending).
-std::vector<Box> starting_cubes(const Box& box, double side) {
-  std::array<int, 3> n{};
-  for (int a = 0; a < 3; ++a)
-    n[static_cast<std::size_t>(a)] = std::max(1, static_cast<int>(std::ceil(box.size()[a] / side - 1e-9)));
-  std::vector<Box> cubes;
-  for (int k = 0; k < n[2]; ++k)
-    for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i) {
-        const Vec3 lo = box.lo + side * Vec3(i, j, k);
-        cubes.push_back(Box{lo, (lo + Vec3::Constant(side)).cwiseMin(box.hi)});
+/// The grid of cubes of side `side` from box.lo, clipped to the box.
+struct CubeGrid {
+  Box box;
+  double side = 0.0;
+  std::array<int, 3> count{};
+
+  CubeGrid(const Box& b, double s) : box(b), side(s) {
+    for (int a = 0; a < 3; ++a)
+      count[static_cast<std::size_t>(a)] =
+          std::max(1, static_cast<int>(std::ceil(box.size()[a] / side - 1e-9)));
+  }
+  /// Cube (i, j, k).
+  Box cube(const std::array<int, 3>& c) const {
+    const Vec3 lo = box.lo + side * Vec3(c[0], c[1], c[2]);
+    return Box{lo, (lo + Vec3::Constant(side)).cwiseMin(box.hi)};
+  }
+};
+
+/// A block of the grid's cubes: [lo, hi) on each axis.
+struct CubeBlock {
+  std::array<int, 3> lo{}, hi{};
+  bool single() const { return hi[0] - lo[0] == 1 && hi[1] - lo[1] == 1 && hi[2] - lo[2] == 1; }
+  /// The box holding its cubes (made of their own corners, so that it holds each cube exactly).
+  Box box(const CubeGrid& grid) const {
+    return Box{grid.cube(lo).lo, grid.cube({hi[0] - 1, hi[1] - 1, hi[2] - 1}).hi};
+  }
+  /// Its two halves across its longest axis (in cubes).
+  std::array<CubeBlock, 2> halves() const {
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+      if (hi[static_cast<std::size_t>(a)] - lo[static_cast<std::size_t>(a)] >
+          hi[static_cast<std::size_t>(axis)] - lo[static_cast<std::size_t>(axis)])
+        axis = a;
+    const auto ax = static_cast<std::size_t>(axis);
+    CubeBlock first = *this, second = *this;
+    first.hi[ax] = second.lo[ax] = lo[ax] + (hi[ax] - lo[ax]) / 2;
+    return {first, second};
+  }
+};
+
+/// The cubes of `grid` that may ask for a source, in z, y, x order: blocks of cubes halved from the whole
+/// grid down, kept where the enclosure of f over the block holds 0 and the enclosure of grad f lets
+/// the normals turn by more than the block's cubes allow (or may vanish), so that the work follows
+/// the surface's turns instead of the box's volume in cubes. A dropped block's cubes could not ask for anything:
+/// without a zero of f (the enclosure is rigorous) a cube has no point of f = 0 to measure, and a
+/// cube of the grid is split only when its own enclosure of grad f, inside the block's (enclosures
+/// only narrow on a smaller box), opens by more than it allows; one that is not split asks for nothing
+/// when it is wider than an edge (blocks with a narrower cube are kept). So the sources are those of examining every cube. Where f has no
+/// enclosure, every cube.
+std::vector<Box> cubes_near_surface(const Surface& surface, const CubeGrid& grid, const CurvatureFeatureParams& p,
+                                    double edge) {
+  std::vector<CubeBlock> blocks{CubeBlock{{0, 0, 0}, grid.count}}, cubes;
+  while (!blocks.empty()) {
+    std::vector<std::uint8_t> keep(blocks.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, blocks.size(), 64), [&](const auto& r) {
+      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+        const std::optional<IntervalGradient> g = surface.gradient_bound(blocks[i].box(grid));
+        if (!g) {
+          keep[i] = 1;
+          continue;
+        }
+        // The block's cube of the highest indices is the smallest (only the last layers are clipped by
+        // the box): the smallest turn a cube of the block allows, and a cube narrower than an edge
+        // measures a source without being split, so such a block is kept.
+        const double smallest = grid.cube({blocks[i].hi[0] - 1, blocks[i].hi[1] - 1, blocks[i].hi[2] - 1}).size().maxCoeff();
+        const double allowed = p.turn * std::clamp(smallest / (p.relevant * edge), 1.0, p.coarse_turn);
+        const std::optional<double> opening = cone_opening(g->gradient);
+        keep[i] = g->value.contains_zero() && (smallest < edge || !opening || *opening > allowed) ? 1 : 0;
       }
-  return cubes;
+    });
+    std::vector<CubeBlock> next;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+      if (keep[i] == 0) continue;
+      if (blocks[i].single())
+        cubes.push_back(blocks[i]);
+      else
+        for (const CubeBlock& half : blocks[i].halves()) next.push_back(half);
+    }
+    blocks = std::move(next);
+  }
+  std::sort(cubes.begin(), cubes.end(), [](const CubeBlock& a, const CubeBlock& b) {
+    return std::tie(a.lo[2], a.lo[1], a.lo[0]) < std::tie(b.lo[2], b.lo[1], b.lo[0]);
+  });
+  std::vector<Box> boxes(cubes.size());
+  for (std::size_t i = 0; i < cubes.size(); ++i) boxes[i] = grid.cube(cubes[i].lo);
+  return boxes;
 }
 
 }  // namespace
@@ -161,7 +250,7 @@ CurvatureFeatureSearch curvature_feature_sources(const Surface& surface, const B
   // The starting cubes are at most max_cells, so a tiny edge in a large box stays bounded.
   const double side = std::max(params.start_edges * edge,
                                std::cbrt(box.size().prod() / static_cast<double>(params.max_cells)));
-  std::vector<Box> level = starting_cubes(box, side);
+  std::vector<Box> level = cubes_near_surface(surface, CubeGrid(box, side), params, edge);
   while (!level.empty()) {
     std::vector<CubeOutcome> outcomes(level.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, level.size(), 64),

@@ -9,6 +9,8 @@
 
 #include "remesh/box_boundary.hpp"
 
+#include <tbb/parallel_for.h>
+
 namespace isopatch {
 
 namespace {
@@ -116,23 +118,18 @@ std::vector<CurvePoint> cut_curve_points(const Surface& surface, const CuttingFa
   const int nv = std::max(2, static_cast<int>(std::ceil(2.0 * face.half_v / spacing)) + 1);
   const double du = 2.0 * face.half_u / (nu - 1), dv = 2.0 * face.half_v / (nv - 1);
   auto at = [&](int i, int j) { return domain.on_face(face, -face.half_u + i * du, -face.half_v + j * dv); };
-  std::vector<Vec3> grid;
-  std::vector<char> inside;
-  grid.reserve(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv));
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      grid.push_back(at(i, j));
-      inside.push_back(domain.contains(grid.back(), face) ? 1 : 0);
-    }
+  const auto index = [nu](int i, int j) {
+    return static_cast<std::size_t>(j) * static_cast<std::size_t>(nu) + static_cast<std::size_t>(i);
+  };
+  // Grid points are made when needed, not stored: a face far from the surface costs its enclosures.
   // 0: not sampled; otherwise the sign that a block's enclosure proves (+1, -1) or 2: sample it. A point
   // on the border of two blocks is sampled when either block is.
-  std::vector<signed char> sample(grid.size(), 0);
+  std::vector<signed char> sample(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv), 0);
   // Blocks of grid cells, from 16 x 16 down to one cell, halved while their enclosure admits 0.
   const auto mark = [&](int i0, int j0, int i1, int j1, signed char verdict) {
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) {
-        signed char& s =
-            sample[static_cast<std::size_t>(j) * static_cast<std::size_t>(nu) + static_cast<std::size_t>(i)];
+        signed char& s = sample[index(i, j)];
         s = (verdict == 2 || s == 2 || (s != 0 && s != verdict)) ? 2 : verdict;
       }
   };
@@ -152,28 +149,46 @@ std::vector<CurvePoint> cut_curve_points(const Surface& surface, const CuttingFa
   for (int j0 = 0; j0 < nv - 1; j0 += block)
     for (int i0 = 0; i0 < nu - 1; i0 += block)
       classify(classify, i0, j0, std::min(i0 + block, nu - 1), std::min(j0 + block, nv - 1));
+  // f at the points to sample inside the domain (NaN outside), in one batch.
+  std::vector<std::size_t> kept_index;
   std::vector<Vec3> kept;
-  for (std::size_t k = 0; k < grid.size(); ++k)
-    if (inside[k] && sample[k] == 2) kept.push_back(grid[k]);
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i)
+      if (sample[index(i, j)] == 2) {
+        const Vec3 p = at(i, j);
+        if (!domain.contains(p, face)) continue;
+        kept_index.push_back(index(i, j));
+        kept.push_back(p);
+      }
   const std::vector<double> kept_values = values_at(surface, kept);
-  std::vector<double> value(grid.size(), std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t k = 0, m = 0; k < grid.size(); ++k)
-    if (inside[k]) value[k] = sample[k] == 2 ? kept_values[m++] : static_cast<double>(sample[k]);
-  // Crossings along the grid lines, by linear interpolation.
+  const auto sampled = [&](std::size_t k) {
+    const auto it = std::lower_bound(kept_index.begin(), kept_index.end(), k);
+    return it != kept_index.end() && *it == k ? kept_values[static_cast<std::size_t>(it - kept_index.begin())]
+                                              : std::numeric_limits<double>::quiet_NaN();
+  };
+  // A point's value: sampled, or the sign its block proves; NaN outside the domain.
+  const auto value = [&](int i, int j) {
+    const std::size_t k = index(i, j);
+    if (sample[k] == 2) return sampled(k);
+    return domain.contains(at(i, j), face) ? static_cast<double>(sample[k])
+                                           : std::numeric_limits<double>::quiet_NaN();
+  };
+  // Crossings along the grid lines, by linear interpolation. Two points of proved signs never differ
+  // (a point between blocks of opposite signs is sampled), so only pairs with a sampled point can cross.
   std::vector<CurvePoint> curve;
-  auto crossing = [&](std::size_t a, std::size_t b) {
-    const double fa = value[a], fb = value[b];
+  auto crossing = [&](int ia, int ja, int ib, int jb) {
+    if (sample[index(ia, ja)] != 2 && sample[index(ib, jb)] != 2) return;
+    const double fa = value(ia, ja), fb = value(ib, jb);
     if (!(std::isfinite(fa) && std::isfinite(fb)) || (fa < 0.0) == (fb < 0.0)) return;
     const double t = fa / (fa - fb);
-    const Vec3 p = (grid[a] + t * (grid[b] - grid[a])).cwiseMax(domain.box.lo).cwiseMin(domain.box.hi);
+    const Vec3 a = at(ia, ja), b = at(ib, jb);
+    const Vec3 p = (a + t * (b - a)).cwiseMax(domain.box.lo).cwiseMin(domain.box.hi);
     curve.push_back({p, Vec3::Zero(), 0.0});
   };
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
-      const std::size_t k =
-          static_cast<std::size_t>(j) * static_cast<std::size_t>(nu) + static_cast<std::size_t>(i);
-      if (i + 1 < nu) crossing(k, k + 1);
-      if (j + 1 < nv) crossing(k, k + static_cast<std::size_t>(nu));
+      if (i + 1 < nu) crossing(i, j, i + 1, j);
+      if (j + 1 < nv) crossing(i, j, i, j + 1);
     }
   return curve;
 }
@@ -287,9 +302,14 @@ std::vector<SizeSource> cut_feature_sources(const Surface& surface, const Box& b
   // even where the surface is far away: such surfaces are not searched.
   if (!surface.bound(box)) return {};
   const Domain domain{box, cut_planes(region), 1e-9 * box.diagonal()};
+  // The faces in parallel, their sources gathered in the faces' order.
+  const std::vector<CuttingFace> faces = cutting_faces(box, domain);
+  std::vector<std::vector<SizeSource>> by_face(faces.size());
+  tbb::parallel_for(std::size_t{0}, faces.size(), [&](std::size_t k) {
+    face_sources(surface, faces[k], domain, edge, smallest, params, by_face[k]);
+  });
   std::vector<SizeSource> sources;
-  for (const CuttingFace& face : cutting_faces(box, domain))
-    face_sources(surface, face, domain, edge, smallest, params, sources);
+  for (const std::vector<SizeSource>& s : by_face) sources.insert(sources.end(), s.begin(), s.end());
   return sources;
 }
 

@@ -9,36 +9,23 @@
 #include <numeric>
 #include <string>
 
+#include "core/spatial_order.hpp"
 #include "refine/base_edges.hpp"
 #include "refine/lattice_layout.hpp"
 
 namespace isopatch {
 namespace {
 
-/// Bits per axis of the Morton code (3 x 21 = 63 bits).
-constexpr int kMortonBits = 21;
-
-/// The 21 low bits of v spread to every third bit.
-std::uint64_t spread(std::uint64_t v) {
-  v &= (std::uint64_t{1} << kMortonBits) - 1;
-  v = (v | v << 32U) & 0x1f00000000ffffULL;
-  v = (v | v << 16U) & 0x1f0000ff0000ffULL;
-  v = (v | v << 8U) & 0x100f00f00f00f00fULL;
-  v = (v | v << 4U) & 0x10c30c30c30c30c3ULL;
-  v = (v | v << 2U) & 0x1249249249249249ULL;
-  return v;
-}
-
-/// The Morton code of p in `box`, each axis quantised to 2^21 steps.
+/// The Morton code of p in `box`, each axis quantised to 2^21 steps (core/spatial_order.hpp).
 std::uint64_t morton(const Vec3& p, const Box& box) {
-  std::uint64_t code = 0;
-  const double steps = static_cast<double>((std::uint64_t{1} << kMortonBits) - 1);
+  std::uint32_t cell[3];
+  const double steps = 2097151.0;  // 2^21 - 1
   for (int a = 0; a < 3; ++a) {
     const double extent = box.hi[a] - box.lo[a];
     const double u = extent > 0.0 ? std::clamp((p[a] - box.lo[a]) / extent, 0.0, 1.0) : 0.0;
-    code |= spread(static_cast<std::uint64_t>(std::floor(u * steps))) << static_cast<unsigned>(a);
+    cell[a] = static_cast<std::uint32_t>(std::floor(u * steps));
   }
-  return code;
+  return z_order_key(cell[0], cell[1], cell[2]);
 }
 
 void check_plan_input(const Mesh& base, int level, int blocks) {

@@ -1,19 +1,26 @@
-// glTF 2.0 binary (.glb) writer (mesh_io.hpp): the container and its JSON by TinyGLTF (Debian's
-// libtinygltf), the data laid out here in one buffer: positions, normals, COLOR_0 (when colours are
-// given), one float accessor per vertex attribute, then the triangle indices.
+// glTF 2.0 binary (.glb) writer (mesh_io.hpp), streamed: the JSON chunk is made first from the counts
+// (every length is known before any data), then the binary chunk is written straight from the mesh:
+// positions, normals, COLOR_0 (when colours are given), one float accessor per vertex attribute, then
+// the triangle indices. Only the unit normals are held apart from the mesh (12 bytes per vertex): each
+// needs all triangles around its vertex before any normal is written. Follows the glTF 2.0
+// specification (Khronos, 2021): GLB header, JSON and BIN chunks 4-byte aligned, application-specific
+// attributes named with a leading underscore.
 #include <isopatch/error.hpp>
 #include <isopatch/mesh_io.hpp>
 
-#include <tiny_gltf.h>
-
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
-#include <cstring>
+#include <cstdint>
+#include <initializer_list>
 #include <limits>
 #include <map>
-#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
 
+#include "mesh/io_util.hpp"
 #include "mesh/mesh_formats.hpp"
 
 namespace isopatch::io {
@@ -21,48 +28,8 @@ namespace {
 
 constexpr int kArrayBuffer = 34962;         // bufferView target of vertex attributes
 constexpr int kElementArrayBuffer = 34963;  // bufferView target of indices
-
-// Appends floats (or indices) to the buffer as a new buffer view and returns its accessor.
-class BufferBuilder {
- public:
-  explicit BufferBuilder(tinygltf::Model& model) : model_(model) { model_.buffers.emplace_back(); }
-
-  int add(const void* data, std::size_t bytes, int target, int component, int type, std::size_t count) {
-    std::vector<unsigned char>& buffer = model_.buffers.front().data;
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = buffer.size();  // every item is 4 bytes, so every view stays aligned
-    view.byteLength = bytes;
-    view.target = target;
-    const auto* first = static_cast<const unsigned char*>(data);
-    buffer.insert(buffer.end(), first, first + bytes);
-    model_.bufferViews.push_back(view);
-    tinygltf::Accessor accessor;
-    accessor.bufferView = static_cast<int>(model_.bufferViews.size() - 1);
-    accessor.byteOffset = 0;
-    accessor.componentType = component;
-    accessor.type = type;
-    accessor.count = count;
-    model_.accessors.push_back(accessor);
-    return static_cast<int>(model_.accessors.size() - 1);
-  }
-
-  int add_vec3(const std::vector<float>& xyz) {
-    return add(xyz.data(), xyz.size() * sizeof(float), kArrayBuffer, TINYGLTF_COMPONENT_TYPE_FLOAT,
-               TINYGLTF_TYPE_VEC3, xyz.size() / 3);
-  }
-
- private:
-  tinygltf::Model& model_;
-};
-
-std::vector<float> flatten(const std::vector<Vec3>& points) {
-  std::vector<float> xyz;
-  xyz.reserve(3 * points.size());
-  for (const Vec3& p : points)
-    for (int k = 0; k < 3; ++k) xyz.push_back(static_cast<float>(p[k]));
-  return xyz;
-}
+constexpr int kFloat = 5126;
+constexpr int kUnsignedInt = 5125;
 
 // "mean_curvature" -> "_MEAN_CURVATURE" (glTF: application-specific attributes start with '_').
 std::string attribute_semantic(const std::string& name) {
@@ -72,100 +39,161 @@ std::string attribute_semantic(const std::string& name) {
   return semantic;
 }
 
-tinygltf::Material field_material() {
-  tinygltf::Material material;
-  material.name = "isopatch";
-  material.doubleSided = true;  // meshes clipped by their box are open: show the inside too
-  material.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
-  material.pbrMetallicRoughness.metallicFactor = 0.0;
-  material.pbrMetallicRoughness.roughnessFactor = 0.6;
-  return material;
+/// One accessor over its own buffer view: where it lies in the binary chunk and what it holds.
+struct View {
+  std::size_t offset = 0, bytes = 0, count = 0;
+  int target = kArrayBuffer, component = kFloat;
+  const char* type = "VEC3";
+  std::string min, max;  // JSON arrays, for POSITION only
+};
+
+std::string number(double value) {
+  std::string out;
+  append_number(out, value);
+  return out;
+}
+
+/// The JSON chunk: one scene, one node turning z up to glTF's y up, one mesh with one primitive. (Built
+/// by appending pieces: GCC 12 warns wrongly about "literal" + std::string.)
+std::string gltf_json(const std::vector<View>& views, const std::vector<std::string>& semantics,
+                      std::size_t binary_bytes) {
+  std::string json =
+      R"({"asset":{"generator":"isopatch","version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)";
+  const auto add = [&json](std::initializer_list<std::string_view> pieces) {
+    for (const std::string_view piece : pieces) json += piece;
+  };
+  add({R"("nodes":[{"mesh":0,"rotation":[)", number(-std::sqrt(0.5)), ",0,0,", number(std::sqrt(0.5)),
+       "]}],"});
+  json += R"("meshes":[{"name":"isopatch","primitives":[{"attributes":{)";
+  for (std::size_t a = 0; a < semantics.size(); ++a)
+    add({a > 0 ? "," : "", "\"", semantics[a], "\":", std::to_string(a)});
+  add({"},\"indices\":", std::to_string(views.size() - 1), R"(,"material":0,"mode":4}],)"});
+  add({R"("extras":{"undefined_value":)", number(static_cast<double>(kGlbUndefined)), "}}],"});
+  // Meshes clipped by their box are open: both sides shown.
+  json += R"("materials":[{"name":"isopatch","doubleSided":true,"pbrMetallicRoughness":)"
+          R"({"baseColorFactor":[1,1,1,1],"metallicFactor":0,"roughnessFactor":0.6}}],)";
+  json += "\"accessors\":[";
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    const View& v = views[k];
+    add({k > 0 ? ",{" : "{", "\"bufferView\":", std::to_string(k), ",\"componentType\":",
+         std::to_string(v.component), ",\"count\":", std::to_string(v.count), ",\"type\":\"", v.type, "\""});
+    if (!v.min.empty()) add({",\"min\":", v.min, ",\"max\":", v.max});
+    json += "}";
+  }
+  json += "],\"bufferViews\":[";
+  for (std::size_t k = 0; k < views.size(); ++k)
+    add({k > 0 ? ",{" : "{", "\"buffer\":0,\"byteOffset\":", std::to_string(views[k].offset),
+         ",\"byteLength\":", std::to_string(views[k].bytes), ",\"target\":", std::to_string(views[k].target),
+         "}"});
+  add({"],\"buffers\":[{\"byteLength\":", std::to_string(binary_bytes), "}]}"});
+  return json;
+}
+
+void put_floats(ByteSink& out, const Vec3& v) {
+  for (int k = 0; k < 3; ++k) append_le(out, static_cast<float>(v[k]));
 }
 
 }  // namespace
 
-std::string encode_glb(const Mesh& mesh, const std::vector<Vec3>& colours) {
+void encode_glb(const Mesh& mesh, const std::vector<Vec3>& colours, ByteSink& out) {
   if (mesh.triangle_count() == 0) throw InputError("a glTF file needs at least one triangle");
   if (!colours.empty() && colours.size() != mesh.vertex_count())
     throw InputError("glTF: " + std::to_string(colours.size()) + " colours for " +
                      std::to_string(mesh.vertex_count()) + " vertices");
-  tinygltf::Model model;
-  model.asset.version = "2.0";
-  model.asset.generator = "isopatch";
-  BufferBuilder buffer(model);
-  tinygltf::Primitive primitive;
-  primitive.mode = TINYGLTF_MODE_TRIANGLES;
-  primitive.material = 0;
-
-  const std::vector<float> positions = flatten(mesh.positions);
-  const int position = buffer.add_vec3(positions);
-  std::vector<double> lo(3, std::numeric_limits<double>::infinity());
-  std::vector<double> hi(3, -std::numeric_limits<double>::infinity());
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    lo[i % 3] = std::min(lo[i % 3], static_cast<double>(positions[i]));
-    hi[i % 3] = std::max(hi[i % 3], static_cast<double>(positions[i]));
-  }
-  model.accessors[static_cast<std::size_t>(position)].minValues = lo;
-  model.accessors[static_cast<std::size_t>(position)].maxValues = hi;
-  primitive.attributes["POSITION"] = position;
-
-  // glTF wants unit normals everywhere: a vertex without one (unused, or only in degenerate
-  // triangles) gets +z.
-  std::vector<Vec3> normals = vertex_normals(mesh);
-  for (Vec3& n : normals)
-    if (n.squaredNorm() == 0.0) n = Vec3::UnitZ();
-  primitive.attributes["NORMAL"] = buffer.add_vec3(flatten(normals));
-
-  if (!colours.empty()) {
-    std::vector<float> rgb = flatten(colours);
-    for (float& c : rgb) c = std::isfinite(c) ? std::clamp(c, 0.0f, 1.0f) : 0.0f;
-    primitive.attributes["COLOR_0"] = buffer.add_vec3(rgb);
-  }
-
-  std::map<std::string, std::string> semantics;  // semantic -> attribute, to catch "a" against "A"
+  std::vector<std::string> semantics{"POSITION", "NORMAL"};
+  if (!colours.empty()) semantics.emplace_back("COLOR_0");
+  std::map<std::string, std::string> named;  // semantic -> attribute, to catch "a" against "A"
   for (const VertexAttribute& attribute : mesh.attributes) {
     const std::string semantic = attribute_semantic(attribute.name);
-    if (!semantics.emplace(semantic, attribute.name).second)
-      throw InputError("glTF: attributes '" + semantics[semantic] + "' and '" + attribute.name +
+    if (!named.emplace(semantic, attribute.name).second)
+      throw InputError("glTF: attributes '" + named[semantic] + "' and '" + attribute.name +
                        "' would both be " + semantic);
-    std::vector<float> values = attribute.values;
-    for (float& v : values)
-      if (!std::isfinite(v)) v = kGlbUndefined;  // glTF forbids NaN and infinity in accessors
-    primitive.attributes[semantic] =
-        buffer.add(values.data(), values.size() * sizeof(float), kArrayBuffer, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                   TINYGLTF_TYPE_SCALAR, values.size());
+    semantics.push_back(semantic);
   }
+  const std::size_t n = mesh.vertex_count();
+  std::vector<View> views;
+  std::size_t offset = 0;
+  const auto add = [&](std::size_t bytes, std::size_t count, const char* type, int target, int component) {
+    View v;
+    v.offset = offset;
+    v.bytes = bytes;
+    v.count = count;
+    v.type = type;
+    v.target = target;
+    v.component = component;
+    views.push_back(v);
+    offset += bytes;  // every item is 4 bytes, so every view stays aligned
+  };
+  for (std::size_t k = 0; k < (colours.empty() ? 2U : 3U); ++k) add(12 * n, n, "VEC3", kArrayBuffer, kFloat);
+  for (std::size_t a = 0; a < mesh.attributes.size(); ++a) add(4 * n, n, "SCALAR", kArrayBuffer, kFloat);
+  add(12 * mesh.triangle_count(), 3 * mesh.triangle_count(), "SCALAR", kElementArrayBuffer, kUnsignedInt);
+  // The bounds of the positions as written (floats).
+  std::array<float, 3> lo{}, hi{};
+  lo.fill(std::numeric_limits<float>::infinity());
+  hi.fill(-std::numeric_limits<float>::infinity());
+  for (const Vec3& p : mesh.positions)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto f = static_cast<float>(p[static_cast<Eigen::Index>(k)]);
+      lo[k] = std::min(lo[k], f);
+      hi[k] = std::max(hi[k], f);
+    }
+  for (std::size_t k = 0; k < 3; ++k) {
+    views[0].min += k == 0 ? "[" : ",";
+    views[0].min += number(static_cast<double>(lo[k]));
+    views[0].max += k == 0 ? "[" : ",";
+    views[0].max += number(static_cast<double>(hi[k]));
+  }
+  views[0].min += "]";
+  views[0].max += "]";
 
-  std::vector<std::uint32_t> indices;
-  indices.reserve(3 * mesh.triangle_count());
-  for (const Triangle& t : mesh.triangles) indices.insert(indices.end(), t.begin(), t.end());
-  primitive.indices = buffer.add(indices.data(), indices.size() * sizeof(std::uint32_t), kElementArrayBuffer,
-                                 TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, indices.size());
+  std::string json = gltf_json(views, semantics, offset);
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  const std::size_t binary = offset;          // a multiple of 4
+  append_le(out, std::uint32_t{0x46546C67});  // "glTF"
+  append_le(out, std::uint32_t{2});
+  append_le(out, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + binary));
+  append_le(out, static_cast<std::uint32_t>(json.size()));
+  append_le(out, std::uint32_t{0x4E4F534A});  // "JSON"
+  out += json;
+  append_le(out, static_cast<std::uint32_t>(binary));
+  append_le(out, std::uint32_t{0x004E4942});  // "BIN\0"
 
-  tinygltf::Mesh gltf_mesh;
-  gltf_mesh.name = "isopatch";
-  gltf_mesh.primitives.push_back(primitive);
-  tinygltf::Value::Object extras;
-  extras["undefined_value"] = tinygltf::Value(static_cast<double>(kGlbUndefined));
-  gltf_mesh.extras = tinygltf::Value(extras);
-  model.meshes.push_back(gltf_mesh);
-  model.materials.push_back(field_material());
-
-  // isopatch has z up, glTF y up: the node turns the mesh by -90 degrees about x.
-  tinygltf::Node node;
-  node.mesh = 0;
-  node.rotation = {-std::sqrt(0.5), 0.0, 0.0, std::sqrt(0.5)};
-  model.nodes.push_back(node);
-  tinygltf::Scene scene;
-  scene.nodes.push_back(0);
-  model.scenes.push_back(scene);
-  model.defaultScene = 0;
-
-  std::ostringstream out;
-  tinygltf::TinyGLTF writer;
-  if (!writer.WriteGltfSceneToStream(&model, out, false, true))
-    throw IoError("glTF: TinyGLTF could not write the model");
-  return out.str();
+  for (const Vec3& p : mesh.positions) put_floats(out, p);
+  {
+    // Area-weighted unit normals (as vertex_normals, mesh.hpp), summed as floats: 12 bytes per vertex.
+    // glTF wants unit normals everywhere: a vertex without one (unused, or only in degenerate
+    // triangles) gets +z.
+    // Each term is divided by the squared diagonal of the bounds, so that floats hold it at any scale.
+    double diagonal2 = 0.0;
+    for (std::size_t k = 0; k < 3; ++k)
+      diagonal2 += (static_cast<double>(hi[k]) - static_cast<double>(lo[k])) *
+                   (static_cast<double>(hi[k]) - static_cast<double>(lo[k]));
+    const double scale = diagonal2 > 0.0 && std::isfinite(diagonal2) ? 1.0 / diagonal2 : 1.0;
+    std::vector<Eigen::Vector3f> normals(n, Eigen::Vector3f::Zero());
+    for (const Triangle& t : mesh.triangles) {
+      const Vec3& a = mesh.positions[t[0]];
+      const Eigen::Vector3f normal =
+          (scale * (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a)).cast<float>();
+      for (const std::uint32_t v : t) normals[v] += normal;
+    }
+    for (const Eigen::Vector3f& sum : normals) {
+      const float length = sum.norm();
+      const Eigen::Vector3f unit =
+          length > 0.0F && std::isfinite(length) ? Eigen::Vector3f(sum / length) : Eigen::Vector3f::UnitZ();
+      for (int k = 0; k < 3; ++k) append_le(out, unit[k]);
+    }
+  }
+  for (const Vec3& c : colours) {
+    for (int k = 0; k < 3; ++k) {
+      const auto f = static_cast<float>(c[k]);
+      append_le(out, std::isfinite(f) ? std::clamp(f, 0.0F, 1.0F) : 0.0F);
+    }
+  }
+  for (const VertexAttribute& attribute : mesh.attributes)
+    for (const float value : attribute.values)
+      append_le(out, std::isfinite(value) ? value : kGlbUndefined);  // glTF forbids NaN and infinity
+  for (const Triangle& t : mesh.triangles)
+    for (const std::uint32_t v : t) append_le(out, v);
 }
 
 }  // namespace isopatch::io

@@ -1,6 +1,9 @@
 // Shared machinery of the mesh readers and writers. Files are read whole with stdio (one allocation,
-// no per-line stream overhead) and written from one buffer, so a failed write is seen at fclose.
+// no per-line stream overhead) and written in chunks (byte_sink.hpp); a failed write is seen at the
+// chunk's fwrite or at fclose, and the partial file removed.
 #include "mesh/io_util.hpp"
+
+#include "mesh/byte_sink.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -55,15 +58,36 @@ std::string load_file(const std::string& path) {
   return bytes;
 }
 
-void save_file(const std::string& path, std::string_view bytes) {
+namespace {
+
+/// Removes what a failed write left at `path` when it is a regular file (never a device such as
+/// /dev/full, which must stay).
+void remove_partial(const std::string& path) {
+  std::error_code ignored;
+  if (std::filesystem::is_regular_file(path, ignored)) std::filesystem::remove(path, ignored);
+}
+
+}  // namespace
+
+void write_file(const std::string& path, const std::function<void(ByteSink&)>& write) {
   errno = 0;
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) fail(path, "cannot open for writing (" + reason(errno) + ")");
-  const std::size_t written = std::fwrite(bytes.data(), 1, bytes.size(), file);
-  const int write_error = errno;
-  const bool closed = std::fclose(file) == 0;
-  if (written != bytes.size()) fail(path, "write failed (" + reason(write_error) + ")");
-  if (!closed) fail(path, "write failed when closing (" + reason(errno) + ")");
+  try {
+    ByteSink out(file, path);
+    write(out);
+    out.flush();
+  } catch (...) {
+    std::fclose(file);
+    remove_partial(path);
+    throw;
+  }
+  errno = 0;
+  if (std::fclose(file) != 0) {
+    const int error = errno;
+    remove_partial(path);
+    fail(path, "write failed when closing (" + reason(error) + ")");
+  }
 }
 
 void fail(const std::string& name, const std::string& problem) {
@@ -134,24 +158,6 @@ std::string quoted(std::string_view token) {
   for (char c : token.substr(0, kShown)) text += (c >= 32 && c < 127) ? c : '?';
   if (token.size() > kShown) text += "...";
   return text + "'";
-}
-
-void append_number(std::string& out, double value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, result.ptr);
-}
-
-void append_number(std::string& out, float value) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, result.ptr);
-}
-
-void append_number(std::string& out, std::int64_t value) {
-  char buffer[24];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.append(buffer, result.ptr);
 }
 
 std::string add_polygon(Mesh& mesh, std::span<const std::int64_t> corners, std::size_t vertex_count) {

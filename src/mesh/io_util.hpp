@@ -13,9 +13,11 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 
 namespace isopatch::io {
 
@@ -24,9 +26,12 @@ constexpr std::size_t kMaxPolygon = 1000;
 
 /// The whole content of `path`. \throw IoError when it cannot be opened or read.
 std::string load_file(const std::string& path);
-/// Writes `bytes` to `path` in one go and checks the stream after closing it.
-/// \throw IoError when the file cannot be created or the write fails (disk full, ...).
-void save_file(const std::string& path, std::string_view bytes);
+class ByteSink;
+/// Creates `path` and lets `write` write it through a ByteSink in chunks; checks the file after
+/// closing it. A file whose writing throws is removed (no partial mesh is left behind).
+/// \throw IoError when the file cannot be created or the write fails (disk full, ...); what `write`
+/// throws.
+void write_file(const std::string& path, const std::function<void(ByteSink&)>& write);
 
 /// Throws IoError("<name>: <problem>").
 [[noreturn]] void fail(const std::string& name, const std::string& problem);
@@ -66,14 +71,19 @@ bool parse_uint(std::string_view token, std::uint64_t& out);
 /// A token shortened for an error message, in quotes.
 std::string quoted(std::string_view token);
 
-/// Shortest decimal text that reads back to exactly the same value.
-void append_number(std::string& out, double value);
-void append_number(std::string& out, float value);
-void append_number(std::string& out, std::int64_t value);
+/// Shortest decimal text that reads back to exactly the same value (doubles, floats), or the integer;
+/// to a std::string or a ByteSink.
+template <class Out, class T>
+void append_number(Out& out, T value) {
+  static_assert(std::is_same_v<T, double> || std::is_same_v<T, float> || std::is_same_v<T, std::int64_t>);
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  out.append(buffer, static_cast<std::size_t>(result.ptr - buffer));
+}
 
-/// Bytes of a scalar in little-endian order.
-template <class T>
-void append_le(std::string& out, T value) {
+/// Bytes of a scalar in little-endian order, to a std::string or a ByteSink.
+template <class Out, class T>
+void append_le(Out& out, T value) {
   auto bytes = std::bit_cast<std::array<char, sizeof(T)>>(value);
   if constexpr (std::endian::native == std::endian::big) std::ranges::reverse(bytes);
   out.append(bytes.data(), bytes.size());

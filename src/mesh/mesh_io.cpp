@@ -1,6 +1,6 @@
 // Public entry points of mesh I/O: the format from the extension, then one encoder or decoder per
 // format (obj_io.cpp, ply_io.cpp, off_io.cpp, stl_io.cpp; glb_io.cpp and threemf_io.cpp write only). Files
-// are read whole and written whole.
+// are read whole, and written in chunks as the encoders make them (byte_sink.hpp).
 #include <isopatch/mesh_io.hpp>
 
 #include "mesh/io_util.hpp"
@@ -24,25 +24,33 @@ MeshFormat format_from_path(const std::string& path) {
                 "' (use .obj, .ply, .off, .stl, .glb or .3mf)");
 }
 
-std::string encode_mesh(const Mesh& mesh, MeshFormat format, const std::vector<Vec3>& vertex_colours) {
+void io::encode_to(const Mesh& mesh, MeshFormat format, const std::vector<Vec3>& vertex_colours,
+                   io::ByteSink& out) {
   mesh.validate();
   switch (format) {
     case MeshFormat::Obj:
-      return io::encode_obj(mesh);
+      return io::encode_obj(mesh, out);
     case MeshFormat::PlyAscii:
-      return io::encode_ply(mesh, false);
+      return io::encode_ply(mesh, false, out);
     case MeshFormat::PlyBinary:
-      return io::encode_ply(mesh, true);
+      return io::encode_ply(mesh, true, out);
     case MeshFormat::Off:
-      return io::encode_off(mesh);
+      return io::encode_off(mesh, out);
     case MeshFormat::Stl:
-      return io::encode_stl(mesh);
+      return io::encode_stl(mesh, out);
     case MeshFormat::Glb:
-      return io::encode_glb(mesh, vertex_colours);
+      return io::encode_glb(mesh, vertex_colours, out);
     case MeshFormat::ThreeMf:
-      return io::encode_3mf(mesh);
+      return io::encode_3mf(mesh, out);
   }
   throw InputError("unknown mesh format");
+}
+
+std::string encode_mesh(const Mesh& mesh, MeshFormat format, const std::vector<Vec3>& vertex_colours) {
+  std::string bytes;
+  io::ByteSink out(bytes);
+  io::encode_to(mesh, format, vertex_colours, out);
+  return bytes;
 }
 
 Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& name) {
@@ -70,7 +78,8 @@ Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& n
 
 void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
                 const std::vector<Vec3>& vertex_colours) {
-  io::save_file(path, encode_mesh(mesh, format, vertex_colours));
+  mesh.validate();  // before the file is made
+  io::write_file(path, [&](io::ByteSink& out) { io::encode_to(mesh, format, vertex_colours, out); });
 }
 
 void write_mesh(const Mesh& mesh, const std::string& path, const std::vector<Vec3>& vertex_colours) {

@@ -88,9 +88,7 @@ void read_face(Tokens& tokens, Mesh& mesh, std::vector<std::int64_t>& corners, c
 
 }  // namespace
 
-std::string encode_obj(const Mesh& mesh) {
-  std::string out;
-  out.reserve(64 + mesh.vertex_count() * 64 + mesh.triangle_count() * 32);
+void encode_obj(const Mesh& mesh, ByteSink& out) {
   out += "# isopatch mesh: " + std::to_string(mesh.vertex_count()) + " vertices, " +
          std::to_string(mesh.triangle_count()) + " triangles\n";
   for (const Vec3& p : mesh.positions) {
@@ -109,7 +107,6 @@ std::string encode_obj(const Mesh& mesh) {
     }
     out += '\n';
   }
-  return out;
 }
 
 Mesh decode_obj(std::string_view bytes, const std::string& name) {

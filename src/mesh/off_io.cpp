@@ -42,9 +42,7 @@ std::uint64_t read_count(Tokens& tokens, std::string_view token, const char* wha
 
 }  // namespace
 
-std::string encode_off(const Mesh& mesh) {
-  std::string out;
-  out.reserve(64 + mesh.vertex_count() * 64 + mesh.triangle_count() * 32);
+void encode_off(const Mesh& mesh, ByteSink& out) {
   out += "OFF\n# isopatch mesh\n" + std::to_string(mesh.vertex_count()) + ' ' +
          std::to_string(mesh.triangle_count()) + " 0\n";
   for (const Vec3& p : mesh.positions) {
@@ -62,7 +60,6 @@ std::string encode_off(const Mesh& mesh) {
     }
     out += '\n';
   }
-  return out;
 }
 
 Mesh decode_off(std::string_view bytes, const std::string& name) {

@@ -238,7 +238,7 @@ Mesh read_body(const PlyHeader& header, Source& source, Place& place) {
   return mesh;
 }
 
-void append_header(std::string& out, const Mesh& mesh, bool binary) {
+void append_header(ByteSink& out, const Mesh& mesh, bool binary) {
   out += "ply\nformat ";
   out += binary ? "binary_little_endian" : "ascii";
   out += " 1.0\ncomment isopatch mesh\nelement vertex " + std::to_string(mesh.vertex_count()) +
@@ -264,11 +264,8 @@ void check_writable(const Mesh& mesh) {
 
 }  // namespace
 
-std::string encode_ply(const Mesh& mesh, bool binary) {
+void encode_ply(const Mesh& mesh, bool binary, ByteSink& out) {
   check_writable(mesh);
-  std::string out;
-  const std::size_t per_vertex = binary ? 24 + 4 * mesh.attributes.size() : 64 + 16 * mesh.attributes.size();
-  out.reserve(256 + per_vertex * mesh.vertex_count() + (binary ? 13 : 32) * mesh.triangle_count());
   append_header(out, mesh, binary);
   for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -302,7 +299,6 @@ std::string encode_ply(const Mesh& mesh, bool binary) {
       out += '\n';
     }
   }
-  return out;
 }
 
 Mesh decode_ply(std::string_view bytes, const std::string& name) {

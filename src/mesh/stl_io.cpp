@@ -132,11 +132,9 @@ Mesh decode_ascii(std::string_view bytes, const std::string& name) {
 
 }  // namespace
 
-std::string encode_stl(const Mesh& mesh) {
+void encode_stl(const Mesh& mesh, ByteSink& out) {
   if (mesh.triangle_count() > std::numeric_limits<std::uint32_t>::max())
     throw InputError("mesh has too many triangles for STL");
-  std::string out;
-  out.reserve(kHeaderBytes + 4 + kTriangleBytes * mesh.triangle_count());
   std::string header = "isopatch binary STL";
   header.resize(kHeaderBytes, ' ');
   out += header;
@@ -153,7 +151,6 @@ std::string encode_stl(const Mesh& mesh) {
       for (int axis = 0; axis < 3; ++axis) append_le(out, static_cast<float>(mesh.positions[v][axis]));
     append_le(out, std::uint16_t{0});
   }
-  return out;
 }
 
 Mesh decode_stl(std::string_view bytes, const std::string& name) {

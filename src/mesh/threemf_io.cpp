@@ -1,50 +1,26 @@
 // 3MF (3D Manufacturing Format, 3MF Consortium core specification 1.2): the package slicers and
-// printers read, written through Debian's lib3mf (1.8, its C interface). One mesh object holding the
-// whole mesh (float positions in millimetres, triangles as given: counter-clockwise seen from
-// outside, as 3MF asks), one build item without a transform, and the producing application in the
-// package's metadata, with identifiers made from the content (the same bytes every time). lib3mf
-// writes coordinates with six decimals: a nanometre in millimetres, so a model should be in millimetres
-// (or at least not far smaller). 3MF is written only; reading it is left to the tools that print.
+// printers read, written as it goes: an OPC package (a zip archive, zip_stream.hpp) with the content
+// types, the package relationship and one model part holding one mesh object (float positions in
+// millimetres printed with six decimals, a nanometre, as lib3mf prints them; triangles as given:
+// counter-clockwise seen from outside, as 3MF asks), one build item without a transform, and the
+// producing application in the model's metadata, with identifiers made from the content (the same
+// bytes every time). The model's XML is compressed as it is printed, so writing holds a chunk, not the
+// package. 3MF is written only; reading it is left to the tools that print.
 #include "mesh/mesh_formats.hpp"
 
 #include <isopatch/error.hpp>
 
-#include <Model/COM/NMR_DLLInterfaces.h>
-
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <string>
-#include <vector>
+
+#include "mesh/byte_sink.hpp"
+#include "mesh/zip_stream.hpp"
 
 namespace isopatch::io {
 namespace {
-
-/// One lib3mf object, released when it goes.
-class Lib3mfHandle {
- public:
-  Lib3mfHandle() = default;
-  ~Lib3mfHandle() {
-    if (handle_ != nullptr) NMR::lib3mf_release(handle_);
-  }
-  Lib3mfHandle(const Lib3mfHandle&) = delete;
-  Lib3mfHandle& operator=(const Lib3mfHandle&) = delete;
-  NMR::PLib3MFBase** out() { return &handle_; }
-  NMR::PLib3MFBase* get() const { return handle_; }
-
- private:
-  NMR::PLib3MFBase* handle_ = nullptr;
-};
-
-/// Turns a lib3mf failure into an IoError naming the step and lib3mf's own message.
-void check(LIB3MFRESULT result, NMR::PLib3MFBase* on, const char* step) {
-  if (result == LIB3MF_OK) return;
-  DWORD code = 0;
-  LPCSTR message = nullptr;
-  if (on != nullptr) NMR::lib3mf_getlasterror(on, &code, &message);
-  throw IoError(std::string("3MF: ") + step + " failed" +
-                (message != nullptr && *message != '\0' ? std::string(": ") + message : std::string()));
-}
 
 /// A name-based UUID (RFC 4122 layout, version 5 bits) from the mesh's content and a salt: the same
 /// mesh gets the same identifiers, so the package is the same bytes every time (lib3mf would draw
@@ -71,45 +47,90 @@ std::string content_uuid(const Mesh& mesh, std::uint64_t salt) {
 
 }  // namespace
 
-std::string encode_3mf(const Mesh& mesh) {
+void encode_3mf(const Mesh& mesh, ByteSink& out) {
   if (mesh.triangles.empty()) throw InputError("3MF: a mesh without triangles cannot be written");
-  constexpr std::size_t kLargest = std::numeric_limits<DWORD>::max();
+  constexpr std::size_t kLargest = std::numeric_limits<std::uint32_t>::max();
   if (mesh.positions.size() > kLargest || mesh.triangles.size() > kLargest)
     throw InputError("3MF: more than 2^32 - 1 vertices or triangles (write .ply blocks instead)");
-  Lib3mfHandle model;
-  check(NMR::lib3mf_createmodel(model.out()), nullptr, "creating a model");
-  check(NMR::lib3mf_model_setunit(model.get(), NMR::MODELUNIT_MILLIMETER), model.get(), "setting the unit");
-  check(NMR::lib3mf_model_addmetadatautf8(model.get(), "Application", "isopatch"), model.get(),
-        "adding metadata");
-  Lib3mfHandle object;
-  check(NMR::lib3mf_model_addmeshobject(model.get(), object.out()), model.get(), "adding a mesh object");
-  check(NMR::lib3mf_object_setnameutf8(object.get(), "isopatch mesh"), object.get(), "naming the mesh");
-  check(NMR::lib3mf_object_setuuidutf8(object.get(), content_uuid(mesh, 1).c_str()), object.get(),
-        "identifying the mesh");
-  std::vector<NMR::MODELMESHVERTEX> vertices(mesh.positions.size());
-  for (std::size_t i = 0; i < vertices.size(); ++i)
-    for (int a = 0; a < 3; ++a) vertices[i].m_fPosition[a] = static_cast<float>(mesh.positions[i][a]);
-  std::vector<NMR::MODELMESHTRIANGLE> triangles(mesh.triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-    for (std::size_t k = 0; k < 3; ++k) triangles[t].m_nIndices[k] = mesh.triangles[t][k];
-  check(NMR::lib3mf_meshobject_setgeometry(object.get(), vertices.data(), static_cast<DWORD>(vertices.size()),
-                                           triangles.data(), static_cast<DWORD>(triangles.size())),
-        object.get(), "setting the geometry");
-  Lib3mfHandle item;
-  check(NMR::lib3mf_model_addbuilditem(model.get(), object.get(), nullptr, item.out()), model.get(),
-        "adding a build item");
-  check(NMR::lib3mf_builditem_setuuidutf8(item.get(), content_uuid(mesh, 2).c_str()), item.get(),
-        "identifying the build item");
-  check(NMR::lib3mf_model_setbuilduuidutf8(model.get(), content_uuid(mesh, 3).c_str()), model.get(),
-        "identifying the build");
-  Lib3mfHandle writer;
-  check(NMR::lib3mf_model_querywriter(model.get(), "3mf", writer.out()), model.get(), "making a writer");
-  ULONG64 size = 0;
-  check(NMR::lib3mf_writer_getstreamsize(writer.get(), &size), writer.get(), "sizing the package");
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  check(NMR::lib3mf_writer_writetobuffer(writer.get(), reinterpret_cast<BYTE*>(bytes.data()), size),
-        writer.get(), "writing the package");
-  return bytes;
+  ZipStream zip(out);
+  const auto part = [&zip](const std::string& name, const std::string& text) {
+    zip.begin_entry(name);
+    zip.write(text.data(), text.size());
+    zip.end_entry();
+  };
+  zip.begin_entry("3D/3dmodel.model");
+  {
+    ByteSink xml([&zip](const char* data, std::size_t count) { zip.write(data, count); });
+    xml += R"(<?xml version="1.0" encoding="utf-8"?>)"
+           "\n"
+           R"(<model xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02" unit="millimeter" )"
+           R"(xml:lang="en-US" xmlns:p="http://schemas.microsoft.com/3dmanufacturing/production/2015/06">)"
+           "\n"
+           "\t<metadata name=\"Application\">isopatch</metadata>\n\t<resources>\n"
+           "\t\t<object id=\"1\" name=\"isopatch mesh\" type=\"model\" p:UUID=\"";
+    xml += content_uuid(mesh, 1);
+    xml += "\">\n\t\t\t<mesh>\n\t\t\t\t<vertices>\n";
+    char number[64];
+    const auto coordinate = [&](const char* label, double value) {
+      xml += label;
+      // The float position, with six decimals ("%f" of a float's value).
+      const auto result =
+          std::to_chars(number, number + sizeof number, static_cast<double>(static_cast<float>(value)),
+                        std::chars_format::fixed, 6);
+      xml.append(number, result.ptr);
+      xml += '"';
+    };
+    for (const Vec3& p : mesh.positions) {
+      coordinate("\t\t\t\t\t<vertex x=\"", p.x());
+      coordinate(" y=\"", p.y());
+      coordinate(" z=\"", p.z());
+      xml += " />\n";
+    }
+    xml += "\t\t\t\t</vertices>\n\t\t\t\t<triangles>\n";
+    const auto index = [&](const char* label, std::uint32_t v) {
+      xml += label;
+      const auto result = std::to_chars(number, number + sizeof number, v);
+      xml.append(number, result.ptr);
+      xml += '"';
+    };
+    for (const Triangle& t : mesh.triangles) {
+      index("\t\t\t\t\t<triangle v1=\"", t[0]);
+      index(" v2=\"", t[1]);
+      index(" v3=\"", t[2]);
+      xml += " />\n";
+    }
+    xml += "\t\t\t\t</triangles>\n\t\t\t</mesh>\n\t\t</object>\n\t</resources>\n\t<build p:UUID=\"";
+    xml += content_uuid(mesh, 3);
+    xml += "\">\n\t\t<item objectid=\"1\" p:UUID=\"";
+    xml += content_uuid(mesh, 2);
+    xml += "\" />\n\t</build>\n</model>\n";
+    xml.flush();
+  }
+  zip.end_entry();
+  part(
+      "[Content_Types].xml",
+      R"(<?xml version="1.0" encoding="utf-8"?>)"
+      "\n"
+      R"(<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types">)"
+      "\n"
+      "\t"
+      R"(<Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml" />)"
+      "\n"
+      "\t"
+      R"(<Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml" />)"
+      "\n"
+      "</Types>\n");
+  part("_rels/.rels",
+       R"(<?xml version="1.0" encoding="utf-8"?>)"
+       "\n"
+       R"(<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships">)"
+       "\n"
+       "\t"
+       R"(<Relationship Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel" )"
+       R"(Target="/3D/3dmodel.model" Id="rel0" />)"
+       "\n"
+       "</Relationships>\n");
+  zip.finish();
 }
 
 }  // namespace isopatch::io

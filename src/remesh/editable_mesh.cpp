@@ -10,9 +10,9 @@
 #include <span>
 #include <utility>
 
+#include "core/spatial_order.hpp"
 #include "core/vertex_role.hpp"
 #include "remesh/slot_renumbering.hpp"
-#include "remesh/spatial_order.hpp"
 
 namespace isopatch {
 

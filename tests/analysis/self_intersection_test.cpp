@@ -132,6 +132,11 @@ TEST(SelfIntersection, AgreesWithCgalOnFoldsAndInterpenetration) {
     folds += expected;
   }
   EXPECT_GT(folds, 10u);  // the jitter folds some of the spheres
+  // A finer sphere folded in many places: a deep tree, whose seams between subtrees are scanned apart.
+  const Mesh fine = jittered(test::icosphere(5), 300, 0.08, 7);
+  const std::size_t fine_expected = test::count_self_intersections(fine, 100000);
+  EXPECT_GT(fine_expected, 20u);
+  EXPECT_EQ(count(fine), fine_expected);
   // Two spheres through each other: their triangles cross along a circle.
   const Mesh two = spheres_through_each_other(3);
   const SelfIntersectionReport r = find_self_intersections(two);

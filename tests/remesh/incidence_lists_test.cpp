@@ -14,10 +14,10 @@
 
 #include <tbb/parallel_for.h>
 
+#include "core/spatial_order.hpp"
 #include "remesh/editable_mesh.hpp"
 #include "remesh/incidence_lists.hpp"
 #include "remesh/slot_renumbering.hpp"
-#include "remesh/spatial_order.hpp"
 
 namespace isopatch {
 namespace {

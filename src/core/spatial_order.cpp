@@ -1,5 +1,5 @@
 // The Z-order of points, see spatial_order.hpp.
-#include "remesh/spatial_order.hpp"
+#include "core/spatial_order.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +8,8 @@
 
 namespace isopatch {
 namespace {
+
+constexpr double kSteps = 2097151.0;  // 2^21 - 1
 
 /// The 21 low bits of v spread to every third bit.
 std::uint64_t spread_bits(std::uint32_t v) {
@@ -26,23 +28,28 @@ std::uint64_t z_order_key(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
   return spread_bits(x) | spread_bits(y) << 1 | spread_bits(z) << 2;
 }
 
+ZOrderCube::ZOrderCube(const Vec3& lo, double extent)
+    : lo_(lo), scale_(extent > 0.0 ? kSteps / extent : 0.0) {}
+
+std::uint64_t ZOrderCube::key(const Vec3& p) const {
+  std::uint32_t cell[3];
+  for (int c = 0; c < 3; ++c)
+    cell[c] = static_cast<std::uint32_t>(std::clamp((p[c] - lo_[c]) * scale_, 0.0, kSteps));
+  return z_order_key(cell[0], cell[1], cell[2]);
+}
+
 std::vector<std::uint32_t> z_order(const std::vector<Vec3>& points, const std::vector<bool>& keep) {
   const auto kept = [&](std::size_t i) { return keep.empty() || keep[i]; };
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()),
        hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < points.size(); ++i)
     if (kept(i)) lo = lo.cwiseMin(points[i]), hi = hi.cwiseMax(points[i]);
-  constexpr double kSteps = 2097151.0;  // 2^21 - 1
-  const double extent = (hi - lo).maxCoeff();
-  const double scale = extent > 0.0 ? kSteps / extent : 0.0;
+  const ZOrderCube cube(lo, (hi - lo).maxCoeff());
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed;
   keyed.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!kept(i)) continue;
-    std::uint32_t cell[3];
-    for (int c = 0; c < 3; ++c)
-      cell[c] = static_cast<std::uint32_t>(std::clamp((points[i][c] - lo[c]) * scale, 0.0, kSteps));
-    keyed.emplace_back(z_order_key(cell[0], cell[1], cell[2]), static_cast<std::uint32_t>(i));
+    keyed.emplace_back(cube.key(points[i]), static_cast<std::uint32_t>(i));
   }
   std::sort(keyed.begin(), keyed.end());
   std::vector<std::uint32_t> order;

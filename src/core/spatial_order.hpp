@@ -3,7 +3,9 @@
 // points near each other in space are mostly near each other in the order. The clean-up renumbers its
 // vertices in this order: a split appends its vertex at the end of the arrays, and after a round of
 // splits of a large mesh, every pass over the vertices would otherwise jump across memory.
-// (Morton, "A computer oriented geodetic data base", IBM 1966; the standard use for mesh locality.)
+// The self-intersection check builds its tree of triangles along the same curve, and blocks cut a base
+// along it. (Morton, "A computer oriented geodetic data base", IBM 1966; the standard use for mesh
+// locality.)
 
 #include <isopatch/geometry.hpp>
 
@@ -19,5 +21,18 @@ std::vector<std::uint32_t> z_order(const std::vector<Vec3>& points, const std::v
 
 /// The 63-bit Z-order key of cell (x, y, z), each coordinate below 2^21 (bits interleaved, x lowest).
 std::uint64_t z_order_key(std::uint32_t x, std::uint32_t y, std::uint32_t z);
+
+/// The Z-order keys of points in a cube: its lower corner `lo` and side `extent` cut into 2^21 steps
+/// per axis (points outside are clamped to it; a cube of side 0 gives every point key 0).
+class ZOrderCube {
+ public:
+  ZOrderCube(const Vec3& lo, double extent);
+  /// The key of p's step cell. \pre p is finite.
+  std::uint64_t key(const Vec3& p) const;
+
+ private:
+  Vec3 lo_;
+  double scale_;
+};
 
 }  // namespace isopatch

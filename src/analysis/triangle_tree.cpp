@@ -1,0 +1,169 @@
+// The self-intersection check's tree of triangles, see triangle_tree.hpp.
+#include "analysis/triangle_tree.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <utility>
+
+#include "analysis/mesh_neighbourhood.hpp"
+#include "core/spatial_order.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+#include <tbb/parallel_sort.h>
+
+namespace isopatch::analysis {
+namespace {
+
+/// The float next to f towards -infinity (down) or +infinity (up): f's bits stepped by one, inline
+/// (std::nextafter is a library call). \pre f is not NaN, and not the infinity it steps away from.
+float step_down(float f) {
+  if (f == 0.0F) return -std::numeric_limits<float>::denorm_min();
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(f > 0.0F ? bits - 1U : bits + 1U);
+}
+float step_up(float f) {
+  return -step_down(-f);
+}
+
+/// x rounded to a float no larger (down) or no smaller (up) than x.
+float round_down(double x) {
+  const auto f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? step_down(f) : f;
+}
+float round_up(double x) {
+  const auto f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? step_up(f) : f;
+}
+
+}  // namespace
+
+void FloatBox::add(const Vec3& lo_d, const Vec3& hi_d) {
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::min(lo[a], round_down(lo_d[a]));
+    hi[a] = std::max(hi[a], round_up(hi_d[a]));
+  }
+}
+
+std::vector<std::uint32_t> z_ordered_triangles(const Mesh& mesh) {
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vec3& p : mesh.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  const ZOrderCube cube(lo, mesh.positions.empty() ? 0.0 : (hi - lo).maxCoeff());
+  constexpr std::uint64_t kSkipped = std::numeric_limits<std::uint64_t>::max();  // above any 63-bit key
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(mesh.triangles.size());
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, keyed.size(), std::size_t{1} << 14U), [&](const auto& r) {
+        for (std::size_t t = r.begin(); t != r.end(); ++t) {
+          const Triangle& tri = mesh.triangles[t];
+          const std::uint64_t key =
+              repeats_vertex(tri)
+                  ? kSkipped
+                  : cube.key((mesh.positions[tri[0]] + mesh.positions[tri[1]] + mesh.positions[tri[2]]) /
+                             3.0);
+          keyed[t] = {key, static_cast<std::uint32_t>(t)};
+        }
+      });
+  tbb::parallel_sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> order;
+  order.reserve(keyed.size());
+  for (const auto& [key, t] : keyed)
+    if (key != kSkipped) order.push_back(t);
+  return order;
+}
+
+TriangleTree::TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order)
+    : mesh_(mesh), order_(std::move(order)) {
+  const std::size_t n = order_.size();
+  nodes_.resize(node_count(n));
+  for (std::size_t a = 0; a < 3; ++a) {
+    boxes_.lo[a].resize(n);
+    boxes_.hi[a].resize(n);
+  }
+  if (n > 0) build(0, 0, n);
+}
+
+FloatBox TriangleTree::triangle_box(std::size_t position) const {
+  const Triangle& tri = mesh_.triangles[order_[position]];
+  const Vec3& p = mesh_.positions[tri[0]];
+  const Vec3& q = mesh_.positions[tri[1]];
+  const Vec3& r = mesh_.positions[tri[2]];
+  FloatBox box;
+  box.add(p.cwiseMin(q).cwiseMin(r), p.cwiseMax(q).cwiseMax(r));
+  return box;
+}
+
+std::size_t TriangleTree::node_count(std::size_t n) {
+  if (n <= kLeafSize) return n > 0 ? 1 : 0;
+  return 1 + node_count(n / 2) + node_count(n - n / 2);
+}
+
+/// The subtree over positions [begin, end) at nodes_[index] (its nodes at index..index +
+/// node_count(end - begin) - 1, depth first). The positions are in Z-order, so halving the range halves
+/// the triangles in space, like a median split, at no cost; boxes are made bottom-up.
+/// Node numbers are fixed in advance, so the tree is the same for any number of threads.
+void TriangleTree::build(std::size_t index, std::size_t begin, std::size_t end) {
+  Node& node = nodes_[index];
+  node.begin = static_cast<std::uint32_t>(begin);
+  node.end = static_cast<std::uint32_t>(end);
+  if (end - begin <= kLeafSize) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const FloatBox box = triangle_box(k);
+      for (std::size_t a = 0; a < 3; ++a) {
+        boxes_.lo[a][k] = box.lo[static_cast<Eigen::Index>(a)];
+        boxes_.hi[a][k] = box.hi[static_cast<Eigen::Index>(a)];
+      }
+      node.box.add(box);
+    }
+    return;
+  }
+  const std::size_t middle = begin + (end - begin) / 2;
+  const std::size_t left = index + 1;
+  const std::size_t right = left + node_count(middle - begin);
+  node.right = static_cast<std::uint32_t>(right);
+  if (end - begin >= kParallelBuild)
+    tbb::parallel_invoke([&] { build(left, begin, middle); }, [&] { build(right, middle, end); });
+  else {
+    build(left, begin, middle);
+    build(right, middle, end);
+  }
+  node.box = nodes_[left].box;
+  node.box.add(nodes_[right].box);
+}
+
+std::vector<TriangleTree::Job> TriangleTree::jobs(std::size_t grain) const {
+  std::vector<Job> out;
+  if (!nodes_.empty()) self_jobs(0, grain, out);
+  return out;
+}
+
+void TriangleTree::self_jobs(std::size_t n, std::size_t grain, std::vector<Job>& out) const {
+  const Node& node = nodes_[n];
+  if (node.leaf() || node.end - node.begin <= grain) {
+    out.push_back({n, n, true});
+    return;
+  }
+  self_jobs(n + 1, grain, out);  // the order of self_pairs
+  self_jobs(node.right, grain, out);
+  cross_jobs(n + 1, node.right, grain, out);
+}
+
+void TriangleTree::cross_jobs(std::size_t m, std::size_t n, std::size_t grain, std::vector<Job>& out) const {
+  const Node& a = nodes_[m];
+  const Node& b = nodes_[n];
+  if (!a.box.overlaps(b.box)) return;
+  if ((a.leaf() && b.leaf()) || (a.end - a.begin) + (b.end - b.begin) <= grain) {
+    out.push_back({m, n, false});
+    return;
+  }
+  if (splits_first(a, b)) {  // the order of cross_pairs
+    cross_jobs(m + 1, n, grain, out);
+    cross_jobs(a.right, n, grain, out);
+  } else {
+    cross_jobs(m, n + 1, grain, out);
+    cross_jobs(m, b.right, grain, out);
+  }
+}
+
+}  // namespace isopatch::analysis
