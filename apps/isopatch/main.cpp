@@ -18,6 +18,7 @@
 
 #include "commands.hpp"
 #include "error_report.hpp"
+#include "interrupts.hpp"
 
 namespace {
 
@@ -67,6 +68,7 @@ int main(int argc, char** argv) {
   // "Memory layout").
   mallopt(M_MMAP_THRESHOLD, 1 << 20);
 #endif
+  isopatch::cli::handle_interrupts();
   try {
     return run(argc, argv);
   } catch (...) {  // setting up the commands failed (out of memory): nothing else can throw out of run

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
+#include <isopatch/mesh_io.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include "cli_support.hpp"
@@ -46,9 +47,7 @@ void write_stats_json(const std::string& path, const std::string& surface_name, 
       entry = value;
   });
   if (singular) j["singular_points"] = singular_json(*singular);
-  std::ofstream out(path, std::ios::binary);
-  if (out) out << j.dump(2) << "\n";
-  if (!out) throw IoError("cannot write '" + path + "'");
+  write_whole_file(path, j.dump(2) + "\n");
 }
 
 }  // namespace isopatch::cli

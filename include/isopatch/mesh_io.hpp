@@ -57,8 +57,9 @@ inline constexpr float kGlbUndefined = -std::numeric_limits<float>::max();
 /// \throw IoError for an unknown extension.
 MeshFormat format_from_path(const std::string& path);
 
-/// Writes `mesh` to `path` in `format`. Positions are written in double precision where the format
-/// allows (OBJ, OFF, PLY), float in STL and glTF. Attributes are written in PLY and glTF only.
+/// Writes `mesh` to `path` in `format`, streamed in chunks and whole or not at all (write_whole_file).
+/// Positions are written in double precision where the format allows (OBJ, OFF, PLY), float in STL and
+/// glTF. Attributes are written in PLY and glTF only.
 /// `vertex_colours` (linear RGB in [0, 1], one per vertex, or empty for none) are written in glTF only,
 /// as COLOR_0 (render.hpp's field_vertex_colours() makes them from a field).
 /// \throw IoError if the file cannot be written; InputError if mesh.validate() fails, or for glTF a
@@ -68,6 +69,20 @@ void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
                 const std::vector<Vec3>& vertex_colours = {});
 /// Same, with the format from the extension.
 void write_mesh(const Mesh& mesh, const std::string& path, const std::vector<Vec3>& vertex_colours = {});
+
+/// Writes `bytes` to `path` whole or not at all: into a temporary file beside `path` (beside the file a
+/// symbolic link points to, which keeps pointing to it), which then replaces `path` in one rename. On
+/// an error, and on a signal whose handler calls remove_unfinished_files(), the temporary file is
+/// removed and a file already at `path` is left as it was. A path that exists and is not a regular file
+/// (a device such as /dev/null, a pipe) is written directly. Every writer of the library and the tool
+/// writes this way.
+/// \throw IoError naming the file: a folder that is missing or not writable, a full disk, a failed
+///        rename.
+void write_whole_file(const std::string& path, std::string_view bytes);
+
+/// Removes the temporary files of the writes in progress in this process (write_mesh,
+/// write_whole_file). Async-signal-safe: for a SIGINT or SIGTERM handler, before the process ends.
+void remove_unfinished_files() noexcept;
 
 /// Reads a mesh; polygons with more than 3 vertices are fan-triangulated.
 /// \throw IoError for an unreadable, malformed, truncated or lying file.

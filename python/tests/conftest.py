@@ -1,6 +1,7 @@
 """Shared helpers of the pytest suite: sampled analytic volumes and their exact normals, and the Dask
 cluster of the blocked runs' tests."""
 
+import importlib
 import re
 import shutil
 import subprocess
@@ -10,6 +11,18 @@ import pytest
 
 SPHERE_RADIUS = 0.6
 TORUS_RADII = (0.6, 0.25)
+
+
+
+def require(module, package):
+    """The module `module`, imported; a test failure (never a skip) naming the Debian package when it
+    is missing: scripts/install-deps.sh installs every package the tests use, so a missing one is a
+    broken installation, not an optional feature."""
+    try:
+        return importlib.import_module(module)
+    except ImportError as error:
+        pytest.fail(f"{module} cannot be imported ({error}): the Debian package {package} is missing "
+                    "(scripts/install-deps.sh installs it)", pytrace=False)
 
 
 def sphere(p: np.ndarray) -> np.ndarray:
@@ -88,7 +101,7 @@ def expect_one_manifold_part(part, vertices, faces) -> None:
 def client():
     """A Dask client of a LocalCluster of two worker processes (one thread each, 127.0.0.1, no
     dashboard), for the tests of blocked runs; closed at the end of the session."""
-    distributed_lib = pytest.importorskip("distributed")
+    distributed_lib = require("distributed", "python3-distributed")
     cluster = distributed_lib.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
                                            dashboard_address="127.0.0.1:0", scheduler_kwargs={"dashboard": False})
     c = distributed_lib.Client(cluster)

@@ -14,10 +14,10 @@ import numpy as np
 import pytest
 
 import isopatch
-from conftest import expect_one_manifold_part, read_ply
+from conftest import expect_one_manifold_part, read_ply, require
 from isopatch import distributed
 
-distributed_lib = pytest.importorskip("distributed")
+distributed_lib = require("distributed", "python3-distributed")
 
 CLI = os.environ.get("ISOPATCH_CLI")
 # A gyroid lattice closed by a smooth envelope (f grows past the sphere of radius 9): genus 36.

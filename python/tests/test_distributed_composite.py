@@ -13,11 +13,11 @@ import subprocess
 import numpy as np
 import pytest
 
-from conftest import expect_one_manifold_part, read_ply
+from conftest import expect_one_manifold_part, read_ply, require
 import isopatch
 from isopatch import IoError, distributed
 
-pytest.importorskip("distributed")
+require("distributed", "python3-distributed")
 
 CLI = os.environ.get("ISOPATCH_CLI")
 EXAMPLES = os.path.join(os.path.dirname(__file__), "..", "..", "examples")

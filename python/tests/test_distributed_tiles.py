@@ -16,11 +16,11 @@ import numpy as np
 import pytest
 
 import isopatch
-from conftest import expect_one_manifold_part, read_ply
+from conftest import expect_one_manifold_part, read_ply, require
 from isopatch import distributed
 from isopatch._tiles import seam_band_angles
 
-pytest.importorskip("distributed")
+require("distributed", "python3-distributed")
 
 CLI = os.environ.get("ISOPATCH_CLI")
 GYROID = "sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x)"

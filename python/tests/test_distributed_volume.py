@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 import isopatch
-from conftest import read_ply
+from conftest import read_ply, require
 from isopatch import _isopatch, distributed
 
-pytest.importorskip("distributed")
+require("distributed", "python3-distributed")
 
 CLI = os.environ.get("ISOPATCH_CLI")
 SHAPE = (70, 58, 64)

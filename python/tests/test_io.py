@@ -8,7 +8,7 @@ import pytest
 
 import isopatch
 
-from conftest import sampled, sphere
+from conftest import sampled, sphere, require
 
 CLI = os.environ.get("ISOPATCH_CLI")
 
@@ -22,7 +22,7 @@ def sphere_mesh():
 def test_write_every_format(sphere_mesh, tmp_path, extension):
     path = tmp_path / f"sphere.{extension}"
     sphere_mesh.write(str(path))
-    meshio = pytest.importorskip("meshio")
+    meshio = require("meshio", "python3-meshio")
     back = meshio.read(str(path))
     assert len(back.cells_dict["triangle"]) == len(sphere_mesh.faces)
     if extension != "stl":
@@ -40,7 +40,7 @@ def test_write_fields_and_errors(sphere_mesh, tmp_path):
 
 
 def test_meshio_one_liner(sphere_mesh, tmp_path):
-    meshio = pytest.importorskip("meshio")
+    meshio = require("meshio", "python3-meshio")
     m = meshio.Mesh(sphere_mesh.vertices, [("triangle", sphere_mesh.faces)], point_data=sphere_mesh.fields)
     m.write(str(tmp_path / "sphere.vtu"))
     back = meshio.read(str(tmp_path / "sphere.vtu"))
@@ -106,7 +106,7 @@ def test_volume_files_and_the_command_line(tmp_path):
     r = subprocess.run([CLI, "mesh", str(path), "--spacing", ",".join(map(str, spacing)), "--origin",
                         ",".join(map(str, origin)), "-o", str(out), "-q", "--box", box], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
-    meshio = pytest.importorskip("meshio")
+    meshio = require("meshio", "python3-meshio")
     points = meshio.read(str(out)).points
     np.testing.assert_allclose(np.linalg.norm(points, axis=1), 0.6, atol=2e-3)
     r = subprocess.run([CLI, "mesh", str(tmp_path / "flat.npy"), "-o", str(out)], capture_output=True, text=True)
@@ -116,7 +116,7 @@ def test_volume_files_and_the_command_line(tmp_path):
 
 
 def test_from_arrays_measures_any_mesh():
-    measure = pytest.importorskip("skimage.measure")
+    measure = require("skimage.measure", "python3-skimage")
     volume, spacing, origin = sampled(sphere, 32)
     verts, faces, _, _ = measure.marching_cubes(volume, 0.0, spacing=spacing)
     theirs = isopatch.Mesh.from_arrays(verts + np.asarray(origin), faces, "sqrt(x^2+y^2+z^2) - 0.6",

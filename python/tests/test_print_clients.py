@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 import isopatch
+from conftest import require
 
 CLI = os.environ.get("ISOPATCH_CLI")
 EXAMPLES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples")
@@ -55,7 +56,7 @@ def test_a_slicer_reads_one_manifold_part_of_the_meshs_volume(tmp_path, surface,
 
 @pytest.mark.skipif(CLI is None, reason="the command-line tool is not built")
 def test_a_composite_surface_written_as_3mf_by_the_command_line(tmp_path):
-    meshio = pytest.importorskip("meshio")
+    meshio = require("meshio", "python3-meshio")
     example = os.path.join(EXAMPLES, "rounded_box.ipatch")
     part, ply = tmp_path / "box.3mf", tmp_path / "box.ply"
     for out in (part, ply):

@@ -9,8 +9,9 @@ import numpy as np
 import pytest
 
 import isopatch
+from conftest import require
 
-vdb = pytest.importorskip("pyopenvdb", reason="python3-openvdb is missing (scripts/install-deps.sh installs it)")
+vdb = require("pyopenvdb", "python3-openvdb")
 
 CLI = os.environ.get("ISOPATCH_CLI")
 VOXEL = 0.05

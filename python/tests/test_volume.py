@@ -5,7 +5,7 @@ import pytest
 
 import isopatch
 
-from conftest import angle_degrees, sampled, sphere, sphere_normal, torus, torus_normal
+from conftest import angle_degrees, sampled, sphere, sphere_normal, torus, torus_normal, require
 
 # The largest distance to the analytic surface of the vertices (which lie on the samples' interpolant)
 # for volumes of n^3 samples over [-1, 1]^3, and the largest angle between the returned normals and the
@@ -33,7 +33,7 @@ def test_sampled_surfaces(f, normal, n, genus, distance, normal_degrees):
     # Normals against the analytic ones, and against scikit-image's on the same volume.
     ours = angle_degrees(m.normals, normal(m.vertices))
     assert ours.max() < normal_degrees
-    measure = pytest.importorskip("skimage.measure")
+    measure = require("skimage.measure", "python3-skimage")
     verts, faces, normals, _ = measure.marching_cubes(volume, 0.0, spacing=spacing)
     verts = verts + np.asarray(origin)
     theirs = angle_degrees(-normals, normal(verts))  # their normals point down the gradient

@@ -194,14 +194,14 @@ struct CubeBlock {
 /// The cubes of `grid` that may ask for a source, in z, y, x order: blocks of cubes halved from the whole
 /// grid down, kept where the enclosure of f over the block holds 0 and the enclosure of grad f lets
 /// the normals turn by more than the block's cubes allow (or may vanish), so that the work follows
-/// the surface's turns instead of the box's volume in cubes. A dropped block's cubes could not ask for anything:
-/// without a zero of f (the enclosure is rigorous) a cube has no point of f = 0 to measure, and a
+/// the surface's turns instead of the box's volume in cubes. A dropped block's cubes could not ask for
+/// anything: without a zero of f (the enclosure is rigorous) a cube has no point of f = 0 to measure, and a
 /// cube of the grid is split only when its own enclosure of grad f, inside the block's (enclosures
 /// only narrow on a smaller box), opens by more than it allows; one that is not split asks for nothing
-/// when it is wider than an edge (blocks with a narrower cube are kept). So the sources are those of examining every cube. Where f has no
-/// enclosure, every cube.
-std::vector<Box> cubes_near_surface(const Surface& surface, const CubeGrid& grid, const CurvatureFeatureParams& p,
-                                    double edge) {
+/// when it is wider than an edge (blocks with a narrower cube are kept). So the sources are those of
+/// examining every cube. Where f has no enclosure, every cube.
+std::vector<Box> cubes_near_surface(const Surface& surface, const CubeGrid& grid,
+                                    const CurvatureFeatureParams& p, double edge) {
   std::vector<CubeBlock> blocks{CubeBlock{{0, 0, 0}, grid.count}}, cubes;
   while (!blocks.empty()) {
     std::vector<std::uint8_t> keep(blocks.size());
@@ -215,7 +215,8 @@ std::vector<Box> cubes_near_surface(const Surface& surface, const CubeGrid& grid
         // The block's cube of the highest indices is the smallest (only the last layers are clipped by
         // the box): the smallest turn a cube of the block allows, and a cube narrower than an edge
         // measures a source without being split, so such a block is kept.
-        const double smallest = grid.cube({blocks[i].hi[0] - 1, blocks[i].hi[1] - 1, blocks[i].hi[2] - 1}).size().maxCoeff();
+        const double smallest =
+            grid.cube({blocks[i].hi[0] - 1, blocks[i].hi[1] - 1, blocks[i].hi[2] - 1}).size().maxCoeff();
         const double allowed = p.turn * std::clamp(smallest / (p.relevant * edge), 1.0, p.coarse_turn);
         const std::optional<double> opening = cone_opening(g->gradient);
         keep[i] = g->value.contains_zero() && (smallest < edge || !opening || *opening > allowed) ? 1 : 0;

@@ -5,11 +5,16 @@
 
 #include "mesh/byte_sink.hpp"
 
+#include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <system_error>
+
+#include <unistd.h>
 
 namespace isopatch::io {
 namespace {
@@ -60,16 +65,53 @@ std::string load_file(const std::string& path) {
 
 namespace {
 
-/// Removes what a failed write left at `path` when it is a regular file (never a device such as
-/// /dev/full, which must stay).
-void remove_partial(const std::string& path) {
+/// The temporary files of writes in progress, for remove_unfinished_files() from a signal handler: fixed
+/// slots of fixed buffers (no allocation there), claimed and released with atomics.
+constexpr std::size_t kSlots = 64;
+constexpr std::size_t kPathBytes = 4096;
+struct UnfinishedSlot {
+  std::atomic<bool> used{false};
+  std::atomic<bool> ready{false};
+  char path[kPathBytes] = {};
+};
+std::array<UnfinishedSlot, kSlots> unfinished;
+
+/// Holds a temporary file's name in a slot while it is written (none free: not listed, still removed
+/// on errors).
+class UnfinishedFile {
+ public:
+  explicit UnfinishedFile(const std::string& path) {
+    if (path.size() >= kPathBytes) return;
+    for (UnfinishedSlot& s : unfinished) {
+      bool expected = false;
+      if (s.used.compare_exchange_strong(expected, true)) {
+        std::memcpy(s.path, path.c_str(), path.size() + 1);
+        s.ready.store(true);
+        slot_ = &s;
+        return;
+      }
+    }
+  }
+  ~UnfinishedFile() {
+    if (slot_ == nullptr) return;
+    slot_->ready.store(false);
+    slot_->used.store(false);
+  }
+  UnfinishedFile(const UnfinishedFile&) = delete;
+  UnfinishedFile& operator=(const UnfinishedFile&) = delete;
+
+ private:
+  UnfinishedSlot* slot_ = nullptr;
+};
+
+/// Removes a temporary file (errors ignored: it may not exist yet).
+void remove_temporary(const std::string& path) {
   std::error_code ignored;
-  if (std::filesystem::is_regular_file(path, ignored)) std::filesystem::remove(path, ignored);
+  std::filesystem::remove(path, ignored);
 }
 
-}  // namespace
-
-void write_file(const std::string& path, const std::function<void(ByteSink&)>& write) {
+/// Writes `path` directly (a device or a pipe).
+void write_directly(const std::string& path, const std::function<void(ByteSink&)>& write) {
   errno = 0;
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) fail(path, "cannot open for writing (" + reason(errno) + ")");
@@ -79,15 +121,72 @@ void write_file(const std::string& path, const std::function<void(ByteSink&)>& w
     out.flush();
   } catch (...) {
     std::fclose(file);
-    remove_partial(path);
+    throw;
+  }
+  errno = 0;
+  if (std::fclose(file) != 0) fail(path, "write failed when closing (" + reason(errno) + ")");
+}
+
+}  // namespace
+
+void write_file(const std::string& path, const std::function<void(ByteSink&)>& write) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);  // through symbolic links
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    if (fs::is_directory(status)) fail(path, "is a folder, not a file");
+    return write_directly(path, write);
+  }
+  // Beside the file a link points to, so that the rename replaces that file and the link stays.
+  fs::path target = path;
+  if (fs::is_symlink(fs::symlink_status(path, error))) {
+    const fs::path resolved = fs::weakly_canonical(path, error);
+    if (!error) target = resolved;
+  }
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  // Hidden, and named after the file and the process (appended: GCC 12 warns wrongly about
+  // "literal" + std::string).
+  std::string name = ".";
+  name += target.filename().string();
+  name += ".isopatch-";
+  name += std::to_string(::getpid());
+  name += ".part";
+  const std::string temporary = (folder / name).string();
+  const UnfinishedFile listed(temporary);
+  errno = 0;
+  std::FILE* file = std::fopen(temporary.c_str(), "wb");
+  if (!file) {
+    const int why = errno;
+    if (!fs::is_directory(folder, error))
+      fail(path, "cannot write: the folder '" + folder.string() + "' does not exist");
+    fail(path, "cannot write in its folder (" + reason(why) + ")");
+  }
+  try {
+    ByteSink out(file, path);
+    write(out);
+    out.flush();
+  } catch (...) {
+    std::fclose(file);
+    remove_temporary(temporary);
     throw;
   }
   errno = 0;
   if (std::fclose(file) != 0) {
-    const int error = errno;
-    remove_partial(path);
-    fail(path, "write failed when closing (" + reason(error) + ")");
+    const int why = errno;
+    remove_temporary(temporary);
+    fail(path, "write failed when closing (" + reason(why) + ")");
   }
+  errno = 0;
+  if (std::rename(temporary.c_str(), target.c_str()) != 0) {
+    const int why = errno;
+    remove_temporary(temporary);
+    fail(path, "cannot replace the file (" + reason(why) + ")");
+  }
+}
+
+void remove_unfinished() noexcept {
+  for (UnfinishedSlot& s : unfinished)
+    if (s.ready.load()) ::unlink(s.path);
 }
 
 void fail(const std::string& name, const std::string& problem) {

@@ -27,11 +27,14 @@ constexpr std::size_t kMaxPolygon = 1000;
 /// The whole content of `path`. \throw IoError when it cannot be opened or read.
 std::string load_file(const std::string& path);
 class ByteSink;
-/// Creates `path` and lets `write` write it through a ByteSink in chunks; checks the file after
-/// closing it. A file whose writing throws is removed (no partial mesh is left behind).
+/// Lets `write` write `path` through a ByteSink in chunks, whole or not at all: into a temporary file
+/// beside it, renamed onto it at the end (mesh_io.hpp's write_whole_file says the rest). A write that
+/// throws leaves no temporary file and the old file at `path` as it was.
 /// \throw IoError when the file cannot be created or the write fails (disk full, ...); what `write`
 /// throws.
 void write_file(const std::string& path, const std::function<void(ByteSink&)>& write);
+/// Unlinks the temporary files of the writes in progress (mesh_io.hpp's remove_unfinished_files).
+void remove_unfinished() noexcept;
 
 /// Throws IoError("<name>: <problem>").
 [[noreturn]] void fail(const std::string& name, const std::string& problem);

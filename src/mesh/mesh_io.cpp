@@ -86,6 +86,14 @@ void write_mesh(const Mesh& mesh, const std::string& path, const std::vector<Vec
   write_mesh(mesh, path, format_from_path(path), vertex_colours);
 }
 
+void write_whole_file(const std::string& path, std::string_view bytes) {
+  io::write_file(path, [bytes](io::ByteSink& out) { out += bytes; });
+}
+
+void remove_unfinished_files() noexcept {
+  io::remove_unfinished();
+}
+
 Mesh read_mesh(const std::string& path, MeshFormat format) {
   return decode_mesh(io::load_file(path), format, path);
 }

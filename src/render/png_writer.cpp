@@ -2,11 +2,8 @@
 // one translation unit, with static linkage so that it cannot clash with a user's own copy of stb.
 // stb only encodes (into memory); the file is written here so that every failure is reported.
 #include <isopatch/error.hpp>
+#include <isopatch/mesh_io.hpp>
 #include <isopatch/render.hpp>
-
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 
 // stb's encoder gets inlined into write_png, where GCC's flow analysis flags allocations that stb
 // leaves unchecked; those warnings are about third-party code, so they are silenced for this file.
@@ -23,10 +20,6 @@ void append_bytes(void* context, void* data, int size) {
   static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
 }
 
-std::string system_reason() {
-  return errno != 0 ? std::strerror(errno) : "write failed";
-}
-
 }  // namespace
 
 void write_png(const Image& image, const std::string& path) {
@@ -36,12 +29,7 @@ void write_png(const Image& image, const std::string& path) {
   if (stbi_write_png_to_func(append_bytes, &encoded, image.width(), image.height(), 3, image.bytes().data(),
                              3 * image.width()) == 0)
     throw IoError("cannot encode '" + path + "' as PNG");
-  errno = 0;
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw IoError("cannot write '" + path + "': " + system_reason());
-  out.write(encoded.data(), static_cast<std::streamsize>(encoded.size()));
-  out.close();
-  if (!out) throw IoError("cannot write '" + path + "': " + system_reason());
+  write_whole_file(path, encoded);
 }
 
 }  // namespace isopatch
