@@ -101,5 +101,19 @@ TEST(ViewRequest, EchoedMemberNamesStayOnOneLine) {
   }
 }
 
+TEST(ViewRequest, OwnHostAndOriginAreTheLoopbackNamesWithThePort) {
+  EXPECT_TRUE(is_own_host("127.0.0.1:8080", 8080));
+  EXPECT_TRUE(is_own_host("LOCALHOST:8080", 8080));
+  EXPECT_TRUE(is_own_host("[::1]:8080", 8080));
+  for (const char* host : {"", "127.0.0.1", "127.0.0.1:80", "127.0.0.1:18080", "localhost.evil.example:8080",
+                           "evil.example:8080", "127.0.0.2:8080", ":8080", "127.0.0.1:8080:8080"})
+    EXPECT_FALSE(is_own_host(host, 8080)) << host;
+  EXPECT_TRUE(is_own_origin("", 8080));
+  EXPECT_TRUE(is_own_origin("http://localhost:8080", 8080));
+  for (const char* origin :
+       {"null", "https://127.0.0.1:8080", "http://evil.example", "http://127.0.0.1:8081"})
+    EXPECT_FALSE(is_own_origin(origin, 8080)) << origin;
+}
+
 }  // namespace
 }  // namespace isopatch::view

@@ -49,7 +49,8 @@ std::string raw_get(int port, const std::string& target) {
   address.sin_port = htons(static_cast<std::uint16_t>(port));
   address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
   EXPECT_EQ(::connect(s, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-  const std::string request = "GET " + target + " HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n";
+  const std::string request = "GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) +
+                              "\r\nConnection: close\r\n\r\n";
   EXPECT_EQ(::send(s, request.data(), request.size(), 0), static_cast<ssize_t>(request.size()));
   std::string answer;
   char buffer[4096];
@@ -57,6 +58,31 @@ std::string raw_get(int port, const std::string& target) {
     answer.append(buffer, static_cast<std::size_t>(n));
   ::close(s);
   return answer;
+}
+
+// The status line of a raw request with the given Host (and Origin and body for a POST).
+std::string raw_status(int port, const std::string& method, const std::string& target,
+                       const std::string& host, const std::string& origin = {},
+                       const std::string& body = {}) {
+  const int s = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  EXPECT_EQ(::connect(s, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  std::string request = method + " " + target + " HTTP/1.1\r\n";
+  if (!host.empty()) request += "Host: " + host + "\r\n";
+  if (!origin.empty()) request += "Origin: " + origin + "\r\n";
+  if (!body.empty())
+    request += "Content-Type: application/json\r\nContent-Length: " + std::to_string(body.size()) + "\r\n";
+  request += "Connection: close\r\n\r\n" + body;
+  EXPECT_EQ(::send(s, request.data(), request.size(), 0), static_cast<ssize_t>(request.size()));
+  std::string answer;
+  char buffer[4096];
+  for (ssize_t n; (n = ::recv(s, buffer, sizeof buffer, 0)) > 0;)
+    answer.append(buffer, static_cast<std::size_t>(n));
+  ::close(s);
+  return answer.substr(0, answer.find("\r\n"));
 }
 
 class ViewServerTest : public ::testing::Test {
@@ -115,6 +141,26 @@ TEST_F(ViewServerTest, RefusesPathsOutsideWhatItServes) {
     EXPECT_EQ(answer.find("secret"), std::string::npos) << target;
     EXPECT_EQ(answer.find("\"three\""), std::string::npos) << target;
   }
+}
+
+TEST_F(ViewServerTest, RefusesOtherHostNamesAndOtherSitesPosts) {
+  const std::string own = "127.0.0.1:" + std::to_string(port);
+  EXPECT_EQ(raw_status(port, "GET", "/", own), "HTTP/1.1 200 OK");
+  EXPECT_EQ(raw_status(port, "GET", "/api/state", "LocalHost:" + std::to_string(port)), "HTTP/1.1 200 OK");
+  EXPECT_EQ(raw_status(port, "GET", "/", "[::1]:" + std::to_string(port)), "HTTP/1.1 200 OK");
+  // DNS rebinding: another site's name resolving to 127.0.0.1; the right names on another port; none.
+  EXPECT_EQ(raw_status(port, "GET", "/", "attacker.example:" + std::to_string(port)),
+            "HTTP/1.1 403 Forbidden");
+  EXPECT_EQ(raw_status(port, "GET", "/api/state", "127.0.0.1"), "HTTP/1.1 403 Forbidden");
+  EXPECT_EQ(raw_status(port, "GET", "/api/state", "127.0.0.1:" + std::to_string(port + 1)),
+            "HTTP/1.1 403 Forbidden");
+  EXPECT_EQ(raw_status(port, "GET", "/", ""), "HTTP/1.1 403 Forbidden");
+  // A POST from another site's page (the browser sends its Origin) is refused; the page's own is not.
+  const std::string body = R"({"surface": "sphere", "edge_length": 0.3})";
+  EXPECT_EQ(raw_status(port, "POST", "/api/mesh", own, "http://attacker.example", body),
+            "HTTP/1.1 403 Forbidden");
+  EXPECT_EQ(raw_status(port, "POST", "/api/mesh", own, "null", body), "HTTP/1.1 403 Forbidden");
+  EXPECT_EQ(raw_status(port, "POST", "/api/mesh", own, "http://" + own, body), "HTTP/1.1 200 OK");
 }
 
 TEST_F(ViewServerTest, ShowsAMeshFileAndDownloadsIt) {

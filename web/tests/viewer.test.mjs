@@ -179,7 +179,8 @@ test('the page downloads the mesh as GLB and PLY', async () => {
 // One raw request line, so that nothing normalizes the path on the way.
 function rawGet(port, target) {
   return new Promise((resolve, reject) => {
-    const socket = net.connect(port, '127.0.0.1', () => socket.write(`GET ${target} HTTP/1.1\r\nHost: x\r\nConnection: close\r\n\r\n`));
+    const socket = net.connect(port, '127.0.0.1',
+      () => socket.write(`GET ${target} HTTP/1.1\r\nHost: 127.0.0.1:${port}\r\nConnection: close\r\n\r\n`));
     let data = '';
     socket.on('data', (d) => { data += d; });
     socket.on('end', () => resolve(data));

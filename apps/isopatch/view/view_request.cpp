@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace isopatch::view {
 namespace {
@@ -130,6 +132,22 @@ MeshRequest parse_mesh_request(std::string_view body, const RequestLimits& limit
   if (!has_surface || request.surface.empty()) bad("surface", "missing: give a catalogue name or a formula");
   s.validate();
   return request;
+}
+
+bool is_own_host(std::string_view host, int port) {
+  std::string suffix = ":";  // appended: GCC 12 warns wrongly about "literal" + std::string
+  suffix += std::to_string(port);
+  if (host.size() <= suffix.size() || host.substr(host.size() - suffix.size()) != suffix) return false;
+  std::string name(host.substr(0, host.size() - suffix.size()));
+  std::transform(name.begin(), name.end(), name.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return name == "127.0.0.1" || name == "localhost" || name == "[::1]";
+}
+
+bool is_own_origin(std::string_view origin, int port) {
+  constexpr std::string_view scheme = "http://";
+  if (origin.empty()) return true;
+  return origin.starts_with(scheme) && is_own_host(origin.substr(scheme.size()), port);
 }
 
 }  // namespace isopatch::view

@@ -41,4 +41,15 @@ struct MeshRequest {
 ///        starts with '@' or is too long; SettingError from Settings::validate().
 MeshRequest parse_mesh_request(std::string_view body, const RequestLimits& limits = {});
 
+/// Whether a request's Host header names this server: 127.0.0.1, localhost (any case) or [::1], with
+/// the server's port. Anything else is refused: a page of another site can reach a server on 127.0.0.1
+/// under a host name of its own that resolves there (DNS rebinding), and then its requests name that
+/// host. An empty Host (an HTTP/1.0 request without one) is refused too.
+bool is_own_host(std::string_view host, int port);
+
+/// Whether a request's Origin header allows it to change the server's state (POST): no Origin (a
+/// script, curl: not a browser page of another site), or http:// with one of the hosts above and the
+/// port (the viewer's own page). A browser sends Origin with every cross-origin POST.
+bool is_own_origin(std::string_view origin, int port);
+
 }  // namespace isopatch::view

@@ -159,6 +159,23 @@ struct ViewServer::Impl {
       ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
     });
     server.set_payload_max_length(config.limits.max_request_bytes);
+    // Only requests that name this server, and no POST from another site's page (view_request.hpp).
+    server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+      if (!is_own_host(req.get_header_value("Host"), port)) {
+        send_json(res, 403,
+                  {{"error", "the Host header must name this server (127.0.0.1:" + std::to_string(port) +
+                                 "): requests under another host name are refused"},
+                   {"kind", "forbidden"}});
+        return httplib::Server::HandlerResponse::Handled;
+      }
+      if (req.method == "POST" && !is_own_origin(req.get_header_value("Origin"), port)) {
+        send_json(
+            res, 403,
+            {{"error", "a page of another site cannot ask this viewer for meshes"}, {"kind", "forbidden"}});
+        return httplib::Server::HandlerResponse::Handled;
+      }
+      return httplib::Server::HandlerResponse::Unhandled;
+    });
     server.set_read_timeout(10, 0);
     server.set_write_timeout(30, 0);
     server.Get("/api/state", [this](const httplib::Request&, httplib::Response& res) {
