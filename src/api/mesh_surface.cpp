@@ -260,8 +260,20 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   // A smooth solid capped by planes is the cut surface closed by caps; where its caps cannot close (a
   // plane tangent to the surface on the cut), the general crease path meshes it.
   const MeshStats before = stats ? *stats : MeshStats{};
+  // A CSG shape whose faces are all trimmed away (an intersection or a difference that is empty, or
+  // thinner than the edge everywhere) leaves no triangle: refused as the smooth path refuses a box that
+  // f = 0 does not cross, never an empty mesh.
+  const auto not_empty = [](Mesh mesh) {
+    if (mesh.triangles.empty())
+      throw NoSurfaceError(
+          "no surface in the box: the faces of the shape leave no triangle where its solids meet (the "
+          "intersection or difference is empty, or thinner than an edge everywhere; a smaller "
+          "--edge-length finds a part thinner than the edge)");
+    return mesh;
+  };
   try {
-    if (std::optional<Mesh> capped = mesh_capped_shape(surface, settings, stats)) return std::move(*capped);
+    if (std::optional<Mesh> capped = mesh_capped_shape(surface, settings, stats))
+      return not_empty(std::move(*capped));
   } catch (const CreaseError&) {
     if (stats) *stats = before;
   }
@@ -269,7 +281,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   // crease, whatever the faces' genus; where they cannot be joined, the general crease path meshes them.
   std::string cut_failure;
   try {
-    if (std::optional<Mesh> cut = mesh_curved_cut(surface, settings, stats)) return std::move(*cut);
+    if (std::optional<Mesh> cut = mesh_curved_cut(surface, settings, stats)) return not_empty(std::move(*cut));
   } catch (const CreaseError& e) {
     cut_failure = e.what();
     if (stats) *stats = before;
@@ -286,7 +298,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
         "; turning creases off (--creases off) meshes it as a smooth "
         "surface, and a lattice capped by planes is meshed along its creases (docs/lattices.md)");
   }
-  if (creased.mesh) return std::move(*creased.mesh);
+  if (creased.mesh) return not_empty(std::move(*creased.mesh));
   Mesh mesh = run_in_task_arena(settings, stats, [&] {
     if (settings.max_evaluations == 0 && settings.time_limit == 0.0)
       return dispatch(surface, settings, stats);
