@@ -281,7 +281,8 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   // crease, whatever the faces' genus; where they cannot be joined, the general crease path meshes them.
   std::string cut_failure;
   try {
-    if (std::optional<Mesh> cut = mesh_curved_cut(surface, settings, stats)) return not_empty(std::move(*cut));
+    if (std::optional<Mesh> cut = mesh_curved_cut(surface, settings, stats))
+      return not_empty(std::move(*cut));
   } catch (const CreaseError& e) {
     cut_failure = e.what();
     if (stats) *stats = before;

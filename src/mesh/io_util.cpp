@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -110,22 +111,40 @@ void remove_temporary(const std::string& path) {
   std::filesystem::remove(path, ignored);
 }
 
-/// Writes `path` directly (a device or a pipe).
-void write_directly(const std::string& path, const std::function<void(ByteSink&)>& write) {
+/// Opens `file_path`, lets `write` fill it through a ByteSink (errors name `path`) and closes it; a
+/// temporary file is removed when anything fails.
+void fill(const std::string& path, const std::string& file_path, bool temporary,
+          const std::function<void(ByteSink&)>& write) {
   errno = 0;
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) fail(path, "cannot open for writing (" + reason(errno) + ")");
+  std::FILE* file = std::fopen(file_path.c_str(), "wb");
+  if (!file) {
+    const int why = errno;
+    const std::filesystem::path folder = std::filesystem::path(file_path).parent_path();
+    std::error_code ignored;
+    if (temporary && !folder.empty() && !std::filesystem::is_directory(folder, ignored))
+      fail(path, "cannot write: the folder '" + folder.string() + "' does not exist");
+    fail(path,
+         (temporary ? "cannot write in its folder (" : "cannot open for writing (") + reason(why) + ")");
+  }
   try {
     ByteSink out(file, path);
     write(out);
     out.flush();
   } catch (...) {
     std::fclose(file);
+    if (temporary) remove_temporary(file_path);
     throw;
   }
   errno = 0;
-  if (std::fclose(file) != 0) fail(path, "write failed when closing (" + reason(errno) + ")");
+  if (std::fclose(file) != 0) {
+    const int why = errno;
+    if (temporary) remove_temporary(file_path);
+    fail(path, "write failed when closing (" + reason(why) + ")");
+  }
 }
+
+/// Writes of this process so far: the temporary files of two writes at once never share a name.
+std::atomic<std::uint64_t> writes{0};
 
 }  // namespace
 
@@ -135,7 +154,7 @@ void write_file(const std::string& path, const std::function<void(ByteSink&)>& w
   const fs::file_status status = fs::status(path, error);  // through symbolic links
   if (fs::exists(status) && !fs::is_regular_file(status)) {
     if (fs::is_directory(status)) fail(path, "is a folder, not a file");
-    return write_directly(path, write);
+    return fill(path, path, false, write);  // a device or a pipe: written directly
   }
   // Beside the file a link points to, so that the rename replaces that file and the link stays.
   fs::path target = path;
@@ -143,39 +162,19 @@ void write_file(const std::string& path, const std::function<void(ByteSink&)>& w
     const fs::path resolved = fs::weakly_canonical(path, error);
     if (!error) target = resolved;
   }
-  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-  // Hidden, and named after the file and the process (appended: GCC 12 warns wrongly about
+  // Hidden, and named after the file, the process and the write (appended: GCC 12 warns wrongly about
   // "literal" + std::string).
   std::string name = ".";
   name += target.filename().string();
   name += ".isopatch-";
   name += std::to_string(::getpid());
+  name += "-";
+  name += std::to_string(writes.fetch_add(1));
   name += ".part";
-  const std::string temporary = (folder / name).string();
+  const std::string temporary =
+      (target.has_parent_path() ? target.parent_path() / name : fs::path(name)).string();
   const UnfinishedFile listed(temporary);
-  errno = 0;
-  std::FILE* file = std::fopen(temporary.c_str(), "wb");
-  if (!file) {
-    const int why = errno;
-    if (!fs::is_directory(folder, error))
-      fail(path, "cannot write: the folder '" + folder.string() + "' does not exist");
-    fail(path, "cannot write in its folder (" + reason(why) + ")");
-  }
-  try {
-    ByteSink out(file, path);
-    write(out);
-    out.flush();
-  } catch (...) {
-    std::fclose(file);
-    remove_temporary(temporary);
-    throw;
-  }
-  errno = 0;
-  if (std::fclose(file) != 0) {
-    const int why = errno;
-    remove_temporary(temporary);
-    fail(path, "write failed when closing (" + reason(why) + ")");
-  }
+  fill(path, temporary, true, write);
   errno = 0;
   if (std::rename(temporary.c_str(), target.c_str()) != 0) {
     const int why = errno;

@@ -110,7 +110,8 @@ TEST(CreaseMeshing, BadShapesGetClearErrors) {
   // no surface, as for a box f = 0 does not cross, not an empty mesh.
   EXPECT_THROW(mesh_csg("max((sqrt((x+0.529)^2+(y-0.07)^2)-0.518)^2+(z+0.413)^2-0.099225,"
                         "((sqrt((x+0.213)^2+(y-0.456)^2)-0.669)^2+(z-0.329)^2-0.051984)+0.006)",
-                        Box{Vec3(-1.588, -1.68, -1.569), Vec3(1.662, 1.687, 1.675)}, [] {
+                        Box{Vec3(-1.588, -1.68, -1.569), Vec3(1.662, 1.687, 1.675)},
+                        [] {
                           Settings s;
                           s.edge_length = 0.2;
                           s.quality = Quality::Preview;
