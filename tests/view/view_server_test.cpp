@@ -41,29 +41,11 @@ struct WebRoot {
   }
 };
 
-// The raw answer to one request line, so that no client normalizes the path.
-std::string raw_get(int port, const std::string& target) {
-  const int s = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  EXPECT_EQ(::connect(s, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-  const std::string request = "GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) +
-                              "\r\nConnection: close\r\n\r\n";
-  EXPECT_EQ(::send(s, request.data(), request.size(), 0), static_cast<ssize_t>(request.size()));
-  std::string answer;
-  char buffer[4096];
-  for (ssize_t n; (n = ::recv(s, buffer, sizeof buffer, 0)) > 0;)
-    answer.append(buffer, static_cast<std::size_t>(n));
-  ::close(s);
-  return answer;
-}
-
-// The status line of a raw request with the given Host (and Origin and body for a POST).
-std::string raw_status(int port, const std::string& method, const std::string& target,
-                       const std::string& host, const std::string& origin = {},
-                       const std::string& body = {}) {
+// The raw answer to one request (its Host, Origin and JSON body as given), so that no client
+// normalizes the path or the headers.
+std::string raw_request(int port, const std::string& method, const std::string& target,
+                        const std::string& host, const std::string& origin = {},
+                        const std::string& body = {}) {
   const int s = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in address{};
   address.sin_family = AF_INET;
@@ -82,6 +64,18 @@ std::string raw_status(int port, const std::string& method, const std::string& t
   for (ssize_t n; (n = ::recv(s, buffer, sizeof buffer, 0)) > 0;)
     answer.append(buffer, static_cast<std::size_t>(n));
   ::close(s);
+  return answer;
+}
+
+std::string raw_get(int port, const std::string& target) {
+  return raw_request(port, "GET", target, "127.0.0.1:" + std::to_string(port));
+}
+
+// The status line of a raw request.
+std::string raw_status(int port, const std::string& method, const std::string& target,
+                       const std::string& host, const std::string& origin = {},
+                       const std::string& body = {}) {
+  const std::string answer = raw_request(port, method, target, host, origin, body);
   return answer.substr(0, answer.find("\r\n"));
 }
 
