@@ -222,6 +222,8 @@ int run_mesh(const MeshOptions& o) {
   clock.add("write", clock.lap());
   const SelfIntersectionReport crossings = arena.execute([&] { return find_self_intersections(mesh); });
   clock.add("self_intersections", clock.lap());
+  stats.warnings.self_intersecting_pairs = crossings.pairs;
+  stats.warnings.self_intersection_near = crossings.example_point;
   clock.account(stats);
   if (!o.stats_json.empty())
     write_stats_json(o.stats_json, surface->name(), settings, stats, o.output, &singular);

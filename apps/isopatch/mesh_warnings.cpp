@@ -38,14 +38,17 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, const SelfInt
                  w.uncertain_crease_cells, w.uncertain_crease_near.x(), w.uncertain_crease_near.y(),
                  w.uncertain_crease_near.z());
   if (w.creases_leave_box > 0)
-    std::fprintf(out,
-                 "warning: creases of the shape leave the box: meshed as a smooth surface (creases rounded); "
-                 "a box that holds the whole shape meshes it along its creases\n");
+    std::fprintf(
+        out,
+        "warning: creases of the shape leave the box, and the shape cut open by the box could not be "
+        "meshed along them: meshed as a smooth surface (creases rounded); a box that holds the whole "
+        "shape meshes it along its creases\n");
   if (w.creases_in_partition > 0)
     std::fprintf(
         out,
-        "warning: the formula has creases but a region, given cells or a rotated frame (--region, --frame) "
-        "mesh it as a smooth surface (creases rounded); without them it is meshed along its creases\n");
+        "warning: the formula has creases, but the shape cut open by the region or seen through the frame "
+        "(--region, --frame) could not be meshed along them: meshed through the partition as a smooth "
+        "surface (creases rounded)\n");
   if (const auto& l = stats.local_sizes) {
     std::string where;
     if (l->sources > 0)

@@ -143,12 +143,17 @@ struct MeshWarnings {
   /// be missing there: a feature far smaller than an edge, or faces meeting along a sheet).
   std::size_t uncertain_crease_cells = 0;
   Vec3 uncertain_crease_near = Vec3::Zero();  ///< the centre of the first of them
-  /// CSG shapes: 1 when a crease leaves the box, so the shape was meshed as a smooth surface.
+  /// CSG shapes: 1 when a crease leaves the box and the shape cut open by the box could not be meshed
+  /// along its creases, so it was meshed as a smooth surface.
   std::size_t creases_leave_box = 0;
-  /// CSG shapes: 1 when a formula with creases was meshed as a smooth surface because a region, given
-  /// cells or a rotated frame were asked for (only a capped smooth solid or a polyhedron keeps its
-  /// creases there: docs/lattices.md).
+  /// CSG shapes: 1 when a formula with creases was meshed through the partition as a smooth surface:
+  /// given cells, or a region whose cut could not be meshed along the creases (docs/creases.md).
   std::size_t creases_in_partition = 0;
+  /// Pairs of triangles that cross (self_intersection.hpp; at most 1000 counted), and a point where the
+  /// first pair meets. The meshers do not look for them: the front ends (the command line, the Python
+  /// package) run the exact check on every mesh they return and fill these.
+  std::size_t self_intersecting_pairs = 0;
+  Vec3 self_intersection_near = Vec3::Zero();
 };
 
 /// What the crease analysis of a CSG shape found (Settings::creases, docs/creases.md).
@@ -169,6 +174,9 @@ struct CreaseStats {
   /// and the vertices on the creases (on g = 0 and a plane, or on two planes); 0 on the general path.
   std::size_t caps = 0;
   std::size_t crease_vertices = 0;
+  /// Planes that cut the shape open (a region's, the box's where the shape leaves it): the shape meshed
+  /// as its intersection with them, their caps taken away (docs/creases.md, "Cut open").
+  std::size_t cut_planes = 0;
   double seconds = 0.0;  ///< of the analysis
 };
 
@@ -201,6 +209,13 @@ struct LocalSizes {
   std::size_t added_vertices = 0;     ///< about how many vertices the smaller sizes added to the output
 };
 
+/// A sheet (f = phi(|g|), the wall of a lattice) meshed as its two walls (docs/lattices.md, "Sheets").
+struct SheetStats {
+  /// Walls meshed: 2, 1 when the other does not cross the box, more for a sheet of a sheet
+  /// (abs(abs(g) - a) - t has four).
+  std::size_t walls = 0;
+};
+
 struct MeshStats {
   double seconds = 0.0;
   int threads = 1;                         ///< worker threads the run used
@@ -214,8 +229,8 @@ struct MeshStats {
   std::optional<RemeshStats> cleanup;
   std::optional<RefineStats> refine;  ///< multiresolution meshing, when it ran
   std::optional<LocalSizes> local_sizes;
-  std::optional<CreaseStats> creases;  ///< when the shape was meshed along its creases  ///< when sizes were
-                                       ///< refined at small features (cut, rims)
+  std::optional<CreaseStats> creases;  ///< when the shape was meshed along its creases
+  std::optional<SheetStats> sheet;     ///< when a sheet was meshed as its two walls
   MeshWarnings warnings;
   StageTimes times;  ///< wall time per stage
 };
@@ -223,8 +238,9 @@ struct MeshStats {
 /// Calls `visit(stage, name, value)` for every number of `stats` whose stage ran, in a fixed order:
 /// stage "mesh" (seconds, threads, evaluations, evaluations per output vertex, vertices, triangles),
 /// then "seconds" (StageTimes), "projection" (with "defect_<kind>_<what>" from RawDefects),
-/// "marching_cubes", "fairing", "cleanup", "refine", "local_sizes", "warnings". Names are stable (scripts
-/// read them): per-count families are spelled "patches_N", "leaves_depth_N", "doubtful_REASON".
+/// "marching_cubes", "fairing", "cleanup", "refine", "local_sizes", "creases", "sheet", "warnings". Names are
+/// stable (scripts read them): per-count families are spelled "patches_N", "leaves_depth_N",
+/// "doubtful_REASON".
 void visit_stats(
     const MeshStats& stats,
     const std::function<void(std::string_view stage, std::string_view name, double value)>& visit);

@@ -37,8 +37,9 @@ struct Settings : SizeSettings,
                   RefineSettings,
                   BudgetSettings {
   Method method = Method::Projection;
-  /// Projection only, formulas only, without region, frame or cells: CSG shapes meshed along their
-  /// exact creases and corners (Automatic), or as smooth surfaces (Off).
+  /// Projection only, formulas only, without given cells: CSG shapes meshed along their exact creases
+  /// and corners (Automatic; a region or the box cuts them open along exact curves, a frame leaves the
+  /// crease mesh as it is: docs/creases.md), or as smooth surfaces (Off).
   Creases creases = Creases::Automatic;
   /// The region to mesh; the surface's default box when empty. Must be valid().
   std::optional<Box> box;

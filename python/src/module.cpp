@@ -37,6 +37,7 @@ MeshResult mesh_released(SurfacePtr surface, Settings settings) {
   return run_released([&](const std::atomic<bool>* cancel) {
     settings.cancel = cancel;
     r.mesh = mesh_surface(*r.surface, settings, &r.stats);
+    r.check_crossings();
     r.normals_from_surface();
     return std::move(r);
   });
@@ -68,6 +69,7 @@ MeshResult mesh_spec(const std::string& spec, const BoxArg& box, const std::map<
     return run_released([&](const std::atomic<bool>* cancel) {
       settings.cancel = cancel;
       r.mesh = mesh_composite(model, settings, &r.stats);
+      r.check_crossings();
       r.normals_from_surface();
       return std::move(r);
     });

@@ -6,6 +6,7 @@
 #include <isopatch/curvature.hpp>
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/render.hpp>
+#include <isopatch/self_intersection.hpp>
 
 #include "arrays.hpp"
 #include "report_dict.hpp"
@@ -109,6 +110,12 @@ py::array_t<std::uint8_t> render(const MeshResult& r, int mode, const std::strin
 }
 
 }  // namespace
+
+void MeshResult::check_crossings() {
+  const SelfIntersectionReport crossings = find_self_intersections(mesh);
+  stats.warnings.self_intersecting_pairs = crossings.pairs;
+  stats.warnings.self_intersection_near = crossings.example_point;
+}
 
 void MeshResult::normals_from_surface() {
   normals.resize(mesh.positions.size());

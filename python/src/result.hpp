@@ -26,6 +26,10 @@ struct MeshResult {
 
   /// Fills `normals` from surface's gradient at every vertex.
   void normals_from_surface();
+  /// Runs the exact self-intersection check (self_intersection.hpp) on the mesh the library returned and
+  /// records its pairs in stats.warnings, as the command line does: no mesh comes back crossing itself
+  /// without saying so.
+  void check_crossings();
 };
 
 /// Binds MeshResult as isopatch._isopatch.MeshResult (arrays, fields, stats, write, analyze, render).

@@ -14,14 +14,17 @@
 #include <vector>
 
 #include "api/capped_meshing.hpp"
+#include "api/clipped_creases.hpp"
 #include "api/crease_meshing.hpp"
 #include "api/curvature_feature_sizes.hpp"
 #include "api/curved_cut.hpp"
 #include "api/cut_feature_sizes.hpp"
 #include "api/frame_meshing.hpp"
 #include "api/multiresolution.hpp"
+#include "api/sheet_meshing.hpp"
 #include "api/size_estimate.hpp"
 #include "api/task_arena_run.hpp"
+#include "api/time_share.hpp"
 #include "core/point_grid.hpp"
 #include "projection/convex_meshing.hpp"
 #include "remesh/remesh_presets.hpp"
@@ -253,10 +256,65 @@ Mesh mesh_by_projection(const Surface& surface, const Settings& settings, const 
   return mesh;
 }
 
+/// What the cut-open crease path did: a mesh, or whether the shape has creases the partition's settings
+/// would round (for the warning) and whether it was tried (its statistics then to be reset).
+struct ClippedAttempt {
+  std::optional<Mesh> mesh;
+  bool has_creases = false;
+  bool tried = false;
+};
+
+/// The shape cut open along its creases (clipped_creases.hpp) when it has creases and a region, a frame
+/// or (`leaves_box`) creases leaving the box ask for it; given cells keep the partition's smooth mesh.
+/// A failure of that path leaves the smooth mesh to the caller (with the warning).
+ClippedAttempt mesh_cut_open_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats,
+                                           bool leaves_box) {
+  ClippedAttempt out;
+  if (settings.creases != Creases::Automatic || settings.method != Method::Projection ||
+      !surface.expression())
+    return out;
+  const bool partition = !settings.region.empty() || settings.frame || !settings.cells.empty();
+  if (!partition && !leaves_box) return out;
+  out.has_creases = leaves_box;
+  if (!out.has_creases) {
+    Settings plain = settings;
+    plain.region.clear();
+    plain.cells.clear();
+    plain.frame.reset();
+    plain.box = settings.box ? *settings.box : convex_meshing_box(surface, settings).value_or(surface.box());
+    try {
+      std::optional<Vec3> leaves;
+      out.has_creases = analyse_creases(surface, plain, &leaves).has_value() || leaves.has_value();
+      leaves_box = leaves.has_value();
+    } catch (const CreaseError&) {
+      out.has_creases = true;
+    } catch (const Error&) {  // the check only informs: its budget or time running out changes nothing
+    }
+  }
+  if (!out.has_creases || !settings.cells.empty()) return out;
+  out.tried = true;
+  try {
+    CreasedMesh cut =
+        mesh_clipped_along_creases(surface, cutting_planes(surface, settings, leaves_box), settings, stats);
+    if (!cut.mesh && cut.creases_leave_box && !leaves_box)
+      cut = mesh_clipped_along_creases(surface, cutting_planes(surface, settings, true), settings, stats);
+    out.mesh = std::move(cut.mesh);
+  } catch (const CreaseError&) {
+  }
+  return out;
+}
+
 }  // namespace
 
-Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
-  settings.validate();
+namespace {
+
+Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* stats) {
+  // Each stage below gets what the earlier ones left of the time limit.
+  const TimeShare time(given);
+  // A sheet (the wall of a lattice, abs(g) - t) is its two walls, each meshed on its own, whatever the
+  // sheet's thickness against the edge; a wall with creases is meshed along them.
+  if (std::optional<Mesh> sheet = mesh_sheet(surface, time.next(), stats, mesh_surface))
+    return std::move(*sheet);
   // A smooth solid capped by planes is the cut surface closed by caps; where its caps cannot close (a
   // plane tangent to the surface on the cut), the general crease path meshes it.
   const MeshStats before = stats ? *stats : MeshStats{};
@@ -272,7 +330,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
     return mesh;
   };
   try {
-    if (std::optional<Mesh> capped = mesh_capped_shape(surface, settings, stats))
+    if (std::optional<Mesh> capped = mesh_capped_shape(surface, time.next(), stats))
       return not_empty(std::move(*capped));
   } catch (const CreaseError&) {
     if (stats) *stats = before;
@@ -281,7 +339,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   // crease, whatever the faces' genus; where they cannot be joined, the general crease path meshes them.
   std::string cut_failure;
   try {
-    if (std::optional<Mesh> cut = mesh_curved_cut(surface, settings, stats))
+    if (std::optional<Mesh> cut = mesh_curved_cut(surface, time.next(), stats))
       return not_empty(std::move(*cut));
   } catch (const CreaseError& e) {
     cut_failure = e.what();
@@ -289,7 +347,7 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
   }
   CreasedMesh creased;
   try {
-    creased = mesh_along_creases(surface, settings, stats);
+    creased = mesh_along_creases(surface, time.next(), stats);
   } catch (const CreaseError& e) {
     // Every refusal says what would mesh the shape; for two solids intersected, why their join failed.
     const std::string what = cut_failure.empty() ? std::string(e.what()) : cut_failure;
@@ -300,30 +358,37 @@ Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* s
         "surface, and a lattice capped by planes is meshed along its creases (docs/lattices.md)");
   }
   if (creased.mesh) return not_empty(std::move(*creased.mesh));
+  // A shape with creases cut open by a region, or by the box where its creases leave it, or seen
+  // through a frame: meshed along its creases, cut open exactly (clipped_creases.hpp).
+  const ClippedAttempt clipped =
+      mesh_cut_open_along_creases(surface, time.next(), stats, creased.creases_leave_box);
+  if (clipped.mesh) return not_empty(std::move(*clipped.mesh));
+  if (stats && clipped.tried) *stats = before;
+  const Settings settings = time.next();
   Mesh mesh = run_in_task_arena(settings, stats, [&] {
     if (settings.max_evaluations == 0 && settings.time_limit == 0.0)
       return dispatch(surface, settings, stats);
     const BudgetedSurface budgeted(surface, settings.max_evaluations, settings.time_limit);
     return dispatch(budgeted, settings, stats);
   });
+  // Never a silent smooth mesh of a shape with creases: say why they were rounded.
   if (stats && creased.creases_leave_box) stats->warnings.creases_leave_box = 1;
-  if (stats && !creased.creases_leave_box && settings.creases == Creases::Automatic && surface.expression() &&
-      settings.method == Method::Projection &&
-      (!settings.region.empty() || !settings.cells.empty() || settings.frame)) {
-    // Never a silent smooth mesh of a shape with creases: say that the partition's settings dropped them.
-    Settings plain = settings;
-    plain.region.clear();
-    plain.cells.clear();
-    plain.frame.reset();
-    plain.box = settings.box.value_or(surface.box());
-    try {
-      if (analyse_creases(surface, plain)) stats->warnings.creases_in_partition = 1;
-    } catch (const CreaseError&) {
-      stats->warnings.creases_in_partition = 1;
-    } catch (const Error&) {  // the check only informs: its budget or time running out changes nothing
-    }
-  }
+  if (stats && !creased.creases_leave_box && clipped.has_creases) stats->warnings.creases_in_partition = 1;
   return mesh;
+}
+
+}  // namespace
+
+Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats) {
+  settings.validate();
+  try {
+    return mesh_in_stages(surface, settings, stats);
+  } catch (const LimitError& e) {
+    // A stage stopped at what the earlier ones left: the error names the limit the caller set.
+    if (e.setting() != "time_limit" || settings.time_limit <= 0.0) throw;
+    throw LimitError("the time limit of " + std::to_string(settings.time_limit) + " s is exceeded",
+                     "time_limit");
+  }
 }
 
 Method parse_method(const std::string& name) {

@@ -21,6 +21,7 @@
 #include "api/exact_positions.hpp"
 #include "api/facet_polygons.hpp"
 #include "csg/face_set.hpp"
+#include "planar/graded_division.hpp"
 #include "planar/lattice_points.hpp"
 #include "planar/region_triangulation.hpp"
 #include "remesh/remesh_presets.hpp"
@@ -82,9 +83,11 @@ class CapBuilder {
         settings_(settings),
         boundary_(boundary_edges(mesh)),
         assigned_(boundary_.size(), 0) {
-    for (const Edge& e : boundary_)
-      for (std::uint32_t v : e)
+    for (std::size_t e = 0; e < boundary_.size(); ++e)
+      for (std::uint32_t v : boundary_[e]) {
         if (seen_.insert(v).second) cut_vertices_.push_back(v);
+        boundary_at_[v].push_back(e);
+      }
     // Sizes that vary (an error bound, a size field) make the cut's edges shorter than the largest size
     // where it meets the planes: the caps follow the cut's mean edge there, not the largest size.
     if ((settings.max_error || settings.size_field) && !boundary_.empty()) {
@@ -149,6 +152,8 @@ class CapBuilder {
   std::vector<Edge> boundary_;
   std::vector<int> assigned_;
   std::unordered_set<std::uint32_t> seen_;
+  std::unordered_map<std::uint32_t, std::vector<std::size_t>>
+      boundary_at_;  ///< the cut's boundary edges at v
   std::vector<std::uint32_t> cut_vertices_;
   std::vector<std::pair<Vec3, std::uint32_t>> corners_;
   std::map<std::pair<int, int>, EdgeChains> chains_;
@@ -217,6 +222,24 @@ class CapBuilder {
     return std::abs(plane_value(planes_[static_cast<std::size_t>(plane)], p)) <= tol_;
   }
 
+  /// The size a side of planes i and j wants at its stop v: the mean length of the cut's boundary edges at
+  /// v on either plane (where local sizes made the cut finer there), at most the caps' edge; 0 where v is
+  /// no vertex of the cut (a corner of the polyhedron inside the solid).
+  double size_at(std::uint32_t v, int i, int j) const {
+    const auto it = boundary_at_.find(v);
+    if (it == boundary_at_.end()) return 0.0;
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t e : it->second) {
+      const Vec3& p = mesh_.positions[boundary_[e][0]];
+      const Vec3& q = mesh_.positions[boundary_[e][1]];
+      if (!((on(i, p) && on(i, q)) || (on(j, p) && on(j, q)))) continue;
+      sum += (p - q).norm();
+      ++count;
+    }
+    return count == 0 ? 0.0 : std::min(edge_, sum / count);
+  }
+
   /// The chains of the side from `a` to `b` on planes i and j (j < 0: box face -1 - j, a side only
   /// cap i has: the box cuts the part open along it), made on first use.
   const EdgeChains& side_chains(int i, int j, const Vec3& a, const Vec3& b) {
@@ -238,9 +261,12 @@ class CapBuilder {
       const Vec3 p = mesh_.positions[stops[k].second], q = mesh_.positions[stops[k + 1].second];
       if (smooth_ && !(smooth_->value(0.5 * (p + q)) < 0.0)) continue;
       std::vector<std::uint32_t> chain{stops[k].second};
-      const auto n = std::max<long>(1, std::lround((q - p).norm() / edge_));
-      for (long s = 1; s < n; ++s) {
-        chain.push_back(add_vertex(p + (static_cast<double>(s) / static_cast<double>(n)) * (q - p)));
+      // As fine as the cut where it meets the side (a corner of the polyhedron takes the other end's size).
+      double at_p = size_at(stops[k].second, i, j), at_q = size_at(stops[k + 1].second, i, j);
+      if (at_p == 0.0) at_p = at_q == 0.0 ? edge_ : at_q;
+      if (at_q == 0.0) at_q = at_p;
+      for (const double t : planar::graded_division((q - p).norm(), at_p, at_q)) {
+        chain.push_back(add_vertex(p + t * (q - p)));
         ++edge_vertices_;
       }
       chain.push_back(stops[k + 1].second);

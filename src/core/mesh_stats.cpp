@@ -131,14 +131,21 @@ void visit_stats(
     v("uncertain_cells", count(c->uncertain_cells));
     v("caps", count(c->caps));
     v("crease_vertices", count(c->crease_vertices));
+    v("cut_planes", count(c->cut_planes));
     v("seconds", c->seconds);
   }
+  if (const auto& sheet = stats.sheet) visit("sheet", "walls", count(sheet->walls));
   const MeshWarnings& w = stats.warnings;
   const auto v = [&](std::string_view name, double value) { visit("warnings", name, value); };
   if (stats.creases) v("exempt_corners", count(w.exempt_corners));
   if (stats.creases) v("uncertain_crease_cells", count(w.uncertain_crease_cells));
   if (w.creases_leave_box > 0) v("creases_leave_box", count(w.creases_leave_box));
   if (w.creases_in_partition > 0) v("creases_in_partition", count(w.creases_in_partition));
+  if (w.self_intersecting_pairs > 0) {
+    v("self_intersecting_pairs", count(w.self_intersecting_pairs));
+    for (int a = 0; a < 3; ++a)
+      v(std::string("self_intersection_near_") + "xyz"[a], w.self_intersection_near[a]);
+  }
   if (stats.projection) {
     v("doubtful_cells", count(w.doubtful_cells));
     v("doubtful_topology_cells", count(w.doubtful_topology_cells));

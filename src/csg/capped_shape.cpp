@@ -10,6 +10,7 @@
 #include <isopatch/expression.hpp>
 #include <isopatch/resolve_surface.hpp>
 
+#include "csg/tape_walk.hpp"
 #include "expr/branches.hpp"
 #include "expr/tape.hpp"
 
@@ -65,35 +66,6 @@ Kind result_kind(const Tape& tape) {
   return kind[tape.result];
 }
 
-/// +1 for a step that keeps the order of its operand (adding a constant, scaling by a positive one),
-/// -1 for one that reverses it (negating, subtracting from a constant, scaling by a negative one), 0 else.
-int monotone(const Instruction& in) {
-  if (in.op == Op::AddC) return 1;
-  if (in.op == Op::Neg || in.op == Op::RSubC) return -1;
-  if (in.op == Op::MulC || in.op == Op::DivC) return in.imm > 0.0 ? 1 : (in.imm < 0.0 ? -1 : 0);
-  return 0;
-}
-
-/// For every instruction, the instructions its operands read (the last to write their registers before
-/// it; -1 for x, y, z and the constants), and the one that writes f.
-struct Writers {
-  std::vector<int> a, b;
-  int root = -1;
-};
-Writers operand_writers(const Tape& tape) {
-  Writers w;
-  std::vector<int> writer(std::max<std::size_t>(tape.registers, Tape::kVariables), -1);
-  w.a.resize(tape.code.size());
-  w.b.resize(tape.code.size());
-  for (std::size_t i = 0; i < tape.code.size(); ++i) {
-    w.a[i] = writer[tape.code[i].a];
-    w.b[i] = expr::is_binary(tape.code[i].op) ? writer[tape.code[i].b] : -1;
-    writer[tape.code[i].out] = static_cast<int>(i);
-  }
-  w.root = writer[tape.result];
-  return w;
-}
-
 /// The same plane to `tolerance` (sum of the coefficients' differences).
 bool same_plane(const HalfSpace& h, const HalfSpace& o, double tolerance) {
   return std::abs(o.a - h.a) + std::abs(o.b - h.b) + std::abs(o.c - h.c) + std::abs(o.d - h.d) < tolerance;
@@ -124,7 +96,7 @@ class LeafWalk {
 
   const Tape& tape_;
   std::vector<std::uint32_t> switches_;
-  Writers writers_;
+  OperandWriters writers_;
   std::vector<int> switch_of_;
   bool overflow_ = false;
 
@@ -139,7 +111,8 @@ class LeafWalk {
     if (overflow_ || node < 0) return {choice};
     const Instruction& in = tape_.code[static_cast<std::size_t>(node)];
     const auto index = static_cast<std::size_t>(node);
-    if (const int order = monotone(in)) return collect(writers_.a[index], choice, negated != (order < 0));
+    if (const int order = monotone_step(in))
+      return collect(writers_.a[index], choice, negated != (order < 0));
     if (negated) return {choice};
     if (in.op == Op::Abs) {
       // abs(u) = max(u, -u): two planes when u is affine, else one leaf.
@@ -187,9 +160,9 @@ std::optional<ShelledShape> split_shelled_shape(const Surface& f, const Box& box
   if (formula == nullptr || formula->tape().code.empty()) return std::nullopt;
   const Tape& tape = formula->tape();
   // The root through increasing steps to a min.
-  const Writers writers = operand_writers(tape);
+  const OperandWriters writers = operand_writers(tape);
   int node = writers.root;
-  while (node >= 0 && monotone(tape.code[static_cast<std::size_t>(node)]) > 0)
+  while (node >= 0 && monotone_step(tape.code[static_cast<std::size_t>(node)]) > 0)
     node = writers.a[static_cast<std::size_t>(node)];
   if (node < 0 || tape.code[static_cast<std::size_t>(node)].op != Op::Min) return std::nullopt;
   const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);

@@ -276,8 +276,9 @@ TEST(CappedLattice, ACubeInARotatedFrameKeepsItsCreasesAndItsVolume) {
   EXPECT_EQ(test::count_self_intersections(turned, 10), 0u);
 }
 
-TEST(CappedLattice, CreasesDroppedByARegionOrAFrameAreSaid) {
-  // Two boxes side by side (a union: not a capped solid) in a frame: meshed smooth, with a warning.
+TEST(CappedLattice, AFrameKeepsTheCreasesOfAnyCsgShape) {
+  // Two boxes side by side (a union: not a capped solid) in a frame: the crease path has no partition to
+  // turn, so the mesh along the creases is the one without the frame, and nothing is said.
   const std::string boxes =
       "min(max(max(abs(x),abs(y)),abs(z))-1,max(max(abs(x-1.5),abs(y)),abs(z-0.3))-0.5)";
   const Box box{Vec3(-1.5, -1.5, -1.5), Vec3(2.5, 1.5, 1.5)};
@@ -285,15 +286,21 @@ TEST(CappedLattice, CreasesDroppedByARegionOrAFrameAreSaid) {
   Settings s;
   s.box = box;
   s.edge_length = 0.15;
+  const Mesh plain = mesh_surface(*f, s);
   s.frame = Frame{30.0, 20.0, 10.0};
   MeshStats stats;
-  mesh_surface(*f, s, &stats);
-  EXPECT_EQ(stats.warnings.creases_in_partition, 1u);
+  const Mesh turned = mesh_surface(*f, s, &stats);
+  ASSERT_TRUE(stats.creases);
+  EXPECT_GT(stats.creases->creases, 12u);
+  EXPECT_EQ(stats.warnings.creases_in_partition, 0u);
+  EXPECT_EQ(turned.positions, plain.positions);
+  EXPECT_EQ(turned.triangles, plain.triangles);
   // A smooth formula in a frame has nothing to say.
   const SurfacePtr sphere = expression_surface("x^2+y^2+z^2-1", capped_box(1.5));
   s.box = capped_box(1.5);
   MeshStats smooth_stats;
   mesh_surface(*sphere, s, &smooth_stats);
+  EXPECT_FALSE(smooth_stats.creases);
   EXPECT_EQ(smooth_stats.warnings.creases_in_partition, 0u);
 }
 

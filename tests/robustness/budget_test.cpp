@@ -9,6 +9,9 @@
 
 #include <chrono>
 #include <string>
+#include <thread>
+
+#include "api/time_share.hpp"
 
 #ifdef ISOPATCH_CLI
 #include "run_command.hpp"
@@ -54,6 +57,44 @@ TEST(Budgets, TimeLimitStopsALongRunEarly) {
   EXPECT_EQ(limit_message(*tanglecube, settings).rfind("time_limit: the time limit of", 0), 0u);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 5.0);
+}
+
+TEST(Budgets, TheStagesOfACsgRunShareOneTimeLimit) {
+  // A gyroid minus a ball whose creases leave the box: the crease analysis, the shape cut open by the box
+  // and the smooth mesher each take their time; the limit holds for the whole run, and the error names
+  // the limit that was set, not what a late stage was left of it.
+  const SurfacePtr f =
+      expression_surface("max(sin(9*x)*cos(9*y)+sin(9*y)*cos(9*z)+sin(9*z)*cos(9*x),1-x^2-y^2-z^2)",
+                         Box{Vec3::Constant(-1.2), Vec3::Constant(1.2)});
+  Settings settings;
+  settings.edge_length = 0.01;
+  settings.time_limit = 0.3;
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(limit_message(*f, settings), "time_limit: the time limit of 0.300000 s is exceeded");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, 10.0);
+}
+
+TEST(Budgets, EachStageGetsWhatTheEarlierOnesLeft) {
+  Settings settings;
+  settings.time_limit = 0.2;
+  const TimeShare share(settings);
+  const Settings first = share.next();
+  EXPECT_GT(first.time_limit, 0.1);
+  EXPECT_LE(first.time_limit, 0.2);
+  std::this_thread::sleep_for(std::chrono::milliseconds(120));
+  EXPECT_LT(share.next().time_limit, 0.1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  try {
+    (void)share.next();
+    ADD_FAILURE() << "no LimitError once the limit is spent";
+  } catch (const LimitError& e) {
+    EXPECT_EQ(e.setting(), "time_limit");
+    EXPECT_STREQ(e.what(), "the time limit of 0.200000 s is exceeded");
+  }
+  // Without a limit every stage has none.
+  const Settings none;
+  EXPECT_EQ(TimeShare(none).next().time_limit, 0.0);
 }
 
 TEST(Budgets, RejectsANegativeTimeLimit) {

@@ -1,0 +1,31 @@
+#pragma once
+// A sheet, f = phi(|g|) (the wall of a lattice, abs(gyroid) - t), meshed as its two walls, each a
+// smooth surface of its own (csg/sheet_shape.hpp): the partition's cells then follow one wall at a time,
+// whatever the sheet's thickness against the edge, instead of having to separate two walls closer than
+// an edge (docs/lattices.md, "Sheets").
+
+#include <isopatch/mesh.hpp>
+#include <isopatch/mesh_stats.hpp>
+#include <isopatch/settings.hpp>
+#include <isopatch/surface.hpp>
+
+#include <functional>
+#include <optional>
+
+namespace isopatch {
+
+/// Meshes one surface with settings (the full entry point, mesh_surface, so that a wall with creases
+/// or a sheet of a sheet is meshed as such).
+using WallMesher = std::function<Mesh(const Surface&, const Settings&, MeshStats*)>;
+
+/// When `f` is a sheet whose walls stay apart throughout the domain of `settings` (its box, region,
+/// cells, or every rotation of its box for a frame) and the method is Projection: each wall meshed by
+/// `mesh_wall` with the same settings (the second with what is left of max_vertices, max_evaluations
+/// and time_limit), the two meshes concatenated (first wall's vertices first). A wall that does not
+/// cross the domain is left out. `stats` (may be null) gets both runs' counts added, stage times
+/// merged, and `sheet` set. Returns nullopt when `f` is not such a sheet.
+/// \throw NoSurfaceError when neither wall crosses the domain; whatever `mesh_wall` throws otherwise.
+std::optional<Mesh> mesh_sheet(const Surface& f, const Settings& settings, MeshStats* stats,
+                               const WallMesher& mesh_wall);
+
+}  // namespace isopatch
