@@ -41,11 +41,11 @@ const char* class_name(ErrorKind kind) {
 }
 
 /// A message in Python's words: the command line's flags the library names (`--creases off`, a smaller
-/// `--edge-length`, `--grid NAME`) become the keyword arguments of isopatch.mesh (`creases="off"`,
-/// `edge_length`, `grid=NAME`).
+/// `--edge-length`, `--edge-length 0.05`, `--grid NAME`) become the keyword arguments of isopatch.mesh
+/// (`creases="off"`, `edge_length`, `edge_length=0.05`, `grid=NAME`).
 std::string in_python_words(const std::string& message) {
   static const std::regex flag(
-      R"((^|[\s(,;])--([a-z][a-z-]*)(?: (off|auto|on|preview|default|fine|[A-Z]+)\b)?)");
+      R"((^|[\s(,;])--([a-z][a-z-]*)(?: (off|auto|on|preview|default|fine|[A-Z]+|[0-9][0-9.eE+-]*)\b)?)");
   std::string out;
   std::size_t last = 0;
   for (std::sregex_iterator it(message.begin(), message.end(), flag), end; it != end; ++it) {
@@ -58,7 +58,8 @@ std::string in_python_words(const std::string& message) {
     if (m[3].matched) {
       const std::string value = m[3].str();
       const bool placeholder = value.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ") == std::string::npos;
-      out += placeholder ? "=" + value : "=\"" + value + "\"";
+      const bool number = value.front() >= '0' && value.front() <= '9';
+      out += placeholder || number ? "=" + value : "=\"" + value + "\"";
     }
     last = static_cast<std::size_t>(m.position(0) + m.length(0));
   }

@@ -153,3 +153,15 @@ def test_a_mesh_that_crosses_itself_says_so():
     assert m.stats["warnings"]["self_intersecting_pairs"] == pairs
     clean = isopatch.mesh("sphere", edge_length=0.2)
     assert "self_intersecting_pairs" not in clean.stats.get("warnings", {})
+
+
+def test_a_refusal_says_what_would_mesh_the_shape_in_pythons_words():
+    # A gyroid capped by a cylinder and two planes is neither a lattice capped by planes alone nor one cut
+    # by one curved solid: the general crease path cannot cut its face into pieces. The error names the
+    # place, the forms that are meshed along their creases, a smaller edge and creases off, as keywords.
+    capped = f"max({GYROID},max(x^2+y^2-25,abs(z)-5))"
+    with pytest.raises(isopatch.CreaseError) as crease:
+        isopatch.mesh(capped, box=((-6,) * 3, (6,) * 3), edge_length=0.2)
+    message = str(crease.value)
+    assert " near (" in message and "docs/lattices.md" in message
+    assert "edge_length=0.1" in message and 'creases="off"' in message and "--" not in message

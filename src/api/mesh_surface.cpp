@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -308,6 +309,32 @@ ClippedAttempt mesh_cut_open_along_creases(const Surface& surface, const Setting
 
 namespace {
 
+/// A refusal of the crease paths with what would mesh the shape, in the command line's words (the Python
+/// package puts them in its own): where a face could not be cut into pieces, that this fails on faces of
+/// many handles and at features near the edge length; where the cause is a feature near the edge length,
+/// half the edge; always, turning creases off.
+std::string with_remedies(const std::string& what, double edge) {
+  const auto has = [&what](const char* words) { return what.find(words) != std::string::npos; };
+  char half[32];
+  std::snprintf(half, sizeof half, "%.3g", 0.5 * edge);
+  std::string out = what;
+  if (has("seam") || has("disc-like") || has("could not be cut")) {
+    out +=
+        "; the general crease path cuts each face into pieces by planes, which fails on a face of many "
+        "handles (a lattice is meshed along its creases when capped by planes alone or cut by one curved "
+        "solid alone: docs/lattices.md) and at features near the edge length (a smaller --edge-length ";
+    out += half;
+    out += ")";
+  } else if ((has("than an edge") || has("too short") || has("narrower")) && !has("--edge-length")) {
+    out += "; a smaller edge length (--edge-length ";
+    out += half;
+    out += ") may mesh it";
+  }
+  if (!has("creases off"))
+    out += "; turning creases off (--creases off) meshes it as a smooth surface (creases rounded)";
+  return out;
+}
+
 Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* stats) {
   // Each stage below gets what the earlier ones left of the time limit.
   const TimeShare time(given);
@@ -351,11 +378,7 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
   } catch (const CreaseError& e) {
     // Every refusal says what would mesh the shape; for two solids intersected, why their join failed.
     const std::string what = cut_failure.empty() ? std::string(e.what()) : cut_failure;
-    if (what.find("creases off") != std::string::npos) throw CreaseError(what);
-    throw CreaseError(
-        what +
-        "; turning creases off (--creases off) meshes it as a smooth "
-        "surface, and a lattice capped by planes is meshed along its creases (docs/lattices.md)");
+    throw CreaseError(with_remedies(what, default_edge_length(given, given.box.value_or(surface.box()))));
   }
   if (creased.mesh) return not_empty(std::move(*creased.mesh));
   // A shape with creases cut open by a region, or by the box where its creases leave it, or seen
