@@ -287,7 +287,9 @@ Runner add_mesh_command(CLI::App& app) {
   cmd->add_option(
          "--creases", o->creases,
          "Formulas: auto (one built with min, max or abs whose faces meet at creases is meshed along "
-         "its exact creases and corners) | off (meshed as a smooth surface)")
+         "its exact creases and corners; where they cannot be followed, smooth with a warning) | off "
+         "(meshed as a smooth surface) | exact (as auto, but a shape whose creases cannot be meshed is "
+         "refused, exit 11)")
       ->capture_default_str();
   cmd->add_option("--max-ray-angle", o->max_ray_angle,
                   "Projection: acceptance angle between ray and gradient")

@@ -43,6 +43,12 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, const SelfInt
         "warning: creases of the shape leave the box, and the shape cut open by the box could not be "
         "meshed along them: meshed as a smooth surface (creases rounded); a box that holds the whole "
         "shape meshes it along its creases\n");
+  if (w.creases_rounded > 0)
+    std::fprintf(out,
+                 "warning: the shape's creases could not be meshed along (%s): meshed as a smooth surface, "
+                 "its creases rounded; --creases exact refuses such a shape, --creases off meshes it smooth "
+                 "without this warning\n",
+                 w.crease_failure.c_str());
   if (w.creases_in_partition > 0)
     std::fprintf(
         out,

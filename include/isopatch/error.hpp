@@ -94,6 +94,14 @@ class CreaseError : public Error {
   explicit CreaseError(const std::string& message) : Error(ErrorKind::Crease, message) {}
 };
 
+/// A CSG shape that is not a 2-manifold where its faces meet (solids touching along an edge or at a
+/// point, faces touching without crossing): no mesh can follow it, so it is refused whatever
+/// Settings::creases asks (a CreaseError, exit code 11; Python's isopatch.CreaseError).
+class ShapeNotManifoldError : public CreaseError {
+ public:
+  explicit ShapeNotManifoldError(const std::string& message) : CreaseError(message) {}
+};
+
 /// A budget ran out or the run was cancelled; setting() names the budget ("max_evaluations",
 /// "time_limit", "max_vertices", "cancel").
 class LimitError : public Error {

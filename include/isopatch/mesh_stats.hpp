@@ -149,6 +149,11 @@ struct MeshWarnings {
   /// CSG shapes: 1 when a formula with creases was meshed through the partition as a smooth surface:
   /// given cells, or a region whose cut could not be meshed along the creases (docs/creases.md).
   std::size_t creases_in_partition = 0;
+  /// CSG shapes (Creases::Automatic): 1 when the crease paths could not mesh the shape (a face they cannot
+  /// cut into pieces, a feature at the edge's scale), so it was meshed as a smooth surface with its creases
+  /// rounded; `crease_failure` says why and where (Creases::Exact refuses with that message instead).
+  std::size_t creases_rounded = 0;
+  std::string crease_failure;
   /// Pairs of triangles that cross (self_intersection.hpp; at most 1000 counted), and a point where the
   /// first pair meets. The meshers do not look for them: the front ends (the command line, the Python
   /// package) run the exact check on every mesh they return and fill these.

@@ -21,11 +21,13 @@ enum class Method {
 /// stage, with the method and the region. Fields are reached directly (settings.edge_length).
 /// How formulas with creases (min, max, abs: CSG shapes) are meshed.
 enum class Creases {
-  Automatic,  ///< along their creases when a formula has real ones (docs/creases.md); else as smooth
+  Automatic,  ///< along their creases when a formula has real ones (docs/creases.md); else as smooth; where
+              ///< the crease paths cannot mesh the shape, as smooth with a warning (warnings.creases_rounded)
   Off,        ///< as a smooth surface (creases rounded off by the projection, as before)
+  Exact,      ///< as Automatic, but a shape whose creases cannot be meshed is refused (CreaseError)
 };
 
-/// "auto" or "off". \throw SettingError (setting "creases") otherwise.
+/// "auto", "off" or "exact". \throw SettingError (setting "creases") otherwise.
 Creases parse_creases(const std::string& name);
 
 struct Settings : SizeSettings,

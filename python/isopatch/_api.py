@@ -19,7 +19,7 @@ Function = Callable[[np.ndarray], np.ndarray]
 #: The string options, as type checkers see them (the library refuses any other value at run time).
 Quality = Literal["preview", "default", "fine"]
 Method = Literal["projection", "mc"]
-Creases = Literal["auto", "off"]
+Creases = Literal["auto", "off", "exact"]
 Inside = Literal["below", "above"]
 #: A convex region: the command line's --region text ("a,b,c,d;...") or (a, b, c, d) planes, each the
 #: half-space a x + b y + c z + d <= 0; a frame: "AZ,EL,ROLL" or three angles in degrees.
@@ -105,8 +105,10 @@ def mesh(
         turns within an edge, as at a thin rim): the library's
         settings, as the command line's flags of the same names.
     creases: formulas only. 'auto': a formula built with min, max or abs whose faces meet at real creases
-        (a CSG shape) is meshed along its exact creases and corners (docs/creases.md); 'off': meshed as a
-        smooth surface. Raises CreaseError for a shape no mesh can follow (solids touching along an edge).
+        (a CSG shape) is meshed along its exact creases and corners (docs/creases.md); where the crease
+        paths cannot follow them, as a smooth surface with ``stats['warnings']['creases_rounded']``;
+        'exact': the same, but such a shape raises CreaseError with the reason; 'off': meshed as a smooth
+        surface. Raises CreaseError for a shape no mesh can follow (solids touching along an edge).
     region, frame: formulas and catalogue names, projection only, as the command line's --region and
         --frame: mesh inside the convex polytope of the region's half-spaces (inside the box when given;
         a formula without a box takes a bounded region's bounds), or partition in a frame rotated by

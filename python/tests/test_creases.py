@@ -1,5 +1,6 @@
 """isopatch.mesh on CSG formulas: meshed along their exact creases and corners by default, as smooth
-surfaces with creases='off', and CreaseError for shapes no mesh can follow."""
+surfaces with creases='off', shapes the crease paths cannot follow rounded with a warning (refused with
+creases='exact'), and CreaseError for shapes no mesh can follow."""
 
 import os
 import subprocess
@@ -155,13 +156,23 @@ def test_a_mesh_that_crosses_itself_says_so():
     assert "self_intersecting_pairs" not in clean.stats.get("warnings", {})
 
 
-def test_a_refusal_says_what_would_mesh_the_shape_in_pythons_words():
+def test_creases_the_paths_cannot_follow_are_rounded_with_a_warning_or_refused_when_exact():
     # A gyroid capped by a cylinder and two planes is neither a lattice capped by planes alone nor one cut
-    # by one curved solid: the general crease path cannot cut its face into pieces. The error names the
-    # place, the forms that are meshed along their creases, a smaller edge and creases off, as keywords.
+    # by one curved solid: the general crease path cannot cut its face into pieces. By default the shape is
+    # meshed as a smooth surface (closed, its creases rounded) and says so; creases="exact" refuses it,
+    # naming the place, the forms that are meshed along their creases, a smaller edge and creases off, in
+    # Python's words.
     capped = f"max({GYROID},max(x^2+y^2-25,abs(z)-5))"
+    box = ((-6,) * 3, (6,) * 3)
+    m = isopatch.mesh(capped, box=box, edge_length=0.2)
+    assert m.stats["warnings"]["creases_rounded"] == 1 and "creases" not in m.stats
+    assert m.analyze(surface=False)["topology"]["watertight"]
     with pytest.raises(isopatch.CreaseError) as crease:
-        isopatch.mesh(capped, box=((-6,) * 3, (6,) * 3), edge_length=0.2)
+        isopatch.mesh(capped, box=box, edge_length=0.2, creases="exact")
     message = str(crease.value)
     assert " near (" in message and "docs/lattices.md" in message
     assert "edge_length=0.1" in message and 'creases="off"' in message and "--" not in message
+    # A shape no mesh can follow is refused whatever creases asks (solids touching along an edge).
+    touching = "min(max(max(abs(x),abs(y)),abs(z))-1,max(max(abs(x-2),abs(y-2)),abs(z))-1)"
+    with pytest.raises(isopatch.CreaseError):
+        isopatch.mesh(touching, box=((-1.5, -1.5, -1.5), (3.5, 3.5, 1.5)))

@@ -271,7 +271,7 @@ struct ClippedAttempt {
 ClippedAttempt mesh_cut_open_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats,
                                            bool leaves_box) {
   ClippedAttempt out;
-  if (settings.creases != Creases::Automatic || settings.method != Method::Projection ||
+  if (settings.creases == Creases::Off || settings.method != Method::Projection ||
       !surface.expression())
     return out;
   const bool partition = !settings.region.empty() || settings.frame || !settings.cells.empty();
@@ -372,19 +372,29 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
     cut_failure = e.what();
     if (stats) *stats = before;
   }
+  // Every refusal says what would mesh the shape. A shape that is no 2-manifold is refused; where the
+  // crease paths reach their own limits (a face they cannot cut into pieces), the shape is meshed as a
+  // smooth surface with the reason in its warnings, unless creases were asked to be exact.
+  const double edge = default_edge_length(given, given.box.value_or(surface.box()));
+  std::string crease_failure;
   CreasedMesh creased;
   try {
     creased = mesh_along_creases(surface, time.next(), stats);
+  } catch (const ShapeNotManifoldError& e) {
+    throw ShapeNotManifoldError(with_remedies(e.what(), edge));
   } catch (const CreaseError& e) {
-    // Every refusal says what would mesh the shape; for two solids intersected, why their join failed.
+    // For two solids intersected, why their join failed.
     const std::string what = cut_failure.empty() ? std::string(e.what()) : cut_failure;
-    throw CreaseError(with_remedies(what, default_edge_length(given, given.box.value_or(surface.box()))));
+    if (given.creases == Creases::Exact) throw CreaseError(with_remedies(what, edge));
+    crease_failure = what;
+    if (stats) *stats = before;
   }
   if (creased.mesh) return not_empty(std::move(*creased.mesh));
   // A shape with creases cut open by a region, or by the box where its creases leave it, or seen
   // through a frame: meshed along its creases, cut open exactly (clipped_creases.hpp).
-  const ClippedAttempt clipped =
-      mesh_cut_open_along_creases(surface, time.next(), stats, creased.creases_leave_box);
+  const ClippedAttempt clipped = crease_failure.empty() ? mesh_cut_open_along_creases(
+                                                             surface, time.next(), stats, creased.creases_leave_box)
+                                                       : ClippedAttempt{};
   if (clipped.mesh) return not_empty(std::move(*clipped.mesh));
   if (stats && clipped.tried) *stats = before;
   const Settings settings = time.next();
@@ -397,6 +407,10 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
   // Never a silent smooth mesh of a shape with creases: say why they were rounded.
   if (stats && creased.creases_leave_box) stats->warnings.creases_leave_box = 1;
   if (stats && !creased.creases_leave_box && clipped.has_creases) stats->warnings.creases_in_partition = 1;
+  if (stats && !crease_failure.empty()) {
+    stats->warnings.creases_rounded = 1;
+    stats->warnings.crease_failure = crease_failure;
+  }
   return mesh;
 }
 

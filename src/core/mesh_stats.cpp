@@ -141,6 +141,7 @@ void visit_stats(
   if (stats.creases) v("uncertain_crease_cells", count(w.uncertain_crease_cells));
   if (w.creases_leave_box > 0) v("creases_leave_box", count(w.creases_leave_box));
   if (w.creases_in_partition > 0) v("creases_in_partition", count(w.creases_in_partition));
+  if (w.creases_rounded > 0) v("creases_rounded", count(w.creases_rounded));
   if (w.self_intersecting_pairs > 0) {
     v("self_intersecting_pairs", count(w.self_intersecting_pairs));
     for (int a = 0; a < 3; ++a)

@@ -118,7 +118,8 @@ void RefineSettings::validate() const {
 Creases parse_creases(const std::string& name) {
   if (name == "auto") return Creases::Automatic;
   if (name == "off") return Creases::Off;
-  throw SettingError("creases", "unknown creases '" + name + "' (want auto or off)");
+  if (name == "exact") return Creases::Exact;
+  throw SettingError("creases", "unknown creases '" + name + "' (want auto, off or exact)");
 }
 
 void Settings::validate() const {

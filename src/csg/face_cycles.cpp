@@ -128,7 +128,7 @@ std::vector<FaceCycle> face_cycles(const CreaseGraph& g, FaceSet& faces) {
       }
       if (next.curve == first.curve && next.reversed == first.reversed) break;
       if (used[index(next)])
-        throw CreaseError(
+        throw ShapeNotManifoldError(
             "the faces around " + point_text(g.nodes[static_cast<std::size_t>(v)].position) +
             " do not close up: the shape is not a 2-manifold there (solids touching along an edge?)");
       h = next;

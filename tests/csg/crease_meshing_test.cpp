@@ -84,8 +84,38 @@ TEST(CreaseMeshing, ASmoothUnionWithoutCreasesKeepsItsSmoothMesh) {
   EXPECT_EQ(automatic.mesh.triangles, smooth.mesh.triangles);
 }
 
+TEST(CreaseMeshing, CreasesThePathsCannotFollowAreRoundedOrRefusedWhenExact) {
+  // A pin of radius 0.02 on a cube, at the default edge (0.047): the general path cannot cut the pin's
+  // face into pieces. By default the shape is meshed as a smooth surface, closed, with the reason in its
+  // warnings; Creases::Exact refuses it with that reason and what would mesh it. Neither is a shape fault.
+  const std::string pin = "min(" + std::string(kCube) + ",max(x^2+y^2-0.0004,abs(z-1.05)-0.05))";
+  const Box box{Vec3::Constant(-1.5), Vec3::Constant(1.5)};
+  test::CsgRun rounded;
+  rounded.surface = expression_surface(pin, box);
+  Settings automatic;
+  automatic.box = box;
+  rounded.mesh = mesh_surface(*rounded.surface, automatic, &rounded.stats);
+  EXPECT_FALSE(rounded.stats.creases);
+  EXPECT_EQ(rounded.stats.warnings.creases_rounded, 1u);
+  EXPECT_NE(rounded.stats.warnings.crease_failure.find("near ("), std::string::npos);
+  EXPECT_TRUE(analyze_topology(rounded.mesh).watertight());
+  Settings exact;
+  exact.creases = Creases::Exact;
+  try {
+    mesh_csg(pin, box, exact);
+    ADD_FAILURE() << "no CreaseError with Creases::Exact";
+  } catch (const ShapeNotManifoldError& e) {
+    ADD_FAILURE() << "a pin is no shape fault: " << e.what();
+  } catch (const CreaseError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(rounded.stats.warnings.crease_failure, 0), 0u) << what;
+    EXPECT_NE(what.find("--edge-length 0.0234"), std::string::npos) << what;
+    EXPECT_NE(what.find("--creases off"), std::string::npos) << what;
+  }
+}
+
 TEST(CreaseMeshing, BadShapesGetClearErrors) {
-  // Two boxes touching along an edge: not a 2-manifold.
+  // Two boxes touching along an edge: not a 2-manifold, refused whatever Settings::creases asks.
   EXPECT_THROW(mesh_csg("min(max(max(abs(x),abs(y)),abs(z))-1,max(max(abs(x-2),abs(y-2)),abs(z))-1)",
                         Box{Vec3(-1.5, -1.5, -1.5), Vec3(3.5, 3.5, 1.5)}),
                CreaseError);
