@@ -271,8 +271,7 @@ struct ClippedAttempt {
 ClippedAttempt mesh_cut_open_along_creases(const Surface& surface, const Settings& settings, MeshStats* stats,
                                            bool leaves_box) {
   ClippedAttempt out;
-  if (settings.creases == Creases::Off || settings.method != Method::Projection ||
-      !surface.expression())
+  if (settings.creases == Creases::Off || settings.method != Method::Projection || !surface.expression())
     return out;
   const bool partition = !settings.region.empty() || settings.frame || !settings.cells.empty();
   if (!partition && !leaves_box) return out;
@@ -294,12 +293,21 @@ ClippedAttempt mesh_cut_open_along_creases(const Surface& surface, const Setting
   }
   if (!out.has_creases || !settings.cells.empty()) return out;
   out.tried = true;
+  // The run's own statistics, given to the caller only when its mesh is kept.
+  MeshStats own = stats ? *stats : MeshStats{};
   try {
     CreasedMesh cut =
-        mesh_clipped_along_creases(surface, cutting_planes(surface, settings, leaves_box), settings, stats);
-    if (!cut.mesh && cut.creases_leave_box && !leaves_box)
-      cut = mesh_clipped_along_creases(surface, cutting_planes(surface, settings, true), settings, stats);
-    out.mesh = std::move(cut.mesh);
+        mesh_clipped_along_creases(surface, cutting_planes(surface, settings, leaves_box), settings, &own);
+    if (!cut.mesh && cut.creases_leave_box && !leaves_box) {
+      own = stats ? *stats : MeshStats{};
+      cut = mesh_clipped_along_creases(surface, cutting_planes(surface, settings, true), settings, &own);
+    }
+    // Pieces closed by fans are where the crease path failed (their triangles may cross): the
+    // partition's smooth mesh, with its warning, is then the better answer.
+    if (cut.mesh && own.warnings.fan_patches == 0) {
+      out.mesh = std::move(cut.mesh);
+      if (stats) *stats = std::move(own);
+    }
   } catch (const CreaseError&) {
   }
   return out;
@@ -392,9 +400,10 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
   if (creased.mesh) return not_empty(std::move(*creased.mesh));
   // A shape with creases cut open by a region, or by the box where its creases leave it, or seen
   // through a frame: meshed along its creases, cut open exactly (clipped_creases.hpp).
-  const ClippedAttempt clipped = crease_failure.empty() ? mesh_cut_open_along_creases(
-                                                             surface, time.next(), stats, creased.creases_leave_box)
-                                                       : ClippedAttempt{};
+  const ClippedAttempt clipped =
+      crease_failure.empty()
+          ? mesh_cut_open_along_creases(surface, time.next(), stats, creased.creases_leave_box)
+          : ClippedAttempt{};
   if (clipped.mesh) return not_empty(std::move(*clipped.mesh));
   if (stats && clipped.tried) *stats = before;
   const Settings settings = time.next();

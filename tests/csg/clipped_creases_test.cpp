@@ -102,6 +102,26 @@ TEST(ClippedCreases, SmoothFormulasInARegionKeepTheirSmoothMesh) {
   EXPECT_EQ(run.stats.warnings.creases_in_partition, 0u);
 }
 
+TEST(ClippedCreases, ACutTheCreasePathClosesWithFansIsLeftToTheSmoothMesher) {
+  // A ball minus an ellipsoid that the box cuts (random model 270 of docs/robustness.md): cut by the box,
+  // the general path closes pieces by fans whose triangles cross; the smooth mesh, with the warning that
+  // its creases leave the box, is the better answer, and it is free of crossings.
+  const Box box{Vec3(-1.031, -0.977, -0.964), Vec3(0.994, 1.015, 0.904)};
+  const SurfacePtr f = expression_surface(
+      "max((x-(0.277))^2+(y-(0.339))^2+(z-(-0.577))^2-0.913936,"
+      "-(((x-(-0.549))/0.587)^2+((y-(0.376))/0.997)^2+((z-(0.055))/0.848)^2-1))",
+      box);
+  Settings s;
+  s.box = box;
+  s.edge_length = 0.0625;
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*f, s, &stats);
+  EXPECT_FALSE(stats.creases);
+  EXPECT_EQ(stats.warnings.creases_leave_box, 1u);
+  EXPECT_EQ(stats.warnings.fan_patches, 0u);
+  EXPECT_EQ(test::count_self_intersections(mesh, 10), 0u);
+}
+
 TEST(ClippedCreases, AShapeThatCannotBeCutAlongItsCreasesIsSaid) {
   // Two boxes touching along an edge are no 2-manifold: cut by a region, meshed smooth, with the warning.
   const Box box{Vec3(-1.5, -1.5, -1.5), Vec3(3.5, 3.5, 1.5)};
