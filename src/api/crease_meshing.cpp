@@ -59,12 +59,13 @@ CreasedMesh mesh_along_creases(const Surface& surface, const Settings& settings,
   const AngleRepair repair = repair_crease_angles(mesh, shape->face_functions, box);
   const TopologyReport topology = analyze_topology(mesh);
   if (topology.non_manifold_edges > 0 || topology.non_manifold_vertices > 0 || topology.boundary_edges > 0)
-    throw ShapeNotManifoldError("the mesh along the shape's creases is not a closed 2-manifold (" +
-                      std::to_string(topology.non_manifold_edges) + " non-manifold edges, " +
-                      std::to_string(topology.non_manifold_vertices) + " non-manifold vertices, " +
-                      std::to_string(topology.boundary_edges) +
-                      " boundary edges): solids touching along an edge or at a point, or a sheet of zero "
-                      "thickness; --creases off meshes it as a smooth surface");
+    throw ShapeNotManifoldError(
+        "the mesh along the shape's creases is not a closed 2-manifold (" +
+        std::to_string(topology.non_manifold_edges) + " non-manifold edges, " +
+        std::to_string(topology.non_manifold_vertices) + " non-manifold vertices, " +
+        std::to_string(topology.boundary_edges) +
+        " boundary edges): solids touching along an edge or at a point, or a sheet of zero "
+        "thickness; --creases off meshes it as a smooth surface");
   if (stats) {
     CreaseStats c;
     c.faces = shape->faces;

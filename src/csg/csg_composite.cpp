@@ -54,10 +54,10 @@ std::optional<CsgShape> analyse_csg(const Surface& surface, const Box& box, doub
   }
   if (search.graph.curves.empty()) return std::nullopt;
   if (!search.tangential_contacts.empty())
-    throw ShapeNotManifoldError("two faces of the shape touch tangentially near " +
-                      point_text(search.tangential_contacts.front()) +
-                      " without crossing: the shape is not a 2-manifold there (--creases off meshes it as a "
-                      "smooth surface)");
+    throw ShapeNotManifoldError(
+        "two faces of the shape touch tangentially near " + point_text(search.tangential_contacts.front()) +
+        " without crossing: the shape is not a 2-manifold there (--creases off meshes it as a "
+        "smooth surface)");
   CsgShape shape;
   shape.creases = search.graph.curves.size();
   shape.corners = search.graph.nodes.size();
