@@ -46,6 +46,9 @@ std::optional<Box> region_bounds(const ConvexRegion& region, const Box& far);
 /// origin (at least 1) about the origin: for a region with no surface box to judge it by (a formula).
 std::optional<Box> region_bounds(const ConvexRegion& region);
 
+/// The six half-spaces of `box` (unit normals out of it, lower then upper face per axis x, y, z).
+ConvexRegion box_planes(const Box& box);
+
 /// A rotated frame for the partition: azimuth about z, then elevation about the new y, then roll about
 /// the new x, in degrees. Frame coordinates y map to the user's x = R y with R = Rz(az) Ry(-el) Rx(roll),
 /// so the frame's x axis points at azimuth az and elevation el.

@@ -40,16 +40,8 @@ void put_on_plane(Vec3& p, const HalfSpace& h) {
 ConvexRegion cutting_planes(const Surface& surface, const Settings& settings, bool by_box) {
   ConvexRegion planes = settings.region;
   if (!by_box) return planes;
-  const Box box = meshing_box(surface, settings);
-  for (int axis = 0; axis < 3; ++axis) {
-    HalfSpace upper, lower;
-    (axis == 0 ? upper.a : axis == 1 ? upper.b : upper.c) = 1.0;
-    upper.d = -box.hi[axis];
-    (axis == 0 ? lower.a : axis == 1 ? lower.b : lower.c) = -1.0;
-    lower.d = box.lo[axis];
-    planes.push_back(upper);
-    planes.push_back(lower);
-  }
+  const ConvexRegion sides = box_planes(meshing_box(surface, settings));
+  planes.insert(planes.end(), sides.begin(), sides.end());
   return planes;
 }
 

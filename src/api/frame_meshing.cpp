@@ -17,11 +17,6 @@ ConvexRegion rotated(const ConvexRegion& region, const Mat3& r) {
   return out;
 }
 
-ConvexRegion box_planes(const Box& b) {
-  return {{-1, 0, 0, b.lo.x()}, {1, 0, 0, -b.hi.x()}, {0, -1, 0, b.lo.y()},
-          {0, 1, 0, -b.hi.y()}, {0, 0, -1, b.lo.z()}, {0, 0, 1, -b.hi.z()}};
-}
-
 bool leaves_box(const Mesh& mesh, const Box& box) {
   const double margin = 1e-9 * box.diagonal();
   for (const Vec3& p : mesh.positions)

@@ -100,4 +100,9 @@ Frame parse_frame(const std::string& text) {
   return Frame{v[0], v[1], v[2]};
 }
 
+ConvexRegion box_planes(const Box& box) {
+  return {{-1, 0, 0, box.lo.x()}, {1, 0, 0, -box.hi.x()}, {0, -1, 0, box.lo.y()},
+          {0, 1, 0, -box.hi.y()}, {0, 0, -1, box.lo.z()}, {0, 0, 1, -box.hi.z()}};
+}
+
 }  // namespace isopatch
