@@ -4,10 +4,14 @@
 #include <isopatch/error.hpp>
 
 #include <fcntl.h>
+#include <poll.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
@@ -157,18 +161,28 @@ void write_all(int fd, std::string_view bytes) {
   }
 }
 
-std::string read_all(int fd) {
-  std::string out;
+/// The child's answer, read until it closes the pipe; false when `wall_seconds` pass first.
+bool read_all(int fd, double wall_seconds, std::string& out) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wall_seconds);
   char buffer[1 << 16];
   for (;;) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left.count() <= 0) return false;
+    pollfd p{fd, POLLIN, 0};
+    const int ready = ::poll(&p, 1, static_cast<int>(std::min<std::int64_t>(left.count(), 1 << 30)));
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready < 0) return true;  // nothing more to read: the answer is judged as it is
+    if (ready == 0) continue;
     const ssize_t n = ::read(fd, buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return out;
+    if (n <= 0) return true;
     out.append(buffer, static_cast<std::size_t>(n));
   }
 }
 
 std::string describe(int status) {
+  if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU) return "it ran out of its processor time";
   if (WIFSIGNALED(status)) return "it stopped on signal " + std::to_string(WTERMSIG(status));
   if (WIFEXITED(status)) return "it exited with status " + std::to_string(WEXITSTATUS(status));
   return "it stopped";
@@ -176,8 +190,14 @@ std::string describe(int status) {
 
 }  // namespace
 
-SparseSamples read_in_child(const std::string& name, std::string& chosen,
+int reading_seconds(std::size_t file_bytes) {
+  constexpr double kMinimum = 2.0, kPerMegabyte = 10.0;
+  return static_cast<int>(std::ceil(kMinimum + kPerMegabyte * static_cast<double>(file_bytes) / 1e6));
+}
+
+SparseSamples read_in_child(const std::string& name, int cpu_seconds, std::string& chosen,
                             const std::function<SparseSamples(std::string&)>& read) {
+  const int seconds = std::max(cpu_seconds, 1);
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) throw IoError(name + ": cannot start a process to read the file");
   const pid_t pid = ::fork();
@@ -194,6 +214,11 @@ SparseSamples read_in_child(const std::string& name, std::string& chosen,
       ::dup2(null, STDOUT_FILENO);
       ::dup2(null, STDERR_FILENO);
     }
+    // A hostile file can hold OpenVDB in a loop for long (one of 80 KB read from a stream that had
+    // already failed, count after count, for 35 s; found by fuzz_vdb_reader): the kernel stops the
+    // child at its limit.
+    const rlimit cpu{static_cast<rlim_t>(seconds), static_cast<rlim_t>(seconds) + 1};
+    ::setrlimit(RLIMIT_CPU, &cpu);
     std::string answer;
     try {
       std::string grid;
@@ -210,12 +235,19 @@ SparseSamples read_in_child(const std::string& name, std::string& chosen,
     ::_exit(0);
   }
   ::close(fds[1]);
-  const std::string answer = read_all(fds[0]);
+  // The wall clock bounds a child that waits instead of computing (a lock held across the fork).
+  std::string answer;
+  const bool answered = read_all(fds[0], 4.0 * seconds, answer);
   ::close(fds[0]);
+  if (!answered) ::kill(pid, SIGKILL);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) throw IoError(name + ": lost the process reading the file");
   }
+  if (!answered || (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU))
+    throw IoError(name + ": the file is corrupt: OpenVDB did not finish reading it in " +
+                  std::to_string(answered ? seconds : 4 * seconds) + " s" +
+                  (answered ? " of processor time" : ""));
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw IoError(name + ": the file is corrupt: OpenVDB failed reading it (" + describe(status) + ")");
   return decode(answer, chosen, name);

@@ -13,13 +13,18 @@
 
 namespace isopatch::vdb {
 
+/// The processor seconds the child may spend on a file of `file_bytes`: 2 s and 10 s per megabyte
+/// (OpenVDB reads tens of megabytes a second; a hostile file of 80 KB kept it busy 35 s).
+int reading_seconds(std::size_t file_bytes);
+
 /// Runs `read` (which fills the chosen grid's name) in a child process and returns its samples, and
-/// the grid's name in `chosen`. An isopatch Error thrown by `read` is thrown here again, of the same
+/// the grid's name in `chosen`. The child may spend `cpu_seconds` (>= 1) of processor time and four
+/// times that on the wall clock. An isopatch Error thrown by `read` is thrown here again, of the same
 /// kind (InputError with its setting; any other kind as IoError) and message.
 /// \throw IoError("<name>: the file is corrupt: OpenVDB failed reading it (...)") when the child dies
-///        (a signal, an abort of a sanitizer) or its answer is malformed; IoError when no child can be
-///        started.
-SparseSamples read_in_child(const std::string& name, std::string& chosen,
+///        (a signal, an abort of a sanitizer) or its answer is malformed; IoError("... OpenVDB did not
+///        finish reading it in N s ...") past either limit; IoError when no child can be started.
+SparseSamples read_in_child(const std::string& name, int cpu_seconds, std::string& chosen,
                             const std::function<SparseSamples(std::string&)>& read);
 
 }  // namespace isopatch::vdb

@@ -239,7 +239,7 @@ SparseSamples decode_grid(std::string_view bytes, const std::string& grid, const
   // each grid from the offsets the pre-scan checked (a stream reader would take whatever follows a
   // corrupt grid for the next grid's name); a stream (one grid, the pre-scan sees to it) as a stream.
   const bool offsets = has_grid_offsets(bytes);
-  return read_in_child(name, chosen, [&](std::string& grid_name) {
+  return read_in_child(name, reading_seconds(bytes.size()), chosen, [&](std::string& grid_name) {
     return guarded(name, [&] {
       if (offsets) {
         const int fd = ::memfd_create("isopatch-vdb", 0);

@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -219,6 +220,48 @@ TEST(VdbSurface, RefusesWhatItCannotRead) {
   EXPECT_EQ(decode_vdb_surface(two, VdbSource{"b", 0.0, false})->name(), "<memory>:b");
   EXPECT_THROW(vdb_surface("/nonexistent/model.vdb"), IoError);
   EXPECT_TRUE(is_vdb_path("model.VDB") && !is_vdb_path("model.npy") && !is_vdb_path("vdb"));
+}
+
+/// `bytes` with the root node's tile count (entry 0) or child count (entry 1) of its first grid set to
+/// `count`: they follow the transform's type name, its five vectors, the buffer count and the
+/// background of a float grid.
+std::string with_root_count(std::string bytes, int entry, std::uint32_t count) {
+  const std::string map = "UniformScaleMap";
+  const std::size_t at =
+      bytes.find(map) + map.size() + 5 * 3 * sizeof(double) + 4 + sizeof(float) + 4 * entry;
+  EXPECT_LT(at + 4, bytes.size());
+  std::memcpy(bytes.data() + at, &count, sizeof count);
+  return bytes;
+}
+
+TEST(VdbSurface, RefusesARootNodeDeclaringMoreEntriesThanItsGridHoldsAtOnce) {
+  // OpenVDB reads a root node's entries one by one whatever is left of the stream: a corrupt count of a
+  // billion kept it busy for 35 s. The pre-scan refuses it before reading.
+  const std::string file = bytes_of({sphere(1.0f, {0.0f, 0.0f, 0.0f})});
+  const std::string stream = stream_bytes_of({sphere(1.0f, {0.0f, 0.0f, 0.0f})});
+  EXPECT_EQ(with_root_count(file, 1, 8), file);  // where the counts are: the sphere's 8 children
+  for (const std::string& good : {file, stream}) {
+    for (const int entry : {0, 1}) {
+      try {
+        decode_vdb_surface(with_root_count(good, entry, 1u << 30), {}, "bad.vdb");
+        ADD_FAILURE() << "accepted a count of 2^30 in entry " << entry;
+      } catch (const IoError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.vdb: the file is corrupt or truncated (its root node"),
+                  std::string::npos)
+            << e.what();
+      }
+    }
+  }
+}
+
+TEST(VdbSurface, ReadsAGridThatSharesAnotherGridsTree) {
+  // OpenVDB stores a grid sharing another's tree as an instance, without a tree of its own.
+  const auto a = sphere(1.0f, {0.0f, 0.0f, 0.0f}, "a");
+  const openvdb::GridBase::Ptr b = a->copyGrid();
+  b->setName("b");
+  const std::string bytes = bytes_of({a, b});
+  EXPECT_EQ(decode_vdb_surface(bytes, VdbSource{"b", 0.0, false})->value(Vec3(0.5, 0.1, 0.0)),
+            decode_vdb_surface(bytes, VdbSource{"a", 0.0, false})->value(Vec3(0.5, 0.1, 0.0)));
 }
 
 TEST(VdbSurface, InsideAboveTurnsTheSign) {
