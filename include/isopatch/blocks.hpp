@@ -16,6 +16,7 @@
 
 #include <isopatch/geometry.hpp>
 #include <isopatch/mesh.hpp>
+#include <isopatch/mesh_stats.hpp>
 #include <isopatch/settings.hpp>
 #include <isopatch/surface.hpp>
 
@@ -175,6 +176,49 @@ BlockBase block_base(const CreasedPieces& pieces, const Settings& settings);
 /// \throw as refine_block(CompositeModel, ...).
 BlockMesh refine_block(const CreasedPieces& pieces, const BasePatches& patches, const Settings& settings,
                        const Mesh& base, const BlockPlan& plan, int block);
+
+/// A lattice capped or shelled by a polyhedron (docs/lattices.md), or a sheet whose walls are, as blocks
+/// mesh it: its parts, each a smooth surface cut open by planes and closed by planar caps. Every part's
+/// cut is one or more surfaces (a sheet's walls), each refined in blocks like any surface with the
+/// planes as its region; the caps are made afterwards on one machine. Opaque; made by capped_pieces().
+struct CappedPieces;
+
+/// The parts of `surface` as one process meshes it along its caps (a capped solid: one; a shell: the
+/// outer polyhedron's caps and the hollows; a sheet: its walls', in order), or null when one process
+/// would not mesh it that way (not a formula of that form, creases off, another method, a region or
+/// cells given, g with creases of its own). Every process makes the same parts from the same settings.
+/// \throw SettingError for a frame (blocks take none); the errors of the crease analysis of g.
+std::shared_ptr<const CappedPieces> capped_pieces(const Surface& surface, const Settings& settings);
+
+/// How many parts `pieces` has.
+std::size_t capped_part_count(const CappedPieces& pieces);
+
+/// The cut surfaces to mesh in blocks, in order, as the part each belongs to: a part's cut is its
+/// smooth surface, or that surface's two walls when it is a sheet (four for a sheet of a sheet), in the
+/// order one process appends them; a shell's outer polyhedron has none (only caps).
+std::vector<std::size_t> capped_cut_parts(const CappedPieces& pieces);
+
+/// The base of cut `cut` (an index into capped_cut_parts()) and its level, as block_base(Surface) makes
+/// it with the cut's settings (the part's planes as the region; the box grown where the polyhedron
+/// reaches it).
+/// \throw InputError for a cut out of range; LimitError when the caps would exceed
+///        settings.max_vertices; the errors of block_base(Surface, ...).
+BlockBase block_base(const CappedPieces& pieces, std::size_t cut, const Settings& settings);
+
+/// refine_block() for cut `cut` (the cut's settings).
+/// \throw as block_base(CappedPieces, ...) and refine_block(Surface, ...).
+BlockMesh refine_block(const CappedPieces& pieces, std::size_t cut, const Settings& settings,
+                       const Mesh& base, const BlockPlan& plan, int block);
+
+/// The whole part: every part's cut (the meshes of its cut surfaces, `cuts`, one per entry of
+/// capped_cut_parts(), each assembled from its blocks, appended in order) closed by its caps, its
+/// narrow corners flipped and the last angle repair run, as one process closes its cut; the parts
+/// appended in order (a shell's hollows turned inside out). `stats` (optional) gets MeshStats::creases
+/// (caps, crease vertices) and the stage "caps".
+/// \throw InputError when `cuts` does not have one mesh per cut; CreaseError when a part's result is not
+///        the closed 2-manifold expected (as one process).
+Mesh close_capped(const CappedPieces& pieces, std::vector<Mesh> cuts, const Settings& settings,
+                  MeshStats* stats = nullptr);
 
 /// The whole output from every block's mesh (in any order; each block once), checking that every seam
 /// copy equals its owner's vertex bit for bit.

@@ -75,6 +75,8 @@ def job_hash(job: Dict[str, Any]) -> str:
     }
     if job.get("split", "blocks") != "blocks":
         described["split"] = job["split"]  # tiles by planes (the hashes of blocked runs stay as they were)
+    if "part" in job:
+        described["part"] = job["part"]  # one part's cut of a capped lattice
     text = json.dumps(described, sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
@@ -122,7 +124,7 @@ def job_state(job: Dict[str, Any]) -> Any:
         base = _load(base_path(job))
         patches = {k: base[k] for k in _PATCH_KEYS} if "triangle_patch" in base else None
         state = _isopatch.BlockJob(job["source"], job["box"], base["positions"], base["triangles"], job["level"],
-                                   job["blocks"], patches)
+                                   job["blocks"], patches, part=job.get("part", -1))
         _STATE.clear()
         _STATE[job["hash"]] = state
     return state
@@ -132,7 +134,7 @@ def make_base(job: Dict[str, Any]) -> int:
     """Makes the job's base file (once; reused when it exists) and returns its refinement level."""
     path = base_path(job)
     if not os.path.exists(path):
-        base = _isopatch.block_base(job["source"], job["box"], job["options"])
+        base = _isopatch.block_base(job["source"], job["box"], job["options"], part=job.get("part", -1))
         arrays = {"positions": base["positions"], "triangles": base["triangles"], "level": np.array(base["level"])}
         arrays.update(base.get("patches", {}))
         _write_npz(path, arrays)

@@ -18,7 +18,7 @@ import sys
 import time
 from typing import Any, Callable, Dict, List, Literal, Optional, Sequence, Tuple, Union
 
-from . import _blocks, _prefilter, _tiles
+from . import _blocks, _capped, _isopatch, _prefilter, _tiles
 from ._api import BoxLike, _box
 from ._errors import (CreaseError, Error, EvaluationError, InputError, IoError, LimitError, NoSurfaceError,
                       ParseError, SingularSurfaceError, UnknownSurfaceError)
@@ -32,13 +32,15 @@ _OPTIONS = ("edge_length", "quality", "refine", "remesh", "resolution", "max_eva
 
 
 def _job(source: Dict[str, Any], box: Any, options: Dict[str, Any], tiles: int, out_dir: str,
-         split: str = "blocks") -> Dict[str, Any]:
+         split: str = "blocks", part: Optional[int] = None) -> Dict[str, Any]:
     if not isinstance(tiles, int) or tiles < 1:
         raise InputError("tiles must be a whole number of at least 1", "tiles")
     os.makedirs(out_dir, exist_ok=True)
     job = {"source": source, "box": box, "options": options, "blocks": tiles, "out_dir": os.path.abspath(out_dir)}
     if split != "blocks":
         job["split"] = split
+    if part is not None:
+        job["part"] = part
     job["hash"] = _blocks.job_hash(job)
     return job
 
@@ -169,21 +171,13 @@ def mesh_blocks(
         if split == "planes":
             return _run_planes(client, source, _box(box), opts, tiles, out_dir, output, _test, phases, start,
                                _prefilter_extra(prefiltered))
-        while True:
-            job = _job(source, _box(box), opts, tiles, out_dir)
-            job.update(_test or {})
-            mark = time.perf_counter()
-            job["level"] = _blocks.make_base(job)
-            job["plan"] = _blocks.job_state(job).counts()
-            phases["base"] += time.perf_counter() - mark
-            mark = time.perf_counter()
-            summaries = _run_blocks(client, job)
-            phases["blocks"] += time.perf_counter() - mark
-            if _all_kept(summaries, job["level"], "block", "mesh it in one process, whose level-1 mesher has "
-                                                             "the clean-up a block lacks"):
-                break
-            # As one process does: a refinement that fails its guard is made again at half the level.
-            opts["refine"] = job["level"] // 2
+        if volume is None and split == "blocks":
+            capped = _isopatch.capped_parts(source, _box(box), opts)
+            if capped is not None:
+                return _capped.run_capped(client, source, _box(box), opts, tiles, out_dir, output, capped,
+                                          lambda cut: _refine_job(client, source, _box(box), opts, tiles, out_dir,
+                                                                  _test, phases, cut), phases, start)
+        job, summaries = _refine_job(client, source, _box(box), opts, tiles, out_dir, _test, phases)
         plan = job["plan"]
         mark = time.perf_counter()
         extra: Dict[str, Any] = {"seam_copies_checked": _blocks.check_seams(job, plan)}
@@ -203,6 +197,29 @@ def mesh_blocks(
         if cluster is not None:
             client.close()
             cluster.close()
+
+
+def _refine_job(client: Any, source: Dict[str, Any], box: Any, opts: Dict[str, Any], tiles: int, out_dir: str,
+                test: Optional[Dict[str, Any]], phases: Dict[str, float],
+                part: Optional[int] = None) -> Tuple[Dict[str, Any], List[Dict[str, Any]]]:
+    """One surface's base and blocks (cut surface `part` of a capped lattice): the job and its
+    blocks' summaries. A refinement that fails its guard is made again at half the level, as one
+    process does."""
+    opts = dict(opts)
+    while True:
+        job = _job(source, box, opts, tiles, out_dir, part=part)
+        job.update(test or {})
+        mark = time.perf_counter()
+        job["level"] = _blocks.make_base(job)
+        job["plan"] = _blocks.job_state(job).counts()
+        phases["base"] += time.perf_counter() - mark
+        mark = time.perf_counter()
+        summaries = _run_blocks(client, job)
+        phases["blocks"] += time.perf_counter() - mark
+        if _all_kept(summaries, job["level"], "block", "mesh it in one process, whose level-1 mesher has "
+                                                         "the clean-up a block lacks"):
+            return job, summaries
+        opts["refine"] = job["level"] // 2
 
 
 def _write_output(output: str, ply: Callable[[], None], other: Callable[[], None]) -> Dict[str, Any]:

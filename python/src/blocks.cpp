@@ -100,12 +100,73 @@ BasePatches to_patches(const py::dict& arrays) {
   return out;
 }
 
-py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& options) {
+/// A capped, shelled or sheet lattice's parts (capped_pieces()): {"parts": how many, "cut_parts": the
+/// part of every cut surface to mesh in blocks}; None for any other surface.
+py::object capped_parts(const py::dict& source, const BoxArg& box, const py::dict& options) {
+  Settings settings = to_settings(options);
+  settings.box = to_box(box);
+  const Source named(source);
+  if (named.composite() || !named.volume.empty()) return py::none();
+  std::size_t parts = 0;
+  const std::optional<std::vector<std::size_t>> cuts = run_released([&](const std::atomic<bool>* cancel) {
+    settings.cancel = cancel;
+    const auto pieces = capped_pieces(*named.surface(settings.box), settings);
+    if (!pieces) return std::optional<std::vector<std::size_t>>();
+    parts = capped_part_count(*pieces);
+    return std::optional<std::vector<std::size_t>>(capped_cut_parts(*pieces));
+  });
+  if (!cuts) return py::none();
+  py::dict out;
+  out["parts"] = parts;
+  out["cut_parts"] = *cuts;
+  return out;
+}
+
+/// The capped pieces of the source's formula. \throw InputError when it is not a capped lattice.
+std::shared_ptr<const CappedPieces> capped_of(const Source& named, const Settings& settings) {
+  auto pieces = capped_pieces(*named.surface(settings.box), settings);
+  if (!pieces)
+    throw InputError("the job names a part of a capped lattice but the formula is not one", "part");
+  return pieces;
+}
+
+/// The capped lattice closed from its cut surfaces' meshes (`cuts`: (positions, triangles) per cut
+/// surface): close_capped() as arrays, with the caps' counts.
+py::dict close_capped_arrays(const py::dict& source, const BoxArg& box, const py::dict& options,
+                             const py::list& cuts) {
+  Settings settings = to_settings(options);
+  settings.box = to_box(box);
+  const Source named(source);
+  std::vector<Mesh> meshes;
+  for (const py::handle c : cuts) {
+    const auto pair = c.cast<py::tuple>();
+    if (pair.size() != 2) throw InputError("a part's cut must be (positions, triangles)", "parts");
+    meshes.push_back(to_mesh(pair[0].cast<Positions>(), pair[1].cast<Indices>()));
+  }
+  MeshStats stats;
+  const Mesh mesh = run_released([&](const std::atomic<bool>* cancel) {
+    settings.cancel = cancel;
+    return close_capped(*capped_of(named, settings), std::move(meshes), settings, &stats);
+  });
+  std::vector<std::uint32_t> flat;
+  flat.reserve(mesh.triangles.size() * 3);
+  for (const Triangle& t : mesh.triangles) flat.insert(flat.end(), t.begin(), t.end());
+  py::dict out;
+  out["positions"] = vec3_array(mesh.positions);
+  out["triangles"] = rows(flat, 3);
+  out["caps"] = stats.creases ? stats.creases->caps : 0;
+  out["crease_vertices"] = stats.creases ? stats.creases->crease_vertices : 0;
+  out["repair_moves"] = stats.creases ? stats.creases->repair_moves : 0;
+  return out;
+}
+
+py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& options, int part) {
   Settings settings = to_settings(options);
   settings.box = to_box(box);
   const Source named(source);
   BlockBase base = run_released([&](const std::atomic<bool>* cancel) {
     settings.cancel = cancel;
+    if (part >= 0) return block_base(*capped_of(named, settings), static_cast<std::size_t>(part), settings);
     if (named.composite()) return block_base(named.read_model(), settings);
     const SurfacePtr surface = named.surface(settings.box);
     if (const auto creased = creased_pieces(*surface, settings)) return block_base(*creased, settings);
@@ -127,8 +188,8 @@ class BlockJob {
  public:
   /// `patches`: a composite base's (patches_dict()), None for a surface of one function.
   BlockJob(const py::dict& source, const BoxArg& box, const Positions& positions, const Indices& triangles,
-           int level, int blocks, const py::object& patches)
-      : source_(source), box_(to_box(box)), base_(to_mesh(positions, triangles)) {
+           int level, int blocks, const py::object& patches, int part)
+      : source_(source), box_(to_box(box)), base_(to_mesh(positions, triangles)), part_(part) {
     // A composite's base has patches; a formula's has them when it is meshed along its creases.
     if (patches.is_none() ? source_.composite() : !source_.volume.empty())
       throw InputError(
@@ -157,6 +218,9 @@ class BlockJob {
     settings.box = box_;
     BlockMesh mesh = run_released([&](const std::atomic<bool>* cancel) {
       settings.cancel = cancel;
+      if (part_ >= 0)
+        return refine_block(*capped(settings), static_cast<std::size_t>(part_), settings, base_, plan_,
+                            block);
       if (source_.composite()) return refine_block(*model(), patches_, settings, base_, plan_, block);
       if (!patches_.triangle_patch.empty())
         return refine_block(*creased(settings), patches_, settings, base_, plan_, block);
@@ -186,6 +250,15 @@ class BlockJob {
   std::optional<CompositeModel> model_;
 
   std::shared_ptr<const CreasedPieces> creased_;
+  int part_ = -1;  ///< the part of a capped lattice this job meshes the cut of (-1: none)
+  std::shared_ptr<const CappedPieces> capped_;
+
+  /// The capped lattice's parts (made once, as creased()).
+  std::shared_ptr<const CappedPieces> capped(const Settings& settings) {
+    const std::lock_guard<std::mutex> lock(surface_mutex_);
+    if (!capped_) capped_ = capped_of(source_, settings);
+    return capped_;
+  }
 
   /// The formula's crease analysis (made once: the job's settings are the same for every block; the
   /// level a retry halves does not enter it). \throw InputError when the formula has no creases now.
@@ -238,12 +311,15 @@ void prefilter(py::array_t<double, py::array::c_style> samples) {
 void bind_blocks(py::module_& m) {
   m.attr("PREFILTER_HALO") = kPrefilterHalo;
   m.def("prefilter", &prefilter, py::arg("samples").noconvert());
-  m.def("block_base", &base_of, py::arg("source"), py::arg("box"), py::arg("options"));
+  m.def("block_base", &base_of, py::arg("source"), py::arg("box"), py::arg("options"), py::arg("part") = -1);
+  m.def("capped_parts", &capped_parts, py::arg("source"), py::arg("box"), py::arg("options"));
+  m.def("close_capped", &close_capped_arrays, py::arg("source"), py::arg("box"), py::arg("options"),
+        py::arg("cuts"));
   py::class_<BlockJob>(m, "BlockJob")
       .def(py::init<const py::dict&, const BoxArg&, const Positions&, const Indices&, int, int,
-                    const py::object&>(),
+                    const py::object&, int>(),
            py::arg("source"), py::arg("box"), py::arg("positions"), py::arg("triangles"), py::arg("level"),
-           py::arg("blocks"), py::arg("patches") = py::none())
+           py::arg("blocks"), py::arg("patches") = py::none(), py::arg("part") = -1)
       .def("counts", &BlockJob::counts)
       .def("refine", &BlockJob::refine, py::arg("options"), py::arg("block"));
   m.def("write_arrays", &write_arrays, py::arg("positions"), py::arg("triangles"), py::arg("path"));

@@ -123,6 +123,10 @@ class TileJob {
     const TilePlan plan = run_released([&](const std::atomic<bool>* cancel) {
       settings.cancel = cancel;
       const SurfacePtr f = surface();
+      if (source_.volume.empty() && capped_pieces(*f, settings))
+        throw SettingError("split",
+                           "a lattice capped by planes is meshed in blocks of its cut surfaces, closed by "
+                           "its caps (--split blocks), not in tiles by planes");
       if (source_.volume.empty() && creased_pieces(*f, settings))
         throw SettingError("creases",
                            "a formula with exact creases is meshed in blocks of its base (or with "

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <utility>
+#include <vector>
 
 #include "api/crease_meshing.hpp"
 #include "api/cut_and_caps.hpp"
@@ -29,8 +30,8 @@ bool strictly_inside(const ConvexRegion& inner, const ConvexRegion& outer, const
 /// A lattice shelled by its box (split_shelled_shape): the outer polyhedron's caps, and the hollows
 /// inside the inner one (the capped solid -g < 0 there) turned inside out; nullopt when f is no such
 /// shape, a region or cells are given, or the inner polyhedron is not clear of the outer one.
-std::optional<Mesh> mesh_shelled(const Surface& surface, const Settings& settings, const Box& box,
-                                 MeshStats* stats, std::chrono::steady_clock::time_point start) {
+std::optional<std::vector<CappedPart>> shelled_parts(const Surface& surface, const Settings& settings,
+                                                     const Box& box) {
   if (!settings.region.empty()) return std::nullopt;
   const std::optional<ShelledShape> shape = split_shelled_shape(surface, box);
   if (!shape || !polyhedron_inside(shape->outer, box, kCapOnPlane * box.diagonal()) ||
@@ -40,39 +41,23 @@ std::optional<Mesh> mesh_shelled(const Surface& surface, const Settings& setting
   plain.box = box;
   plain.frame.reset();
   if (analyse_creases(*shape->hollow, plain)) return std::nullopt;
-  const double analysis = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  MeshStats outer_stats;
-  Mesh mesh =
-      mesh_cut_and_caps({nullptr, shape->outer, shape->outer.size(), true, box}, settings, &outer_stats, 0.0);
-  const Mesh hollows = mesh_cut_and_caps({shape->hollow, shape->inner, shape->inner.size(), true, box},
-                                         settings, stats, analysis);
-  const auto offset = static_cast<std::uint32_t>(mesh.positions.size());
-  mesh.positions.insert(mesh.positions.end(), hollows.positions.begin(), hollows.positions.end());
-  for (const Triangle& t : hollows.triangles)
-    mesh.triangles.push_back({t[0] + offset, t[2] + offset, t[1] + offset});
-  if (stats && stats->creases && outer_stats.creases) {
-    stats->creases->caps += outer_stats.creases->caps;
-    stats->creases->faces += outer_stats.creases->faces;
-    stats->creases->pieces += outer_stats.creases->pieces;
-    stats->creases->crease_vertices += outer_stats.creases->crease_vertices;
-    stats->vertices = mesh.vertex_count();
-    stats->triangles = mesh.triangle_count();
-  }
-  return mesh;
+  std::vector<CappedPart> parts;
+  parts.push_back({nullptr, shape->outer, shape->outer.size(), true, box, false});
+  parts.push_back({shape->hollow, shape->inner, shape->inner.size(), true, box, true});
+  return parts;
 }
 
 }  // namespace
 
-std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats) {
+std::optional<std::vector<CappedPart>> split_capped_parts(const Surface& surface, const Settings& settings) {
   if (settings.creases == Creases::Off || settings.method != Method::Projection || !settings.cells.empty() ||
       !surface.expression())
     return std::nullopt;
-  const auto start = std::chrono::steady_clock::now();
   // A region decides the box when none is given (as for any surface: convex_meshing.hpp).
   const Box box =
       settings.box ? *settings.box : convex_meshing_box(surface, settings).value_or(surface.box());
   std::optional<CappedShape> shape = split_capped_shape(surface, box);
-  if (!shape) return mesh_shelled(surface, settings, box, stats, start);
+  if (!shape) return shelled_parts(surface, settings, box);
   // The part's planes, then the region's (unit normals): the region cuts the part open like the box.
   const std::size_t capped = shape->planes.size();
   ConvexRegion planes = shape->planes;
@@ -94,8 +79,38 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
   plain.region.clear();
   // g with creases of its own (struts joined by min, say) is a shape for the general crease path.
   if (smooth && analyse_creases(*smooth, plain)) return std::nullopt;
+  return std::vector<CappedPart>{{smooth, planes, capped, closed, box, false}};
+}
+
+Mesh append_capped_part(Mesh mesh, const Mesh& part, bool reversed) {
+  const auto offset = static_cast<std::uint32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), part.positions.begin(), part.positions.end());
+  for (const Triangle& t : part.triangles)
+    mesh.triangles.push_back(reversed ? Triangle{t[0] + offset, t[2] + offset, t[1] + offset}
+                                      : Triangle{t[0] + offset, t[1] + offset, t[2] + offset});
+  return mesh;
+}
+
+std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<std::vector<CappedPart>> parts = split_capped_parts(surface, settings);
+  if (!parts) return std::nullopt;
   const double analysis = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return mesh_cut_and_caps({smooth, planes, capped, closed, box}, settings, stats, analysis);
+  if (parts->size() == 1) return mesh_cut_and_caps(parts->front(), settings, stats, analysis);
+  // A shell: the outer polyhedron's caps (their statistics added), then the hollows (the run's own).
+  MeshStats outer_stats;
+  Mesh mesh = mesh_cut_and_caps((*parts)[0], settings, &outer_stats, 0.0);
+  mesh = append_capped_part(std::move(mesh), mesh_cut_and_caps((*parts)[1], settings, stats, analysis),
+                            (*parts)[1].reversed);
+  if (stats && stats->creases && outer_stats.creases) {
+    stats->creases->caps += outer_stats.creases->caps;
+    stats->creases->faces += outer_stats.creases->faces;
+    stats->creases->pieces += outer_stats.creases->pieces;
+    stats->creases->crease_vertices += outer_stats.creases->crease_vertices;
+    stats->vertices = mesh.vertex_count();
+    stats->triangles = mesh.triangle_count();
+  }
+  return mesh;
 }
 
 }  // namespace isopatch

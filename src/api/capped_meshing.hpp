@@ -11,6 +11,9 @@
 #include <isopatch/surface.hpp>
 
 #include <optional>
+#include <vector>
+
+#include "api/cut_and_caps.hpp"
 
 namespace isopatch {
 
@@ -27,5 +30,15 @@ namespace isopatch {
 /// A lattice shelled by its box (csg/capped_shape.hpp ShelledShape) is meshed here too: the outer
 /// polyhedron's caps and the hollows inside the inner one, closed and outward.
 std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats);
+
+/// The parts mesh_capped_shape() meshes `surface` as (one for a capped solid; for a shell, the outer
+/// polyhedron's caps, then the hollows, `reversed`), or nullopt under the same conditions. Each is
+/// meshed by mesh_cut_and_caps(), or in blocks: its cut with cut_settings(), closed by
+/// close_cut_with_caps(). Makes the crease analysis of g (nothing is meshed).
+/// \throw the errors of that analysis (CreaseError, EvaluationError).
+std::optional<std::vector<CappedPart>> split_capped_parts(const Surface& surface, const Settings& settings);
+
+/// `part` appended to `mesh` (its numbers shifted), turned inside out when `reversed`.
+Mesh append_capped_part(Mesh mesh, const Mesh& part, bool reversed);
 
 }  // namespace isopatch

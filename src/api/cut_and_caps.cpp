@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "api/crease_meshing.hpp"
@@ -65,27 +66,45 @@ bool polyhedron_meets(const ConvexRegion& planes, std::size_t capped, const Box&
   return false;
 }
 
-Mesh mesh_cut_and_caps(const CappedPart& part, const Settings& settings, MeshStats* stats, double analysis) {
-  const SurfacePtr& smooth = part.smooth;
-  const ConvexRegion& planes = part.planes;
-  const std::size_t capped = part.capped;
+Settings cut_settings(const CappedPart& part, const Settings& settings) {
   const Box& box = part.box;
-  const bool closed = part.closed;
-  const ConvexRegion own(planes.begin(), planes.begin() + static_cast<std::ptrdiff_t>(capped));
+  const std::size_t capped = part.capped;
+  const ConvexRegion own(part.planes.begin(), part.planes.begin() + static_cast<std::ptrdiff_t>(capped));
   Settings open = settings;
   open.box = box;
   // The planes meet g = 0 inside the box: where a plane lies on a face of the box (a part meshed in its
   // own box), the cut is made in a box grown by two edges so that the box's faces cut nothing; the edge
   // length stays that of the given box.
   const double edge = default_edge_length(settings, box);
-  check_cap_size(own, box, edge, settings.max_vertices);
-  if (closed && !polyhedron_inside(own, box, -2.0 * edge)) {
+  if (part.closed && !polyhedron_inside(own, box, -2.0 * edge)) {
     if (!settings.edge_length) open.edge_length = edge;
     open.box = Box{box.lo - Vec3::Constant(2.0 * edge), box.hi + Vec3::Constant(2.0 * edge)};
   }
-  open.region = planes;
+  open.region = part.planes;
   open.creases = Creases::Off;
-  Mesh mesh = smooth ? mesh_surface(*smooth, open, stats) : Mesh{};
+  return open;
+}
+
+void check_caps_fit(const CappedPart& part, const Settings& settings) {
+  const ConvexRegion own(part.planes.begin(), part.planes.begin() + static_cast<std::ptrdiff_t>(part.capped));
+  check_cap_size(own, part.box, default_edge_length(settings, part.box), settings.max_vertices);
+}
+
+Mesh mesh_cut_and_caps(const CappedPart& part, const Settings& settings, MeshStats* stats, double analysis) {
+  check_caps_fit(part, settings);
+  Mesh mesh = part.smooth ? mesh_surface(*part.smooth, cut_settings(part, settings), stats) : Mesh{};
+  return close_cut_with_caps(std::move(mesh), part, settings, stats, analysis);
+}
+
+Mesh close_cut_with_caps(Mesh mesh, const CappedPart& part, const Settings& settings, MeshStats* stats,
+                         double analysis) {
+  const SurfacePtr& smooth = part.smooth;
+  const ConvexRegion& planes = part.planes;
+  const std::size_t capped = part.capped;
+  const Box& box = part.box;
+  const ConvexRegion own(planes.begin(), planes.begin() + static_cast<std::ptrdiff_t>(capped));
+  const Settings open = cut_settings(part, settings);
+  const double edge = default_edge_length(settings, box);
   const auto caps_start = std::chrono::steady_clock::now();
   const Box& cut_box = *open.box;
   std::vector<SurfacePtr> faces;

@@ -26,6 +26,7 @@ struct CappedPart {
   std::size_t capped = 0;
   bool closed = true;
   Box box;
+  bool reversed = false;  ///< a shell's hollows: the mesh's orientation turned inside out
 };
 
 /// Whether the polyhedron of `planes` is bounded, has a face, and lies in `box` (to `margin`; a negative
@@ -34,6 +35,20 @@ bool polyhedron_inside(const ConvexRegion& planes, const Box& box, double margin
 
 /// Whether one of the first `capped` planes bounds a face of the polyhedron of `planes` inside `box`.
 bool polyhedron_meets(const ConvexRegion& planes, std::size_t capped, const Box& box);
+
+/// The settings `part.smooth` is meshed with for its cut: the planes as the region, creases off, and
+/// where the part's polyhedron reaches a face of the box, the box grown by two edges (the edge length
+/// kept at the given box's).
+Settings cut_settings(const CappedPart& part, const Settings& settings);
+
+/// \throw LimitError("max_vertices") when the caps could hold more vertices than settings.max_vertices.
+void check_caps_fit(const CappedPart& part, const Settings& settings);
+
+/// `cut` (g = 0 meshed with cut_settings(), by one process or in blocks; empty for a polyhedron alone)
+/// closed with the caps, the narrow corners' flips and the last angle repair, as mesh_cut_and_caps().
+/// \throw as mesh_cut_and_caps() (CreaseError when the result is not the 2-manifold expected).
+Mesh close_cut_with_caps(Mesh cut, const CappedPart& part, const Settings& settings, MeshStats* stats,
+                         double analysis_seconds);
 
 /// The part's mesh: closed and outward when `closed`, else open exactly on the box's faces and the
 /// region's planes; `stats` gets the smooth run's statistics, MeshStats::creases (`analysis_seconds`

@@ -44,20 +44,28 @@ std::string where(const Vec3& p) {
   return "(" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " + std::to_string(p.z()) + ")";
 }
 
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (static_cast<std::uint64_t>(a) << 32) | b;
-}
-
-/// The mesh's boundary edges, directed as their one triangle runs them, in triangle order.
+/// The mesh's boundary edges, directed as their one triangle runs them, in triangle order: the directed
+/// edges (a, b) without a directed edge (b, a), found in b's outgoing edges (each vertex's targets in
+/// one array: two passes over the triangles, no hashing, for the millions of a large part).
 std::vector<Edge> boundary_edges(const Mesh& mesh) {
-  std::unordered_set<std::uint64_t> directed;
+  std::vector<std::uint64_t> first(mesh.positions.size() + 1, 0);
   for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) directed.insert(edge_key(t[static_cast<std::size_t>(k)], t[(k + 1) % 3]));
+    for (const std::uint32_t v : t) ++first[v + 1];
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) first[v + 1] += first[v];
+  std::vector<std::uint32_t> targets(first.back());
+  std::vector<std::uint64_t> filled(first.begin(), first.end() - 1);
+  for (const Triangle& t : mesh.triangles)
+    for (std::size_t k = 0; k < 3; ++k) targets[filled[t[k]]++] = t[(k + 1) % 3];
+  const auto has_edge = [&](std::uint32_t a, std::uint32_t b) {
+    return std::find(targets.begin() + static_cast<std::ptrdiff_t>(first[a]),
+                     targets.begin() + static_cast<std::ptrdiff_t>(first[a + 1]),
+                     b) != targets.begin() + static_cast<std::ptrdiff_t>(first[a + 1]);
+  };
   std::vector<Edge> out;
   for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t a = t[static_cast<std::size_t>(k)], b = t[(k + 1) % 3];
-      if (!directed.count(edge_key(b, a))) out.push_back({a, b});
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+      if (!has_edge(b, a)) out.push_back({a, b});
     }
   return out;
 }

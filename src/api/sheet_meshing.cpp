@@ -93,10 +93,16 @@ void append(Mesh& a, Mesh&& b) {
 
 }  // namespace
 
-std::optional<Mesh> mesh_sheet(const Surface& f, const Settings& settings, MeshStats* stats,
-                               const WallMesher& mesh_wall) {
+std::optional<std::array<SurfacePtr, 2>> sheet_walls(const Surface& f, const Settings& settings) {
   if (settings.method != Method::Projection) return std::nullopt;
   const std::optional<SheetShape> sheet = split_sheet_shape(f, checked_domain(f, settings));
+  if (!sheet) return std::nullopt;
+  return sheet->walls;
+}
+
+std::optional<Mesh> mesh_sheet(const Surface& f, const Settings& settings, MeshStats* stats,
+                               const WallMesher& mesh_wall) {
+  const std::optional<std::array<SurfacePtr, 2>> sheet = sheet_walls(f, settings);
   if (!sheet) return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
   const MeshStats before = stats ? *stats : MeshStats{};
@@ -104,7 +110,7 @@ std::optional<Mesh> mesh_sheet(const Surface& f, const Settings& settings, MeshS
   MeshStats total = before;
   std::size_t walls = 0, surfaces = 0;
   std::exception_ptr no_surface;
-  for (const SurfacePtr& wall : sheet->walls) {
+  for (const SurfacePtr& wall : *sheet) {
     // The second wall gets what the first left of the run's budgets.
     Settings s = settings;
     if (settings.max_vertices > 0) {

@@ -9,6 +9,7 @@
 #include <isopatch/settings.hpp>
 #include <isopatch/surface.hpp>
 
+#include <array>
 #include <functional>
 #include <optional>
 
@@ -25,6 +26,10 @@ using WallMesher = std::function<Mesh(const Surface&, const Settings&, MeshStats
 /// cross the domain is left out. `stats` (may be null) gets both runs' counts added, stage times
 /// merged, and `sheet` set. Returns nullopt when `f` is not such a sheet.
 /// \throw NoSurfaceError when neither wall crosses the domain; whatever `mesh_wall` throws otherwise.
+/// The two walls mesh_sheet() meshes `f` as (split_sheet_shape() over the box, or every rotation of it
+/// in a frame), or nullopt when f is not such a sheet there or the method is not the projection.
+std::optional<std::array<SurfacePtr, 2>> sheet_walls(const Surface& f, const Settings& settings);
+
 std::optional<Mesh> mesh_sheet(const Surface& f, const Settings& settings, MeshStats* stats,
                                const WallMesher& mesh_wall);
 
