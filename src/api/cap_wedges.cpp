@@ -29,16 +29,23 @@ double angle_at(const Vec3& at, const Vec3& a, const Vec3& b) {
 
 class Corners {
  public:
+  /// Only the held vertices and their neighbours get their triangles listed (every flip and move stays
+  /// among them): a cut of millions of vertices holds a few percent of them.
   Corners(Mesh& cap, const Surface& surface, const std::vector<bool>& held, double tolerance)
-      : cap_(cap), f_(surface), held_(held), tolerance_(tolerance), around_(cap.positions.size()) {
+      : cap_(cap), f_(surface), held_(held), tolerance_(tolerance), slot_(cap.positions.size(), kNoSlot) {
+    for (const Triangle& t : cap.triangles)
+      if (held[t[0]] || held[t[1]] || held[t[2]])
+        for (std::uint32_t v : t)
+          if (slot_[v] == kNoSlot) slot_[v] = static_cast<std::uint32_t>(sets_.size()), sets_.emplace_back();
     for (std::size_t t = 0; t < cap.triangles.size(); ++t)
-      for (std::uint32_t v : cap.triangles[t]) around_[v].insert(t);
+      for (std::uint32_t v : cap.triangles[t])
+        if (slot_[v] != kNoSlot) sets_[slot_[v]].insert(t);
   }
 
   void open(double narrow) {
     std::set<std::uint32_t> freed;
     for (std::uint32_t v = 0; v < cap_.positions.size(); ++v) {
-      if (!held_[v] || around_[v].size() < 2) continue;
+      if (!held_[v] || slot_[v] == kNoSlot || around(v).size() < 2) continue;
       const double angle = span(v);
       if (angle >= narrow) continue;
       // The triangles the corner's angle holds at about 60 degrees each.
@@ -46,10 +53,10 @@ class Corners {
       // Flip the inner edges at v while one's quadrilateral is convex; where none is, relax the free
       // vertices at v first (a vertex just inside the line of v's neighbours makes its quadrilateral
       // concave).
-      for (int attempt = 0; attempt < kFlipAttempts && around_[v].size() > want; ++attempt) {
-        for (bool flipped = true; flipped && around_[v].size() > want;) {
+      for (int attempt = 0; attempt < kFlipAttempts && around(v).size() > want; ++attempt) {
+        for (bool flipped = true; flipped && around(v).size() > want;) {
           flipped = false;
-          for (std::size_t t : std::set<std::size_t>(around_[v]))
+          for (std::size_t t : std::set<std::size_t>(around(v)))
             if (flip_next_edge(v, t, freed)) {
               flipped = true;
               break;
@@ -67,7 +74,13 @@ class Corners {
   Sampler f_;
   const std::vector<bool>& held_;
   double tolerance_;
-  std::vector<std::set<std::size_t>> around_;
+  static constexpr std::uint32_t kNoSlot = 0xffffffffu;
+  std::vector<std::uint32_t> slot_;          ///< per vertex, its entry in sets_ (kNoSlot: none)
+  std::vector<std::set<std::size_t>> sets_;  ///< the triangles at a held vertex or a neighbour of one
+
+  /// The triangles at v. \pre v is held or a neighbour of a held vertex (where every use lies).
+  std::set<std::size_t>& around(std::uint32_t v) { return sets_[slot_[v]]; }
+  const std::set<std::size_t>& around(std::uint32_t v) const { return sets_[slot_[v]]; }
 
   const Vec3& at(std::uint32_t v) const { return cap_.positions[v]; }
   /// Twice the triangle's area about grad f at its centroid: > 0 when it faces along the surface.
@@ -79,7 +92,7 @@ class Corners {
   /// The angle the cap spans at v (its triangles' angles there, summed).
   double span(std::uint32_t v) const {
     double sum = 0.0;
-    for (std::size_t t : around_[v]) {
+    for (std::size_t t : around(v)) {
       const Triangle& tri = cap_.triangles[t];
       const int k = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
       sum += angle_at(at(v), at(tri[(k + 1) % 3]), at(tri[(k + 2) % 3]));
@@ -94,22 +107,22 @@ class Corners {
     const int k = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
     const std::uint32_t a = tri[(k + 1) % 3], w = tri[(k + 2) % 3];
     if (held_[w]) return false;
-    for (std::size_t u : around_[v]) {
-      if (u == t || !around_[w].count(u)) continue;
+    for (std::size_t u : around(v)) {
+      if (u == t || !around(w).count(u)) continue;
       const Triangle other = cap_.triangles[u];
       const int j = other[0] == v ? 0 : (other[1] == v ? 1 : 2);
       if (other[(j + 1) % 3] != w) continue;
       const std::uint32_t b = other[(j + 2) % 3];
       if (!(area(v, a, b) > 0.0)) return false;
       if (!(area(a, w, b) > 0.0) && !move_beyond(w, v, a, b)) return false;
-      for (std::size_t s : around_[a])
-        if (around_[b].count(s)) return false;  // a - b is an edge already
+      for (std::size_t s : around(a))
+        if (around(b).count(s)) return false;  // a - b is an edge already
       cap_.triangles[t] = {v, a, b};
       cap_.triangles[u] = {a, w, b};
-      around_[w].erase(t);
-      around_[v].erase(u);
-      around_[b].insert(t);
-      around_[a].insert(u);
+      around(w).erase(t);
+      around(v).erase(u);
+      around(b).insert(t);
+      around(a).insert(u);
       freed.insert(w);
       return true;
     }
@@ -124,7 +137,7 @@ class Corners {
       cap_.positions[w] = middle + share * (middle - at(v));
       if (!settle(w, start)) continue;
       bool upright = area(a, w, b) > 0.0;
-      for (std::size_t t : around_[w]) {
+      for (std::size_t t : around(w)) {
         const Triangle& tri = cap_.triangles[t];
         upright = upright && area(tri[0], tri[1], tri[2]) > 0.0;
       }
@@ -142,7 +155,7 @@ class Corners {
 
   double smallest_angle_around(std::uint32_t w) const {
     double smallest = 180.0;
-    for (std::size_t t : around_[w]) {
+    for (std::size_t t : around(w)) {
       const Triangle& tri = cap_.triangles[t];
       smallest = std::min(smallest, smallest_angle(at(tri[0]), at(tri[1]), at(tri[2])));
     }
@@ -151,7 +164,7 @@ class Corners {
 
   std::set<std::uint32_t> ring_of(std::uint32_t w) const {
     std::set<std::uint32_t> ring;
-    for (std::size_t t : around_[w])
+    for (std::size_t t : around(w))
       for (std::uint32_t u : cap_.triangles[t])
         if (u != w) ring.insert(u);
     return ring;
@@ -170,7 +183,7 @@ class Corners {
       cap_.positions[w] = start + step * (centroid - start);
       if (!settle(w, start)) continue;
       bool upright = true;
-      for (std::size_t t : around_[w]) {
+      for (std::size_t t : around(w)) {
         const Triangle& tri = cap_.triangles[t];
         upright = upright && area(tri[0], tri[1], tri[2]) > 0.0;
       }
