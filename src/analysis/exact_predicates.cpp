@@ -88,6 +88,10 @@ int orient3d(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
                            std::abs(u.y()) * (std::abs(v.z() * w.x()) + std::abs(v.x() * w.z())) +
                            std::abs(u.z()) * (std::abs(v.x() * w.y()) + std::abs(v.y() * w.x()));
   if (std::abs(det) > kFilter * permanent) return sign(det);
+  // Every product of the permanent zero: a zero difference in each (no product of nonzero doubles
+  // underflows, by the precondition), so each exact minor term is zero too. Coplanar neighbours on an
+  // axis-aligned plane (a cap) and a shared vertex end here instead of in the expansions.
+  if (permanent == 0.0) return 0;
   Expansion ue[3], ve[3], we[3];
   for (int i = 0; i < 3; ++i) {
     ue[i] = difference(b[i], a[i]);
@@ -110,6 +114,7 @@ int orient2d(double ax, double ay, double bx, double by, double cx, double cy) {
   const double right = (by - ay) * (cx - ax);
   const double det = left - right;
   if (std::abs(det) > kFilter * (std::abs(left) + std::abs(right))) return sign(det);
+  if (left == 0.0 && right == 0.0) return 0;  // a zero difference in each product (as orient3d)
   Expansion exact = multiply(difference(bx, ax), difference(cy, ay));
   add(exact, multiply(difference(by, ay), difference(cx, ax)), -1.0);
   return sign(exact);
