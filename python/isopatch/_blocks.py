@@ -166,9 +166,18 @@ def _worker_threads() -> int:
 
 
 def _kill_once(job: Dict[str, Any], block: int) -> None:
-    """For the tests of lost workers: the first run of the marked block ends its process abruptly."""
+    """For the tests of lost workers: the first run of a marked block (kill_block, or any of kill_blocks)
+    ends its process abruptly, leaving kill_marker (with the block's number after it for kill_blocks)."""
     marker = job.get("kill_marker")
-    if marker and block == job.get("kill_block", 0) and not os.path.exists(marker):
+    if not marker:
+        return
+    if "kill_blocks" in job:
+        if block not in job["kill_blocks"]:
+            return
+        marker = "%s-%d" % (marker, block)
+    elif block != job.get("kill_block", 0):
+        return
+    if not os.path.exists(marker):
         with open(marker, "w") as f:
             f.write("killed block %d in process %d\n" % (block, os.getpid()))
         os._exit(17)

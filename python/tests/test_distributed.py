@@ -1,21 +1,25 @@
 """Blocked meshing on Dask (isopatch.distributed): a closed gyroid lattice of 8 blocks and 100k+
 vertices on a LocalCluster of two worker processes (one thread each, 127.0.0.1, no dashboard) is
 watertight across the seams, on f = 0, of the topology and quality of one process, the same bytes with
-one worker and tasks in reverse order, survives a worker killed in the middle, reuses finished blocks
-when run again, refuses a block larger than its worker's memory, and prints as one manifold part."""
+one worker and tasks in reverse order, survives a worker killed in the middle and workers killed three
+times at random, reuses finished blocks when run again (also after its driver was killed), refuses a block larger than its worker's memory, and prints as one manifold part."""
 
 import json
 import os
+import random
 import re
 import shutil
+import signal
 import subprocess
+import sys
+import time
 
 import numpy as np
 import pytest
 
 import isopatch
 from conftest import expect_one_manifold_part, read_ply, require
-from isopatch import distributed
+from isopatch import _blocks, distributed
 
 distributed_lib = require("distributed", "python3-distributed")
 
@@ -98,6 +102,53 @@ def test_a_worker_killed_in_the_middle_is_replaced_and_the_job_completes(client,
     # The lost worker's finished results are lost with it and run again: their files are found.
     assert manifest["computed"] + manifest["reused"] == TILES and manifest["computed"] >= 1
     assert (tmp_path / "after_kill.ply").read_bytes() == (out / "lattice.ply").read_bytes()
+
+
+def test_workers_killed_three_times_at_random_leave_the_same_bytes(client, clean_run, tmp_path):
+    out, _ = clean_run
+    seed = int.from_bytes(os.urandom(4), "little")
+    blocks = sorted(random.Random(seed).sample(range(TILES), 3))
+    marker = tmp_path / "killed"
+    manifest = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=EDGE, tiles=TILES, out_dir=str(tmp_path),
+                                       output=str(tmp_path / "after_kills.ply"), scheduler=client,
+                                       _test={"kill_marker": str(marker), "kill_blocks": blocks})
+    for block in blocks:
+        assert (tmp_path / ("killed-%d" % block)).exists(), "block %d did not kill its worker (seed %d)" % (block, seed)
+    assert manifest["computed"] + manifest["reused"] == TILES
+    assert (tmp_path / "after_kills.ply").read_bytes() == (out / "lattice.ply").read_bytes(), "seed %d" % seed
+    for b in manifest["block_files"]:  # the manifest's checksums are the files'
+        assert _blocks.file_digest(str(tmp_path / b["file"])) == b["sha256"]
+
+
+def test_a_driver_killed_and_run_again_reuses_its_blocks_and_ends_with_the_same_bytes(client, clean_run, tmp_path):
+    out, _ = clean_run
+    # The driver and its local cluster in a session of their own, killed as a whole (SIGKILL: no clean-up)
+    # once two blocks are written.
+    command = [sys.executable, "-m", "isopatch.distributed", LATTICE, "--tiles", str(TILES), "--out-dir",
+               str(tmp_path), "-o", str(tmp_path / "lattice.ply"), "--box=" + ",".join(str(v) for v in BOX[0] + BOX[1]),
+               "--edge-length", str(EDGE), "--workers", "2"]
+    driver = subprocess.Popen(command, start_new_session=True, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    deadline = time.monotonic() + 120
+    try:
+        while time.monotonic() < deadline and driver.poll() is None and \
+                len([n for n in os.listdir(tmp_path) if n.startswith("block-") and n.endswith(".npz")]) < 2:
+            time.sleep(0.02)
+    finally:
+        try:
+            os.killpg(driver.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        driver.wait(timeout=60)
+    assert driver.returncode == -signal.SIGKILL, driver.stderr.read().decode()[-2000:]
+    assert not [n for n in os.listdir(tmp_path) if n.startswith("manifest-")], "the driver finished before the kill"
+    done = {n for n in os.listdir(tmp_path) if n.startswith("block-") and n.endswith(".npz")}
+    assert len(done) >= 2
+    again = distributed.mesh_blocks(LATTICE, box=BOX, edge_length=EDGE, tiles=TILES, out_dir=str(tmp_path),
+                                    output=str(tmp_path / "lattice.ply"), scheduler=client)
+    assert {b["file"] for b in again["block_files"] if b["reused"]} >= done
+    assert (tmp_path / "lattice.ply").read_bytes() == (out / "lattice.ply").read_bytes()
+    for b in again["block_files"]:
+        assert _blocks.file_digest(str(tmp_path / b["file"])) == b["sha256"]
 
 
 def test_a_driver_run_again_reuses_finished_blocks(client, clean_run, tmp_path):
