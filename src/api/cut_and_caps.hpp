@@ -44,18 +44,18 @@ Settings cut_settings(const CappedPart& part, const Settings& settings);
 /// \throw LimitError("max_vertices") when the caps could hold more vertices than settings.max_vertices.
 void check_caps_fit(const CappedPart& part, const Settings& settings);
 
-/// `cut` (g = 0 meshed with cut_settings(), by one process or in blocks; empty for a polyhedron alone)
-/// closed with the caps, the narrow corners' flips and the last angle repair, as mesh_cut_and_caps().
+/// `mesh`, the cut (g = 0 meshed with cut_settings(), by one process or in blocks; empty for a
+/// polyhedron alone), closed as mesh_cut_and_caps() closes it: the caps, the narrow corners' flips and
+/// the last angle repair.
 /// \throw as mesh_cut_and_caps() (CreaseError when the result is not the 2-manifold expected).
-Mesh close_cut_with_caps(Mesh cut, const CappedPart& part, const Settings& settings, MeshStats* stats,
-                         double analysis_seconds);
+Mesh close_cut_with_caps(Mesh mesh, const CappedPart& part, const Settings& settings, MeshStats* stats,
+                         double analysis);
 
 /// The part's mesh: closed and outward when `closed`, else open exactly on the box's faces and the
-/// region's planes; `stats` gets the smooth run's statistics, MeshStats::creases (`analysis_seconds`
+/// region's planes; `stats` gets the smooth run's statistics, MeshStats::creases (`analysis`
 /// counted in the stage "creases") and the stage "caps".
 /// \throw CreaseError naming what is not a 2-manifold; LimitError("max_vertices") for caps beyond the
 ///        budget; the errors of mesh_surface().
-Mesh mesh_cut_and_caps(const CappedPart& part, const Settings& settings, MeshStats* stats,
-                       double analysis_seconds);
+Mesh mesh_cut_and_caps(const CappedPart& part, const Settings& settings, MeshStats* stats, double analysis);
 
 }  // namespace isopatch
