@@ -74,7 +74,7 @@ def one_request(port, rng):
         # the body; the rest of the body still in flight makes the kernel reset the connection, which
         # may reach the client before the answer. Only there is a reset an answer.
         if kind != "oversized":
-            raise
+            raise ConnectionResetError("%s %s (%s): the connection was reset" % (method, path, kind)) from None
         return kind, 413, b"", ""
     finally:
         connection.close()

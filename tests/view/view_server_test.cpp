@@ -155,6 +155,13 @@ TEST_F(ViewServerTest, RefusesOtherHostNamesAndOtherSitesPosts) {
             "HTTP/1.1 403 Forbidden");
   EXPECT_EQ(raw_status(port, "POST", "/api/mesh", own, "null", body), "HTTP/1.1 403 Forbidden");
   EXPECT_EQ(raw_status(port, "POST", "/api/mesh", own, "http://" + own, body), "HTTP/1.1 200 OK");
+  // A POST is judged after its body is read (answered before, the unread body could reset the
+  // connection under the answer): under another host name, and to a path the viewer does not serve.
+  EXPECT_EQ(raw_status(port, "POST", "/api/mesh", "attacker.example:" + std::to_string(port), "", body),
+            "HTTP/1.1 403 Forbidden");
+  EXPECT_EQ(raw_status(port, "POST", "/elsewhere", "attacker.example:" + std::to_string(port), "", body),
+            "HTTP/1.1 403 Forbidden");
+  EXPECT_EQ(raw_status(port, "POST", "/elsewhere", own, "http://" + own, body), "HTTP/1.1 404 Not Found");
 }
 
 TEST_F(ViewServerTest, ShowsAMeshFileAndDownloadsIt) {

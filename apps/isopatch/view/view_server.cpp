@@ -151,6 +151,25 @@ struct ViewServer::Impl {
     res.set_content(read_whole(*file), content_type_for(*file));
   }
 
+  /// Answers 403 and returns true for a request under another host name, or a POST from another site's
+  /// page (DNS rebinding, cross-site requests).
+  bool refused(const httplib::Request& req, httplib::Response& res) const {
+    if (!is_own_host(req.get_header_value("Host"), port)) {
+      send_json(res, 403,
+                {{"error", "the Host header must name this server (127.0.0.1:" + std::to_string(port) +
+                               "): requests under another host name are refused"},
+                 {"kind", "forbidden"}});
+      return true;
+    }
+    if (req.method == "POST" && !is_own_origin(req.get_header_value("Origin"), port)) {
+      send_json(
+          res, 403,
+          {{"error", "a page of another site cannot ask this viewer for meshes"}, {"kind", "forbidden"}});
+      return true;
+    }
+    return false;
+  }
+
   void routes() {
     // httplib's default also sets SO_REUSEPORT, which would let a second server (of any program of
     // this user) listen on the same port and take some of the connections: address reuse only.
@@ -160,21 +179,14 @@ struct ViewServer::Impl {
     });
     server.set_payload_max_length(config.limits.max_request_bytes);
     // Only requests that name this server, and no POST from another site's page (view_request.hpp).
+    // A request with a body is judged after httplib has read the body (in its route, or the POST
+    // catch-all below): answered before, the body left unread made the kernel reset the connection on
+    // close, sometimes before the client had read the answer, and httplib read the body as the next
+    // request.
     server.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-      if (!is_own_host(req.get_header_value("Host"), port)) {
-        send_json(res, 403,
-                  {{"error", "the Host header must name this server (127.0.0.1:" + std::to_string(port) +
-                                 "): requests under another host name are refused"},
-                   {"kind", "forbidden"}});
-        return httplib::Server::HandlerResponse::Handled;
-      }
-      if (req.method == "POST" && !is_own_origin(req.get_header_value("Origin"), port)) {
-        send_json(
-            res, 403,
-            {{"error", "a page of another site cannot ask this viewer for meshes"}, {"kind", "forbidden"}});
-        return httplib::Server::HandlerResponse::Handled;
-      }
-      return httplib::Server::HandlerResponse::Unhandled;
+      if (req.method == "POST") return httplib::Server::HandlerResponse::Unhandled;
+      return refused(req, res) ? httplib::Server::HandlerResponse::Handled
+                               : httplib::Server::HandlerResponse::Unhandled;
     });
     server.set_read_timeout(10, 0);
     server.set_write_timeout(30, 0);
@@ -186,8 +198,12 @@ struct ViewServer::Impl {
                  {"summary", mesh ? mesh->summary : json::object()},
                  {"version", std::string(kVersion)}});
     });
-    server.Post("/api/mesh",
-                [this](const httplib::Request& req, httplib::Response& res) { handle_mesh(req, res); });
+    server.Post("/api/mesh", [this](const httplib::Request& req, httplib::Response& res) {
+      if (!refused(req, res)) handle_mesh(req, res);
+    });
+    server.Post(".*", [this](const httplib::Request& req, httplib::Response& res) {
+      if (!refused(req, res)) send_json(res, 404, {{"error", "no such request"}, {"kind", "io"}});
+    });
     server.Get(R"(/api/mesh/(\d{1,20})\.(glb|ply))",
                [this](const httplib::Request& req, httplib::Response& res) { handle_download(req, res); });
     server.Get(".*",
