@@ -14,7 +14,7 @@ import os
 import resource
 import time
 import zipfile
-from typing import Any, Callable, Dict, List, Optional, Sequence
+from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -304,13 +304,19 @@ def write_other(job: Dict[str, Any], plan: Dict[str, Any], path: str) -> None:
     mesh in memory."""
     if int(plan["vertices"]) >= 2 ** 32 - 1:
         raise LimitError("the output is too large for one mesh in memory: write a .ply or keep the blocks")
+    _isopatch.write_arrays(*whole_arrays(job), path)
+
+
+def whole_arrays(job: Dict[str, Any]) -> Tuple[np.ndarray, np.ndarray]:
+    """The job's whole output in memory, its blocks' files put together in the output's numbers:
+    (positions, triangles as uint32)."""
     positions: List[np.ndarray] = []
     faces: List[np.ndarray] = []
     for block in range(job["blocks"]):
         data = _load(block_path(job, block), ("positions", "triangles"))
         positions.append(data["positions"])
         faces.append(data["triangles"].astype(np.uint32))
-    _isopatch.write_arrays(np.concatenate(positions), np.concatenate(faces), path)
+    return np.concatenate(positions), np.concatenate(faces)
 
 
 def write_manifest(job: Dict[str, Any], plan: Dict[str, Any], summaries: Sequence[Dict[str, Any]],
@@ -337,6 +343,12 @@ def write_manifest(job: Dict[str, Any], plan: Dict[str, Any], summaries: Sequenc
         ],
     }
     manifest.update(extra)
+    return write_manifest_file(job, manifest)
+
+
+def write_manifest_file(job: Dict[str, Any], manifest: Dict[str, Any]) -> Dict[str, Any]:
+    """Writes `manifest` as the job's manifest file (under a temporary name, renamed) and returns it with
+    its path ("manifest")."""
     path = manifest_path(job)
     tmp = "%s.tmp-%d" % (path, os.getpid())
     with open(tmp, "w") as f:

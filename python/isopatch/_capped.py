@@ -11,7 +11,7 @@ driver's memory.
 
 import os
 import time
-from typing import Any, Callable, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, List, Optional, Tuple
 
 import numpy as np
 
@@ -21,17 +21,6 @@ from . import _blocks, _isopatch
 def capped_path(job: Dict[str, Any]) -> str:
     """The closed part's file (positions and triangles) in the job's out_dir."""
     return os.path.join(job["out_dir"], "capped-%s.npz" % job["hash"])
-
-
-def _cut_arrays(job: Dict[str, Any]) -> Tuple[np.ndarray, np.ndarray]:
-    """A part's cut, its blocks put together in the output's numbers."""
-    positions: List[np.ndarray] = []
-    faces: List[np.ndarray] = []
-    for block in range(job["blocks"]):
-        data = _blocks._load(_blocks.block_path(job, block), ("positions", "triangles"))
-        positions.append(data["positions"])
-        faces.append(data["triangles"].astype(np.uint32))
-    return np.concatenate(positions), np.concatenate(faces)
 
 
 def run_capped(client: Any, source: Dict[str, Any], box: Any, opts: Dict[str, Any], tiles: int, out_dir: str,
@@ -52,7 +41,7 @@ def run_capped(client: Any, source: Dict[str, Any], box: Any, opts: Dict[str, An
         plan = job["plan"]
         mark = time.perf_counter()
         seam_copies += _blocks.check_seams(job, plan)
-        meshes.append(_cut_arrays(job))
+        meshes.append(_blocks.whole_arrays(job))
         phases["merge"] = phases.get("merge", 0.0) + time.perf_counter() - mark
         summaries_all.extend(summaries)
         cuts.append({
@@ -97,14 +86,5 @@ def run_capped(client: Any, source: Dict[str, Any], box: Any, opts: Dict[str, An
     phases["merge"] = phases.get("merge", 0.0) + time.perf_counter() - mark
     manifest["seconds"] = time.perf_counter() - start
     manifest["phase_seconds"] = phases
-    return _write_manifest(whole, manifest)
+    return _blocks.write_manifest_file(whole, manifest)
 
-
-def _write_manifest(whole: Dict[str, Any], manifest: Dict[str, Any]) -> Dict[str, Any]:
-    import json
-    path = _blocks.manifest_path(whole)
-    tmp = "%s.tmp-%d" % (path, os.getpid())
-    with open(tmp, "w") as f:
-        json.dump(manifest, f, indent=1, sort_keys=True)
-    os.replace(tmp, path)
-    return dict(manifest, manifest=path)

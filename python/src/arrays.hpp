@@ -5,6 +5,7 @@
 #include <isopatch/geometry.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +27,15 @@ pybind11::array_t<T> rows(const std::vector<T>& flat, std::size_t width) {
   pybind11::array_t<T> out(
       {static_cast<pybind11::ssize_t>(flat.size() / width), static_cast<pybind11::ssize_t>(width)});
   std::copy(flat.begin(), flat.end(), out.mutable_data());
+  return out;
+}
+
+/// An (N, 3) array of triangles' vertex numbers (Mesh::triangles, BlockMesh::triangles), copied.
+template <typename T>
+pybind11::array_t<T> triangle_array(const std::vector<std::array<T, 3>>& triangles) {
+  pybind11::array_t<T> out({static_cast<pybind11::ssize_t>(triangles.size()), pybind11::ssize_t{3}});
+  T* to = out.mutable_data();
+  for (const auto& t : triangles) to = std::copy(t.begin(), t.end(), to);
   return out;
 }
 

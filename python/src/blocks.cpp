@@ -148,12 +148,9 @@ py::dict close_capped_arrays(const py::dict& source, const BoxArg& box, const py
     settings.cancel = cancel;
     return close_capped(*capped_of(named, settings), std::move(meshes), settings, &stats);
   });
-  std::vector<std::uint32_t> flat;
-  flat.reserve(mesh.triangles.size() * 3);
-  for (const Triangle& t : mesh.triangles) flat.insert(flat.end(), t.begin(), t.end());
   py::dict out;
   out["positions"] = vec3_array(mesh.positions);
-  out["triangles"] = rows(flat, 3);
+  out["triangles"] = triangle_array(mesh.triangles);
   out["caps"] = stats.creases ? stats.creases->caps : 0;
   out["crease_vertices"] = stats.creases ? stats.creases->crease_vertices : 0;
   out["repair_moves"] = stats.creases ? stats.creases->repair_moves : 0;
@@ -172,11 +169,9 @@ py::dict base_of(const py::dict& source, const BoxArg& box, const py::dict& opti
     if (const auto creased = creased_pieces(*surface, settings)) return block_base(*creased, settings);
     return block_base(*surface, settings);
   });
-  std::vector<std::uint32_t> flat;
-  for (const Triangle& t : base.base.triangles) flat.insert(flat.end(), t.begin(), t.end());
   py::dict out;
   out["positions"] = vec3_array(base.base.positions);
-  out["triangles"] = rows(flat, 3);
+  out["triangles"] = triangle_array(base.base.triangles);
   out["level"] = base.level;
   if (!base.patches.triangle_patch.empty()) out["patches"] = patches_dict(base.patches);
   return out;
@@ -226,12 +221,9 @@ class BlockJob {
         return refine_block(*creased(settings), patches_, settings, base_, plan_, block);
       return refine_block(*surface(), settings, base_, plan_, block);
     });
-    std::vector<std::uint64_t> flat;
-    flat.reserve(mesh.triangles.size() * 3);
-    for (const auto& t : mesh.triangles) flat.insert(flat.end(), t.begin(), t.end());
     py::dict out;
     out["positions"] = vec3_array(mesh.positions);
-    out["triangles"] = rows(flat, 3);
+    out["triangles"] = triangle_array(mesh.triangles);
     out["seam_ids"] =
         py::array_t<std::uint64_t>(static_cast<py::ssize_t>(mesh.seam_ids.size()), mesh.seam_ids.data());
     out["seam_positions"] = vec3_array(mesh.seam_positions);

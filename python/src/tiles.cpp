@@ -159,12 +159,9 @@ class TileJob {
       settings.cancel = cancel;
       return mesh_tile(*surface(), settings, plan, plan.grid.tile(number), faces);
     });
-    std::vector<std::uint32_t> flat;
-    flat.reserve(3 * mesh.mesh.triangle_count());
-    for (const Triangle& t : mesh.mesh.triangles) flat.insert(flat.end(), t.begin(), t.end());
     py::dict out;
     out["positions"] = vec3_array(mesh.mesh.positions);
-    out["triangles"] = rows(flat, 3);
+    out["triangles"] = triangle_array(mesh.mesh.triangles);
     out["boundary"] = vector_array(mesh.cut);
     put_refinement_figures(out, mesh);
     return out;
