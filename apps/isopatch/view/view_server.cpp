@@ -27,6 +27,8 @@ namespace {
 
 using nlohmann::json;
 
+constexpr int kAcceptQueue = 256;  // connections the kernel holds before the server accepts them
+
 void send_json(httplib::Response& res, int status, const json& body) {
   res.status = status;
   res.set_header("Cache-Control", "no-store");
@@ -53,6 +55,7 @@ struct ViewServer::Impl {
   ViewConfig config;
   std::vector<Mount> mounts;
   httplib::Server server;
+  socket_t listening_socket = INVALID_SOCKET;  // recorded by the socket options callback
   std::thread listener;
   std::shared_future<void> listening_done;
   std::mutex join_mutex;
@@ -173,9 +176,11 @@ struct ViewServer::Impl {
   void routes() {
     // httplib's default also sets SO_REUSEPORT, which would let a second server (of any program of
     // this user) listen on the same port and take some of the connections: address reuse only.
-    server.set_socket_options([](socket_t sock) {
+    // The socket is kept so that start() can widen its accept queue.
+    server.set_socket_options([this](socket_t sock) {
       const int yes = 1;
       ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+      listening_socket = sock;
     });
     server.set_payload_max_length(config.limits.max_request_bytes);
     // Only requests that name this server, and no POST from another site's page (view_request.hpp).
@@ -249,6 +254,13 @@ int ViewServer::start() {
     s.port = s.server.bind_to_port(host, s.config.port) ? s.config.port : -1;
   if (s.port <= 0)
     throw IoError("cannot listen on 127.0.0.1:" + std::to_string(s.config.port) + " (is the port in use?)");
+  // Debian's compiled httplib listens with a queue of 5 connections (CPPHTTPLIB_LISTEN_BACKLOG is read
+  // inside the library, not from our build). Under load the queue overflowed hundreds of times a minute
+  // (TcpExtListenOverflows) and now and then a connection was reset. Listening again on the bound
+  // socket only changes its queue length.
+  if (::listen(s.listening_socket, kAcceptQueue) != 0)
+    throw IoError("cannot listen on 127.0.0.1:" + std::to_string(s.port) + " with a queue of " +
+                  std::to_string(kAcceptQueue) + " connections");
   std::promise<void> done;
   s.listening_done = done.get_future().share();
   s.listener = std::thread([&s, done = std::move(done)]() mutable {
