@@ -7,6 +7,8 @@ install(TARGETS isopatch EXPORT isopatchTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# The .vdb reader, loaded when a .vdb file is read (src/vdb/openvdb_loader.hpp looks in <libdir>/isopatch).
+install(TARGETS isopatch_openvdb LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/isopatch)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/isopatch DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${ISOPATCH_GENERATED_INCLUDE_DIR}/isopatch/version.hpp  # generated, IsopatchVersion.cmake
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/isopatch)
@@ -30,5 +32,4 @@ endif()
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/isopatchConfigVersion.cmake
                                  COMPATIBILITY ${ISOPATCH_COMPATIBILITY})
 install(FILES ${PROJECT_BINARY_DIR}/isopatchConfig.cmake ${PROJECT_BINARY_DIR}/isopatchConfigVersion.cmake
-              ${PROJECT_SOURCE_DIR}/cmake/FindOpenVDBLibrary.cmake
         DESTINATION ${ISOPATCH_CMAKE_DIR})

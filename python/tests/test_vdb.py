@@ -4,6 +4,7 @@ and by the command line; the same samples as a dense .npy array for comparison; 
 
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -198,3 +199,49 @@ def test_a_volume_file_path_meshes_as_its_array(tmp_path):
     assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.faces, b.faces)
     with pytest.raises(isopatch.InputError, match="grid="):
         isopatch.mesh_volume(path, grid="x")
+
+
+def test_openvdb_is_loaded_only_when_a_vdb_is_read(grids):
+    """OpenVDB is a plugin (isopatch_openvdb.so) loaded on the first .vdb read: importing isopatch and
+    meshing a formula do not map libopenvdb (its relocations were most of the tool's start-up)."""
+    script = ("import isopatch, sys\n"
+              "def mapped():\n"
+              "    return 'libopenvdb' in open('/proc/self/maps').read()\n"
+              "isopatch.mesh('sphere', edge_length=0.3)\n"
+              "before = mapped()\n"
+              "grids = isopatch.vdb_grids(sys.argv[1])\n"
+              "print(before, mapped(), [g['name'] for g in grids])\n")
+    run = subprocess.run([sys.executable, "-c", script, grids["both"]], capture_output=True, text=True,
+                         timeout=120, check=True)
+    assert run.stdout.split() == ["False", "True", "['sphere',", "'torus']"]
+
+
+@pytest.mark.skipif(CLI is None, reason="the command-line tool is not built")
+def test_the_command_line_loads_openvdb_only_for_a_vdb(grids, tmp_path):
+    loaded = {}
+    for name, command in {"version": [CLI, "--version"],
+                          "formula": [CLI, "mesh", "sphere", "-o", str(tmp_path / "s.ply"), "-q"],
+                          "vdb": [CLI, "mesh", grids["paths"]["sphere"], "-o", str(tmp_path / "v.ply"), "-q"]}.items():
+        run = subprocess.run(command, capture_output=True, text=True, timeout=300,
+                             env={**os.environ, "LD_DEBUG": "files"})
+        assert run.returncode == 0, run.stderr[-2000:]
+        loaded[name] = "file=libopenvdb" in run.stderr
+    assert loaded == {"version": False, "formula": False, "vdb": True}
+
+
+@pytest.mark.skipif(CLI is None, reason="the command-line tool is not built")
+def test_a_broken_openvdb_plugin_is_one_line_and_an_input_output_error(grids, tmp_path):
+    broken = tmp_path / "isopatch_openvdb.so"
+    broken.write_bytes(b"not a shared object")
+    env = {**os.environ, "ISOPATCH_OPENVDB_PLUGIN": str(broken)}
+    run = subprocess.run([CLI, "mesh", grids["paths"]["sphere"], "-o", str(tmp_path / "v.ply")],
+                         capture_output=True, text=True, timeout=300, env=env)
+    unreadable = subprocess.run([CLI, "mesh", str(tmp_path / "missing.vdb"), "-o", str(tmp_path / "v.ply")],
+                                capture_output=True, text=True, timeout=300)
+    assert run.returncode == unreadable.returncode != 0  # the exit code of an input/output error
+    assert run.stderr.count("\n") == 1 and "cannot load the .vdb reader" in run.stderr
+    assert str(broken) in run.stderr and not (tmp_path / "v.ply").exists()
+    # The formula surfaces do not need the plugin at all.
+    ok = subprocess.run([CLI, "mesh", "sphere", "-o", str(tmp_path / "s.ply"), "-q"], capture_output=True,
+                        text=True, timeout=300, env=env)
+    assert ok.returncode == 0, ok.stderr

@@ -1,6 +1,6 @@
 #pragma once
-// Reading .vdb files with Debian's OpenVDB (libopenvdb-dev) into SparseSamples: grid choice, value
-// types, transforms and every refusal of vdb_surface.hpp. The only file that includes OpenVDB.
+// Reading .vdb files into SparseSamples, with Debian's OpenVDB (libopenvdb-dev) in a plugin
+// (openvdb_plugin.hpp): grid choice, value types, transforms and every refusal of vdb_surface.hpp.
 
 #include <isopatch/vdb_surface.hpp>
 

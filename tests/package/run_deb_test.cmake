@@ -29,7 +29,7 @@ if(NOT rc EQUAL 0)
 endif()
 message(STATUS "${info}")
 foreach(field "Package: isopatch" "Version: ${VERSION}" "Architecture: amd64" "libtbb12" "zlib1g" "libc6"
-              "python3-numpy" "python3 (>= 3.11)")
+              "python3-numpy" "python3 (>= 3.11)" "libopenvdb")  # libopenvdb: the .vdb plugin's
   check_contains("${info}" "${field}")
 endforeach()
 # The writers are isopatch's own (3MF through zlib): the readers the tests use are not dependencies.
@@ -48,6 +48,7 @@ endif()
 foreach(file usr/bin/isopatch usr/include/isopatch/isopatch.hpp usr/include/isopatch/version.hpp
              usr/lib/libisopatch.a usr/lib/cmake/isopatch/isopatchConfig.cmake
              usr/lib/python3/dist-packages/isopatch/__init__.py usr/share/man/man1/isopatch.1
+             usr/lib/isopatch/isopatch_openvdb.so usr/lib/python3/dist-packages/isopatch/isopatch_openvdb.so
              usr/share/bash-completion/completions/isopatch usr/share/doc/isopatch/LICENSE)
   if(NOT EXISTS ${root}/${file})
     message(FATAL_ERROR "the package has no /${file}")

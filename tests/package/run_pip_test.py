@@ -7,11 +7,12 @@ With ISOPATCH_CMAKE_BUILD_DIR naming the test build tree (setup.py then only run
 2. installs the source: pip install --no-build-isolation --no-deps --no-index --target WORK/site SOURCE;
 3. installs the wheel: pip install --no-deps --no-index --target WORK/site2 WHEEL;
 
-checks the wheel (a cp311 platform wheel named with the tool's version, holding _isopatch*.so, py.typed,
-_isopatch.pyi and every python/isopatch/*.py, nothing else in isopatch/; numpy required, extra
+checks the wheel (a cp311 platform wheel named with the tool's version, holding _isopatch*.so, the .vdb
+plugin isopatch_openvdb.so, py.typed, _isopatch.pyi and every python/isopatch/*.py, nothing else in isopatch/; numpy required, extra
 "distributed"), then in a fresh interpreter per target (PYTHONPATH=target, run from WORK) imports isopatch
 from that target, compares isopatch.__version__ with `isopatch --version` ("isopatch X.Y.Z") and meshes
-the unit sphere (watertight, on the sphere). Last, the source tree has nothing new from pip, build or
+the unit sphere (watertight, on the sphere) and lists the grids of a .vdb file with the plugin beside the
+module. Last, the source tree has nothing new from pip, build or
 setuptools (no *.egg-info, dist/, build/python-package, build/lib*, ...): they leave it as they found it.
 
 Usage: python3 run_pip_test.py --source DIR --build-tree DIR --cli FILE --work DIR
@@ -39,6 +40,15 @@ radius = np.linalg.norm(m.vertices, axis=1)
 topology = m.analyze(surface=False)["topology"]
 assert len(m.vertices) > 100 and np.abs(radius - 1).max() < 1e-6, (len(m.vertices), np.abs(radius - 1).max())
 assert topology["watertight"] and topology["euler_characteristic"] == 2, topology
+# The .vdb reader: the plugin beside the module, not the build tree's.
+import pyopenvdb, tempfile, os
+grid = pyopenvdb.createLevelSetSphere(radius=1.0, voxelSize=0.1)
+grid.name = "ball"
+path = os.path.join(tempfile.mkdtemp(), "ball.vdb")
+pyopenvdb.write(path, grids=[grid])
+assert [g["name"] for g in isopatch.vdb_grids(path)] == ["ball"]
+plugins = {line.split()[-1] for line in open("/proc/self/maps") if line.rstrip().endswith("isopatch_openvdb.so")}
+assert plugins == {target + "/isopatch/isopatch_openvdb.so"}, plugins
 print(isopatch.__version__)
 """
 
@@ -80,7 +90,7 @@ def check_wheel(wheel: Path, source: Path, version: str) -> None:
         wheel_info = archive.read(f"isopatch-{version}.dist-info/WHEEL").decode()
     python_files = {path.name for path in (source / "python" / "isopatch").glob("*.py")}
     module = "_isopatch" + sysconfig.get_config_var("EXT_SUFFIX")
-    expected = python_files | {"py.typed", "_isopatch.pyi", module}
+    expected = python_files | {"py.typed", "_isopatch.pyi", module, "isopatch_openvdb.so"}
     if package != expected:
         fail(f"the wheel's isopatch/ holds {sorted(package)}, expected {sorted(expected)} (missing: "
              f"{sorted(expected - package)}, extra: {sorted(package - expected)}; python/CMakeLists.txt "
