@@ -17,25 +17,20 @@
 namespace isopatch::analysis {
 namespace {
 
-/// The float next to f towards -infinity (down) or +infinity (up): f's bits stepped by one, inline
-/// (std::nextafter is a library call). \pre f is not NaN, and not the infinity it steps away from.
-float step_down(float f) {
-  if (f == 0.0F) return -std::numeric_limits<float>::denorm_min();
-  const auto bits = std::bit_cast<std::uint32_t>(f);
-  return std::bit_cast<float>(f > 0.0F ? bits - 1U : bits + 1U);
-}
-float step_up(float f) {
-  return -step_down(-f);
-}
-
-/// x rounded to a float no larger (down) or no smaller (up) than x.
+/// x rounded to a float no larger than x, without branches (the direction of the rounding is a coin
+/// toss per coordinate, and the branches of a step by std::nextafter were a sixth of the check's time):
+/// the nearest float, stepped once towards -infinity when it lies above x. Above x it is positive (its
+/// bits less one) or negative or -0 (its bits plus one: -0 becomes the negative float nearest 0).
 float round_down(double x) {
-  const auto f = static_cast<float>(x);
-  return static_cast<double>(f) > x ? step_down(f) : f;
+  const auto nearest = static_cast<float>(x);
+  auto bits = std::bit_cast<std::uint32_t>(nearest);
+  const auto above = static_cast<std::uint32_t>(static_cast<double>(nearest) > x);
+  bits += above * ((bits >> 31U) * 2U - 1U);  // +-1, as unsigned arithmetic wraps
+  return std::bit_cast<float>(bits);
 }
+/// x rounded to a float no smaller than x.
 float round_up(double x) {
-  const auto f = static_cast<float>(x);
-  return static_cast<double>(f) < x ? step_up(f) : f;
+  return -round_down(-x);
 }
 
 }  // namespace
@@ -51,25 +46,29 @@ std::vector<std::uint32_t> z_ordered_triangles(const Mesh& mesh) {
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const Vec3& p : mesh.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
   const ZOrderCube cube(lo, mesh.positions.empty() ? 0.0 : (hi - lo).maxCoeff());
-  constexpr std::uint64_t kSkipped = std::numeric_limits<std::uint64_t>::max();  // above any 63-bit key
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(mesh.triangles.size());
+  // One 64-bit integer per triangle: the top 32 of the key's 63 bits (a cell about 1/1600 of the box
+  // across), then the index, which breaks ties. Half the bytes of a (key, index) pair to sort: the sort
+  // was a fifth of the check's time.
+  constexpr std::uint64_t kSkipped = std::numeric_limits<std::uint64_t>::max();  // after every triangle
+  std::vector<std::uint64_t> keyed(mesh.triangles.size());
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, keyed.size(), std::size_t{1} << 14U), [&](const auto& r) {
         for (std::size_t t = r.begin(); t != r.end(); ++t) {
           const Triangle& tri = mesh.triangles[t];
-          const std::uint64_t key =
+          keyed[t] =
               repeats_vertex(tri)
                   ? kSkipped
-                  : cube.key((mesh.positions[tri[0]] + mesh.positions[tri[1]] + mesh.positions[tri[2]]) /
-                             3.0);
-          keyed[t] = {key, static_cast<std::uint32_t>(t)};
+                  : (cube.key((mesh.positions[tri[0]] + mesh.positions[tri[1]] + mesh.positions[tri[2]]) /
+                              3.0) >>
+                     31U) << 32U |
+                        t;
         }
       });
   tbb::parallel_sort(keyed.begin(), keyed.end());
   std::vector<std::uint32_t> order;
   order.reserve(keyed.size());
-  for (const auto& [key, t] : keyed)
-    if (key != kSkipped) order.push_back(t);
+  for (const std::uint64_t k : keyed)
+    if (k != kSkipped) order.push_back(static_cast<std::uint32_t>(k));
   return order;
 }
 
