@@ -17,7 +17,8 @@
 
 namespace isopatch::analysis {
 
-/// The triangles of `mesh` without a repeated vertex, in Z-order of their centroids (ties by index):
+/// The triangles of `mesh` without a repeated vertex, in Z-order of their centroids (in cells of about
+/// 1/1600 of the box, ties by index):
 /// neighbours in space are mostly neighbours in the order. Sorted in parallel; the same order for any
 /// number of threads. \pre check_mesh passed; fewer than 2^32 triangles.
 std::vector<std::uint32_t> z_ordered_triangles(const Mesh& mesh);
