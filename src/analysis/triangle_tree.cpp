@@ -77,8 +77,8 @@ TriangleTree::TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order)
   const std::size_t n = order_.size();
   nodes_.resize(node_count(n));
   for (std::size_t a = 0; a < 3; ++a) {
-    boxes_.lo[a].resize(n);
-    boxes_.hi[a].resize(n);
+    boxes_.lo[a].resize(n + kPadding);  // the padding is masked off (overlapping())
+    boxes_.hi[a].resize(n + kPadding);
   }
   if (n > 0) build(0, 0, n);
 }

@@ -10,6 +10,10 @@
 
 #include <Eigen/Core>
 
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
+
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -44,7 +48,7 @@ class TriangleTree {
  public:
   /// Leaves hold at most this many triangles (between half of it and it, the splits being halves).
   static constexpr std::size_t kLeafSize = 8;
-  static_assert(kLeafSize <= 32, "a leaf's overlaps are bits of an unsigned");
+  static_assert(kLeafSize < 32, "a leaf's overlaps are bits of an unsigned");
   /// Subtrees of at least this many triangles are built in parallel.
   static constexpr std::size_t kParallelBuild = std::size_t{1} << 14;
 
@@ -92,11 +96,28 @@ class TriangleTree {
   };
 
   /// Bit k - begin for the positions k in [begin, end) (at most kLeafSize of them) whose triangle's box
-  /// overlaps `box`: one pass the compiler vectorises.
+  /// overlaps `box`: four positions per SSE comparison (the box arrays are padded by kPadding, and the
+  /// bits past end masked off). GCC did not vectorise the loop of single comparisons, and this test is
+  /// most of the traversal's time.
   unsigned overlapping(const FloatBox& box, std::uint32_t begin, std::uint32_t end) const {
     unsigned bits = 0;
+#ifdef __SSE2__
+    const __m128 lo_x = _mm_set1_ps(box.lo.x()), lo_y = _mm_set1_ps(box.lo.y()),
+                 lo_z = _mm_set1_ps(box.lo.z());
+    const __m128 hi_x = _mm_set1_ps(box.hi.x()), hi_y = _mm_set1_ps(box.hi.y()),
+                 hi_z = _mm_set1_ps(box.hi.z());
+    for (std::uint32_t k = begin; k < end; k += 4) {
+      __m128 m = _mm_cmple_ps(_mm_loadu_ps(&boxes_.lo[0][k]), hi_x);
+      m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(&boxes_.lo[1][k]), hi_y));
+      m = _mm_and_ps(m, _mm_cmple_ps(_mm_loadu_ps(&boxes_.lo[2][k]), hi_z));
+      m = _mm_and_ps(m, _mm_cmple_ps(lo_x, _mm_loadu_ps(&boxes_.hi[0][k])));
+      m = _mm_and_ps(m, _mm_cmple_ps(lo_y, _mm_loadu_ps(&boxes_.hi[1][k])));
+      m = _mm_and_ps(m, _mm_cmple_ps(lo_z, _mm_loadu_ps(&boxes_.hi[2][k])));
+      bits |= static_cast<unsigned>(_mm_movemask_ps(m)) << (k - begin);
+    }
+    return bits & ((1U << (end - begin)) - 1U);
+#else
     for (std::uint32_t k = begin; k < end; ++k) {
-      // Each comparison as 0 or 1, combined without branches (the loop vectorises).
       const auto below = [](float a, float b) { return static_cast<unsigned>(a <= b); };
       const unsigned overlap = below(boxes_.lo[0][k], box.hi.x()) & below(boxes_.lo[1][k], box.hi.y()) &
                                below(boxes_.lo[2][k], box.hi.z()) & below(box.lo.x(), boxes_.hi[0][k]) &
@@ -104,7 +125,10 @@ class TriangleTree {
       bits |= overlap << (k - begin);
     }
     return bits;
+#endif
   }
+  /// Entries past the last position in each box array, so that overlapping() may read four at a time.
+  static constexpr std::size_t kPadding = 4;
   FloatBox box_at(std::uint32_t k) const {
     FloatBox box;
     for (std::size_t a = 0; a < 3; ++a) {
