@@ -47,13 +47,14 @@ struct FloatBox {
 class TriangleTree {
  public:
   /// Leaves hold at most this many triangles (between half of it and it, the splits being halves).
-  static constexpr std::size_t kLeafSize = 8;
+  static constexpr std::size_t kLeafSize = 31;
   static_assert(kLeafSize < 32, "a leaf's overlaps are bits of an unsigned");
   /// Subtrees of at least this many triangles are built in parallel.
   static constexpr std::size_t kParallelBuild = std::size_t{1} << 14;
 
   /// The tree over the triangles `order` of `mesh` (z_ordered_triangles); `mesh` must outlive it.
-  /// Memory: 28 bytes per triangle (its index and box) and a 36-byte node per 4 to 8 triangles.
+  /// Memory: 28 bytes per triangle (its index and box) and a 36-byte node per 8 to 16 triangles (two
+  /// nodes per leaf of 16 to 31).
   TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order);
 
   /// A piece of the scan: the pairs within node m (self) or between nodes m and n.
