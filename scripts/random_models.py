@@ -18,6 +18,8 @@ import re
 import subprocess
 import sys
 
+import numpy as np
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "python" / "tests"))
 import random_models  # noqa: E402
@@ -47,6 +49,77 @@ def pattern(message):
     return re.sub(r"-?\d+(\.\d+)?(e-?\d+)?", "#", message)
 
 
+FORMULA_TOKENS = re.compile(r"^(\s|[0-9.e]|[-+*/^(),]|x|y|z|sin|cos|sqrt|abs|min|max)*$")
+NUMPY = {"sin": np.sin, "cos": np.cos, "sqrt": np.sqrt, "abs": np.abs, "min": np.minimum, "max": np.maximum}
+
+
+def sign_change(the_case, samples=129):
+    """Whether f of a random case takes both signs on a grid of samples^3 points of its box (within its
+    region, when it has one), and the share of those points where f < 0; evaluated with numpy from the
+    formula (the generator's functions only), independently of isopatch."""
+    formula = the_case["formula"]
+    if not FORMULA_TOKENS.match(formula):
+        raise ValueError(f"unexpected formula {formula[:80]}")
+    lo, hi = the_case["box"]
+    axes = [np.linspace(lo[i], hi[i], samples) for i in range(3)]
+    x, y, z = np.meshgrid(*axes, indexing="ij")
+    with np.errstate(invalid="ignore"):
+        f = eval(formula.replace("^", "**"), {"__builtins__": {}}, dict(NUMPY, x=x, y=y, z=z))  # noqa: S307
+    inside = np.ones(f.shape, bool)
+    for a, b, c, d in the_case["settings"].get("region") or []:
+        inside &= a * x + b * y + c * z + d <= 0
+    f = f[inside & np.isfinite(f)]
+    return bool(f.size and f.min() < 0 < f.max()), float((f < 0).mean()) if f.size else 0.0
+
+
+EXPLAINED = [
+    ("CreaseError", "touch tangentially",
+     "The crease search found two faces of the random solids that meet without crossing (a tangential "
+     "contact, or one it cannot tell from one at its cells' size): no mesh along creases follows the shape "
+     "there, and smaller edge lengths did not change that on the two cases tried. `creases=\"off\"` "
+     "meshes it as a smooth surface."),
+    ("CreaseError", "do not close up",
+     "The crease curves found at a corner of the faces do not pair up into closed face boundaries: solids "
+     "touching along an edge, or curves the crease search could not resolve. Meshing these cases at half "
+     "and a quarter of the edge length does not help (tried on five of them: the crease paths fail "
+     "there too and the shape is meshed smooth with `creases_rounded`); `creases=\"off\"` meshes them."),
+    ("NoSurfaceError", "",
+     "f = 0 was not found in the box: checked below with an independent evaluation of f on a 129^3 grid."),
+    ("LimitError", "time limit",
+     "Past the case's 50 s time limit (`time_limit`): every one a gyroid solid in a ball joined with other "
+     "solids, creases on (the crease paths try the cut, then fall back)."),
+]
+
+
+def explain_refusals(results):
+    """The Refusals explained section: what each kind of refusal means and, for NoSurfaceError, how many
+    of the models have no f < 0 and f > 0 in the box at all (then 'no surface' is the answer)."""
+    refused = [r for r in results if r["outcome"] == "refused"]
+    lines = ["", "## Refusals explained", ""]
+    for kind, words, text in EXPLAINED:
+        count = sum(1 for r in refused if r["kind"] == kind and words in r["message"])
+        lines.append(f"- **{kind}**{' (' + words + ')' if words else ''}, {count} cases: {text}")
+    empty, tiny = 0, []
+    for r in refused:
+        if r["kind"] != "NoSurfaceError":
+            continue
+        changes, share = sign_change(r["case"])
+        if changes:
+            tiny.append((r["seed"], share))
+        else:
+            empty += 1
+    lines.append(f"- Of the NoSurfaceError cases, {empty} have f of one sign at every one of the 129^3 points: the "
+                 f"model is empty in the box (or its region), and 'no surface' is the answer. "
+                 f"{len(tiny)} have points where f < 0, on "
+                 + (", ".join(f"{100 * share:.4f}% (seed {seed})" for seed, share in tiny) or "none")
+                 + " of the grid: parts a fraction of an edge across, which the search at that edge length "
+                   "does not reach.")
+    genuine = len(refused) - empty
+    lines.append(f"- Refusals of models that do have a surface in the box: {genuine} of {len(results)} cases, "
+                 f"{100.0 * genuine / max(1, len(results)):.1f}%.")
+    return lines
+
+
 def report(results, path, cases):
     outcomes = collections.Counter(r["outcome"] for r in results)
     lines = ["# Random models and settings", "",
@@ -68,6 +141,7 @@ def report(results, path, cases):
     lines += ["", "## Refusals by kind and message", "", "| kind | message (numbers as #) | cases |", "|---|---|---:|"]
     for (kind, message), count in refusals.most_common():
         lines.append(f"| {kind} | {message.replace('|', '/')} | {count} |")
+    lines += explain_refusals(results)
     for title, kind in (("Meshes that fail a check, with warnings", "warned"), ("Silent wrong meshes", "invalid"),
                         ("Crashes", "crash"), ("Hangs (over 60 s)", "hang")):
         chosen = [r for r in results if r["outcome"] == kind]
