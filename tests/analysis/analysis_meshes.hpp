@@ -1,7 +1,7 @@
 #pragma once
 // Small meshes with known geometry for the metrics tests, built in code: a regular icosahedron (found
 // from its vertices, not from a pasted face table), its subdivisions projected onto a sphere, a flat
-// hexagonal fan and a parametric torus.
+// hexagonal fan, a parametric torus and a triangulated square on a tilted plane.
 
 #include <isopatch/mesh.hpp>
 
@@ -111,6 +111,24 @@ inline Mesh parametric_torus(int m, int n, double R = 1.0, double r = 0.4, doubl
       mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
     }
   return mesh;
+}
+
+/// A triangulated square of n x n vertices in the tilted plane z = 0.3 x + 0.7 y + 0.1: rounding leaves
+/// its vertices a few ulps off one plane, where double-precision orientation signs are noise.
+inline Mesh tilted_grid(int n) {
+  Mesh m;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = i / (n - 1.0), y = j / (n - 1.0);
+      m.positions.emplace_back(x, y, 0.3 * x + 0.7 * y + 0.1);
+    }
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const auto v = static_cast<std::uint32_t>(j * n + i), w = static_cast<std::uint32_t>(n);
+      m.triangles.push_back({v, v + 1, v + w + 1});
+      m.triangles.push_back({v, v + w + 1, v + w});
+    }
+  return m;
 }
 
 }  // namespace isopatch::test

@@ -18,20 +18,6 @@
 namespace isopatch {
 namespace {
 
-/// An n x n grid of squares cut into triangles on a tilted plane.
-Mesh sloped_grid(int n) {
-  Mesh m;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) m.positions.emplace_back(i, j, 0.3 * i - 0.2 * j);
-  for (int j = 0; j + 1 < n; ++j)
-    for (int i = 0; i + 1 < n; ++i) {
-      const auto v = static_cast<std::uint32_t>(j * n + i), w = static_cast<std::uint32_t>(n);
-      m.triangles.push_back({v, v + 1, v + w + 1});
-      m.triangles.push_back({v, v + w + 1, v + w});
-    }
-  return m;
-}
-
 /// Vertex 0 with `n` neighbours at angles step * k (degrees) and radii `radius(k)`, heights `height(k)`,
 /// in one closed fan.
 template <class Radius, class Height>
@@ -59,7 +45,7 @@ Mesh fan_of(const Mesh& m, std::uint32_t v) {
 
 TEST(FlatFans, InteriorVerticesOfAGridAreProvedAndItsBoundaryIsNot) {
   const int n = 12;
-  const std::vector<std::uint8_t> proved = analysis::flat_fans(sloped_grid(n));
+  const std::vector<std::uint8_t> proved = analysis::flat_fans(test::tilted_grid(n));
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const bool interior = i > 0 && j > 0 && i + 1 < n && j + 1 < n;

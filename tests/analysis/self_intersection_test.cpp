@@ -71,26 +71,8 @@ TEST(SelfIntersection, CleanClosedMeshesHaveNone) {
   EXPECT_EQ(count(Mesh{}), 0u);
 }
 
-/// A triangulated square of n x n vertices in the tilted plane z = 0.3 x + 0.7 y + 0.1: rounding leaves
-/// its vertices a few ulps off one plane, where double-precision orientation signs are noise.
-Mesh tilted_grid(int n) {
-  Mesh m;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double x = i / (n - 1.0), y = j / (n - 1.0);
-      m.positions.emplace_back(x, y, 0.3 * x + 0.7 * y + 0.1);
-    }
-  for (int j = 0; j + 1 < n; ++j)
-    for (int i = 0; i + 1 < n; ++i) {
-      const auto v = static_cast<std::uint32_t>(j * n + i), w = static_cast<std::uint32_t>(n);
-      m.triangles.push_back({v, v + 1, v + w + 1});
-      m.triangles.push_back({v, v + w + 1, v + w});
-    }
-  return m;
-}
-
 TEST(SelfIntersection, NearlyCoplanarNeighboursAreDecidedExactly) {
-  const Mesh flat = tilted_grid(40);
+  const Mesh flat = test::tilted_grid(40);
   EXPECT_EQ(count(flat), 0u);
   EXPECT_EQ(test::count_self_intersections(flat, 100000), 0u);
   // Folding one vertex's fan flat over its neighbour: a genuine overlap in the plane.
