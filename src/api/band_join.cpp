@@ -13,6 +13,40 @@
 
 namespace isopatch {
 
+void zip_chains(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& p,
+                const std::vector<std::uint32_t>& q, std::vector<Triangle>& out) {
+  std::size_t i = 0, j = 0;
+  while (i + 1 < p.size() || j + 1 < q.size()) {
+    const bool advance_p = j + 1 == q.size() || (i + 1 < p.size() && (x[p[i + 1]] - x[q[j]]).norm() <=
+                                                                         (x[q[j + 1]] - x[p[i]]).norm());
+    if (advance_p) {
+      out.push_back({p[i + 1], p[i], q[j]});
+      ++i;
+    } else {
+      out.push_back({q[j], q[j + 1], p[i]});
+      ++j;
+    }
+  }
+}
+
+void zip_between(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& p,
+                 const std::vector<std::uint32_t>& q, std::vector<Triangle>& out) {
+  const std::size_t n = p.size(), m = q.size();
+  if (n < 2 || m < 2 || (n == 2 && m == 2)) return;
+  if (m == 2) {
+    for (std::size_t k = 0; k + 2 < n; ++k) out.push_back({p[k + 1], p[k], p.back()});
+    return;
+  }
+  if (n == 2) {
+    for (std::size_t k = 1; k + 1 < m; ++k) out.push_back({q[k], q[k + 1], p.front()});
+    return;
+  }
+  out.push_back({p[1], p[0], q[1]});
+  zip_chains(x, std::vector<std::uint32_t>(p.begin() + 1, p.end() - 1),
+             std::vector<std::uint32_t>(q.begin() + 1, q.end() - 1), out);
+  out.push_back({q[m - 2], q[m - 1], p[n - 2]});
+}
+
 namespace {
 
 /// A boundary vertex looks for its crease within this many edges.
@@ -33,8 +67,10 @@ constexpr std::size_t kMostNeckArcs = 6;
 /// The nearest crease point within a few edges (core/point_grid.hpp, cubes of the reach).
 class CreaseGrid {
  public:
-  CreaseGrid(const std::vector<Vec3>& points, std::size_t count, double cell) : points_(points), grid_(cell) {
-    for (std::size_t k = 0; k < count; ++k) grid_.insert(points[k], k);
+  CreaseGrid(const std::vector<Vec3>& points, const std::vector<std::vector<std::uint32_t>>& loops, double cell)
+      : points_(points), grid_(cell) {
+    for (const std::vector<std::uint32_t>& loop : loops)
+      for (std::uint32_t k : loop) grid_.insert(points[k], k);
   }
 
   /// The nearest point within `reach` (at most the cube's side) of p for which `skip` is false, or -1
@@ -73,24 +109,6 @@ struct Run {
   Place from, to;
 };
 
-/// Triangles joining the open chain `p` (the band on its right) to the open chain `q` (the band on its
-/// left) that starts beside p's first point, across the shorter diagonal each time.
-void zip_chains(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& p,
-                const std::vector<std::uint32_t>& q, std::vector<Triangle>& out) {
-  std::size_t i = 0, j = 0;
-  while (i + 1 < p.size() || j + 1 < q.size()) {
-    const bool advance_p = j + 1 == q.size() || (i + 1 < p.size() && (x[p[i + 1]] - x[q[j]]).norm() <=
-                                                                         (x[q[j + 1]] - x[p[i]]).norm());
-    if (advance_p) {
-      out.push_back({p[i + 1], p[i], q[j]});
-      ++i;
-    } else {
-      out.push_back({q[j], q[j + 1], p[i]});
-      ++j;
-    }
-  }
-}
-
 /// `loop` from index `from`, `steps` edges forward (steps + 1 ids).
 std::vector<std::uint32_t> arc(const std::vector<std::uint32_t>& loop, std::size_t from, std::size_t steps) {
   std::vector<std::uint32_t> out;
@@ -101,7 +119,7 @@ std::vector<std::uint32_t> arc(const std::vector<std::uint32_t>& loop, std::size
 class BandJoiner {
  public:
   BandJoiner(const BandJoinInput& in, std::string& failure)
-      : in_(in), failure_(failure), grid_(in.positions, held(in), kBandReach * in.edge) {
+      : in_(in), failure_(failure), grid_(in.positions, in.crease, kBandReach * in.edge) {
     for (std::size_t c = 0; c < in.crease.size(); ++c)
       for (std::size_t k = 0; k < in.crease[c].size(); ++k)
         place_[in.crease[c][k]] = {static_cast<std::int64_t>(c), k};
@@ -135,12 +153,6 @@ class BandJoiner {
   }
 
  private:
-  static std::size_t held(const BandJoinInput& in) {
-    std::size_t n = 0;
-    for (const auto& c : in.crease) n += c.size();
-    return n;
-  }
-
   std::size_t size(std::int64_t loop) const { return in_.crease[static_cast<std::size_t>(loop)].size(); }
   std::uint32_t id(const Place& p) const {
     return in_.crease[static_cast<std::size_t>(p.loop)][p.index % size(p.loop)];

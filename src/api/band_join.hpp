@@ -15,7 +15,19 @@
 
 namespace isopatch {
 
-/// What to join: `positions` (the crease points first), the crease loops as ids in the face's boundary
+/// Triangles joining the open chain `p` of ids into `x` (the band on its right) to the open chain `q` (the
+/// band on its left) that starts beside p's first point, across the shorter diagonal each time.
+void zip_chains(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& p,
+                const std::vector<std::uint32_t>& q, std::vector<Triangle>& out);
+
+/// Triangles over the band between two chains with the same first and the same last vertex: `p` with the
+/// band on its right, `q` with it on its left (a run of a trimmed face's boundary between two of its
+/// vertices on the box, and the face's boundary on the box and the crease between them). Nothing when
+/// both are the same edge.
+void zip_between(const std::vector<Vec3>& x, const std::vector<std::uint32_t>& p,
+                 const std::vector<std::uint32_t>& q, std::vector<Triangle>& out);
+
+/// What to join: `positions` (holding the crease points), the crease loops as ids in the face's boundary
 /// direction (the face on their left) and the trimmed face's boundary loops (the face on their left).
 struct BandJoinInput {
   const std::vector<Vec3>& positions;

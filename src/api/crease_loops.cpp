@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -14,6 +15,7 @@
 #include <tbb/parallel_for.h>
 
 #include "csg/crease_graph.hpp"
+#include "csg/face_set.hpp"
 #include "surface/curve_point.hpp"
 
 namespace isopatch {
@@ -30,26 +32,59 @@ std::uint64_t undirected_key(std::uint32_t u, std::uint32_t v) {
   return (static_cast<std::uint64_t>(u) << 32) | v;
 }
 
-/// Puts every point on a = b = 0 from where it is (in parallel; each point its own).
-void settle_all(std::vector<Vec3>& points, const Surface& a, const Surface& b, double edge,
-                double tolerance) {
+CurvePointParams settle_params(double edge, double tolerance) {
   CurvePointParams params;
   params.tolerance = tolerance;
   params.max_step = 0.5 * edge;
   params.max_travel = 2.0 * edge;
   params.max_iterations = 60;
+  return params;
+}
+
+/// Puts the points [first, last) on a = b = 0 from where they are (in parallel; each point its own).
+void settle_all(std::vector<Vec3>& points, const Surface& a, const Surface& b, double edge, double tolerance,
+                std::size_t first, std::size_t last) {
+  const CurvePointParams params = settle_params(edge, tolerance);
   std::vector<std::uint8_t> failed(points.size(), 0);
-  tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t k) {
+  tbb::parallel_for(first, last, [&](std::size_t k) {
     const std::optional<Vec3> p = settle_on_curve(a, b, points[k], params);
     if (p)
       points[k] = *p;
     else
       failed[k] = 1;
   });
-  for (std::size_t k = 0; k < points.size(); ++k)
+  for (std::size_t k = first; k < last; ++k)
     if (failed[k])
       throw CreaseError("the surfaces of max(a, b) meet tangentially near " + point_text(points[k]) +
                         ": their crease has no point there");
+}
+
+/// The end of an arc where the crease leaves the box: the point of a = b = 0 on the face of `box` that
+/// the boundary edge (u, v) of the mesh lies on, near `p`, with that coordinate exactly the face's.
+Vec3 arc_end(const Vec3& p, const Vec3& u, const Vec3& v, const Surface& a, const Surface& b, const Box& box,
+             double edge, double tolerance) {
+  const double on = 1e-9 * box.diagonal();
+  int axis = -1;
+  double level = 0.0;
+  int faces = 0;
+  for (int k = 0; k < 3; ++k)
+    for (const double c : {box.lo[k], box.hi[k]})
+      if (std::abs(u[k] - c) <= on && std::abs(v[k] - c) <= on) {
+        axis = k;
+        level = c;
+        ++faces;
+      }
+  if (faces != 1)
+    throw CreaseError("the crease of max(a, b) leaves the box " +
+                      std::string(faces == 0 ? "off its faces" : "at an edge of it") + " near " + point_text(p));
+  const SurfacePtr face = plane_surface(Vec3::Unit(axis), level, box);
+  const std::optional<Vec3> end = settle_on_corner(a, b, *face, p, settle_params(edge, tolerance));
+  if (!end)
+    throw CreaseError("the surfaces of max(a, b) meet tangentially, or along the box, near " + point_text(p) +
+                      ": their crease has no point where it leaves the box");
+  Vec3 out = *end;
+  out[axis] = level;
+  return out;
 }
 
 /// The closed polyline `loop` resampled at `count` points of even arc length, starting at its first.
@@ -71,16 +106,35 @@ std::vector<Vec3> even_arc_length(const std::vector<Vec3>& loop, std::size_t cou
   return out;
 }
 
-double loop_length(const std::vector<Vec3>& loop) {
+/// The open polyline `arc` resampled at `segments` + 1 points of even arc length, its ends kept.
+std::vector<Vec3> even_arc_length_open(const std::vector<Vec3>& arc, std::size_t segments) {
+  std::vector<double> s(arc.size(), 0.0);
+  for (std::size_t k = 1; k < arc.size(); ++k) s[k] = s[k - 1] + (arc[k] - arc[k - 1]).norm();
+  std::vector<Vec3> out{arc.front()};
+  std::size_t segment = 0;
+  for (std::size_t k = 1; k < segments; ++k) {
+    const double target = s.back() * static_cast<double>(k) / static_cast<double>(segments);
+    while (segment + 2 < arc.size() && s[segment + 1] <= target) ++segment;
+    const double piece = s[segment + 1] - s[segment];
+    const double t = piece > 0.0 ? (target - s[segment]) / piece : 0.0;
+    out.push_back(arc[segment] + t * (arc[segment + 1] - arc[segment]));
+  }
+  out.push_back(arc.back());
+  return out;
+}
+
+/// The length of a polyline, closed or open.
+double curve_length(const std::vector<Vec3>& points, bool closed) {
   double length = 0.0;
-  for (std::size_t k = 0; k < loop.size(); ++k) length += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  const std::size_t segments = closed ? points.size() : points.size() - 1;
+  for (std::size_t k = 0; k < segments; ++k) length += (points[(k + 1) % points.size()] - points[k]).norm();
   return length;
 }
 
 }  // namespace
 
 std::vector<CreaseLoop> trace_crease_loops(const Mesh& mesh_a, const Surface& a, const Surface& b,
-                                           double edge, double tolerance) {
+                                           double edge, double tolerance, const Box* open_at) {
   const std::size_t n = mesh_a.positions.size();
   std::vector<double> value(n);
   b.values(mesh_a.positions, value);
@@ -123,47 +177,72 @@ std::vector<CreaseLoop> trace_crease_loops(const Mesh& mesh_a, const Surface& a,
       link(cut[1], cut[0]);
     }
   }
-  // The crossings as points on the crease, in the order of the loops.
-  std::vector<CreaseLoop> loops;
+  const auto crossing_point = [&](std::uint32_t c) {
+    const std::uint32_t u = crossing_edge[c][0], v = crossing_edge[c][1];
+    const double t = value[u] / (value[u] - value[v]);
+    return Vec3(mesh_a.positions[u] + t * (mesh_a.positions[v] - mesh_a.positions[u]));
+  };
+  // A crossing with one triangle beside it lies on the mesh's boundary: the crease leaves the box there.
+  const auto is_end = [&](std::uint32_t c) { return neighbour[c][1] < 0; };
   std::vector<std::uint8_t> visited(crossing_edge.size(), 0);
-  for (std::uint32_t start = 0; start < crossing_edge.size(); ++start) {
-    if (visited[start]) continue;
+  // The chain of crossings from `start` (an end: to the other end; else around to `start`).
+  const auto chain_from = [&](std::uint32_t start) {
     std::vector<std::uint32_t> chain;
     std::int64_t previous = -1, current = start;
     while (true) {
       const auto c = static_cast<std::uint32_t>(current);
-      if (neighbour[c][1] < 0)
-        throw CreaseError("the crease of max(a, b) leaves the box near " +
-                          point_text(mesh_a.positions[crossing_edge[c][0]]) +
-                          ": a curved cut is meshed when its solid lies inside the box");
       visited[c] = 1;
       chain.push_back(c);
       const std::int64_t next = neighbour[c][0] != previous ? neighbour[c][0] : neighbour[c][1];
+      if (next < 0 || (chain.size() > 1 && is_end(c))) break;
       previous = current;
       current = next;
       if (current == static_cast<std::int64_t>(start)) break;
     }
-    CreaseLoop loop;
-    for (std::uint32_t c : chain) {
-      const std::uint32_t u = crossing_edge[c][0], v = crossing_edge[c][1];
-      const double t = value[u] / (value[u] - value[v]);
-      loop.points.push_back(mesh_a.positions[u] + t * (mesh_a.positions[v] - mesh_a.positions[u]));
+    return chain;
+  };
+  std::vector<CreaseLoop> arcs, loops;
+  for (std::uint32_t start = 0; start < crossing_edge.size(); ++start) {
+    if (visited[start] || !is_end(start)) continue;
+    if (open_at == nullptr)
+      throw CreaseError("the crease of max(a, b) leaves the box near " +
+                        point_text(mesh_a.positions[crossing_edge[start][0]]) +
+                        ": a curved cut is meshed when its solid lies inside the box");
+    const std::vector<std::uint32_t> chain = chain_from(start);
+    CreaseLoop arc;
+    arc.closed = false;
+    for (std::uint32_t c : chain) arc.points.push_back(crossing_point(c));
+    for (const std::uint32_t c : {chain.front(), chain.back()}) {
+      Vec3& end = c == chain.front() ? arc.points.front() : arc.points.back();
+      end = arc_end(end, mesh_a.positions[crossing_edge[c][0]], mesh_a.positions[crossing_edge[c][1]], a, b,
+                    *open_at, edge, tolerance);
     }
+    if (chain.size() < 2 || !is_end(chain.back()))
+      throw CreaseError("the crease of max(a, b) ends inside the box near " + point_text(arc.points.back()));
+    arcs.push_back(std::move(arc));
+  }
+  for (std::uint32_t start = 0; start < crossing_edge.size(); ++start) {
+    if (visited[start]) continue;
+    CreaseLoop loop;
+    for (std::uint32_t c : chain_from(start)) loop.points.push_back(crossing_point(c));
     loops.push_back(std::move(loop));
   }
-  // On both surfaces, evenly spaced, in the direction grad a x grad b.
+  for (CreaseLoop& arc : arcs) loops.push_back(std::move(arc));
+  // On both surfaces, evenly spaced, in the direction grad a x grad b (an arc's ends stay where they are).
   for (CreaseLoop& loop : loops) {
-    settle_all(loop.points, a, b, edge, tolerance);
+    const std::size_t inner = loop.closed ? 0 : 1;
+    settle_all(loop.points, a, b, edge, tolerance, inner, loop.points.size() - inner);
     for (int round = 0; round < kResampleRounds; ++round) {
-      const double length = loop_length(loop.points);
-      const auto count = std::max<std::size_t>(3, static_cast<std::size_t>(std::lround(length / edge)));
-      loop.points = even_arc_length(loop.points, count);
-      settle_all(loop.points, a, b, edge, tolerance);
+      const double length = curve_length(loop.points, loop.closed);
+      const auto count = static_cast<std::size_t>(std::lround(length / edge));
+      loop.points = loop.closed ? even_arc_length(loop.points, std::max<std::size_t>(3, count))
+                                : even_arc_length_open(loop.points, std::max<std::size_t>(2, count));
+      settle_all(loop.points, a, b, edge, tolerance, inner, loop.points.size() - inner);
     }
     double along = 0.0;
-    const std::size_t m = loop.points.size();
-    const double spacing = loop_length(loop.points) / static_cast<double>(m);
-    for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t m = loop.points.size(), segments = loop.closed ? m : m - 1;
+    const double spacing = curve_length(loop.points, loop.closed) / static_cast<double>(segments);
+    for (std::size_t k = 0; k < segments; ++k) {
       const Vec3& p = loop.points[k];
       const Vec3 step = loop.points[(k + 1) % m] - p;
       if (step.norm() < kFoldedSpacing * spacing)

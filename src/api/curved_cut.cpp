@@ -7,6 +7,7 @@
 #include <isopatch/topology.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <chrono>
 #include <string>
 #include <utility>
@@ -17,6 +18,7 @@
 #include "api/task_arena_run.hpp"
 #include "api/zipped_face.hpp"
 #include "csg/capped_shape.hpp"
+#include "csg/crease_graph.hpp"
 
 namespace isopatch {
 
@@ -44,21 +46,25 @@ Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& b
 /// again at half the edge in `mesh_box` (the box `mesh` was made in), joined there, and the whole face
 /// cleaned up to the edge: twice the vertices across a strip or neck between creases.
 Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
-              bool reversed, double edge, const Settings& settings, const Box& box, const Box& mesh_box) {
+              bool reversed, double edge, const Settings& settings, const Box& box, const Box& mesh_box,
+              bool open, bool rejoin_ring) {
   try {
-    return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box);
+    return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box, false, rejoin_ring);
   } catch (const CreaseError&) {
     Settings finer = settings;
     finer.edge_length = 0.5 * edge;
-    const Mesh fine = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, true);
-    return zip_face_to_creases(fine, s, o, loops, reversed, edge, settings, box, true);
+    const Mesh fine = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, !open);
+    return zip_face_to_creases(fine, s, o, loops, reversed, edge, settings, box, true, rejoin_ring);
   }
 }
 
-/// The triangles of `mesh` within `rings` rings of its first `count` vertices (the crease's).
-Mesh near_crease(const Mesh& mesh, std::size_t count, int rings) {
+/// The triangles of `mesh` within `rings` rings of its first `count` vertices (the crease's) and of the
+/// vertices `also` flags (when given: the boundary on the box).
+Mesh near_crease(const Mesh& mesh, std::size_t count, int rings, const std::vector<std::uint8_t>* also = nullptr) {
   std::vector<std::uint8_t> near(mesh.positions.size(), 0);
   std::fill(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(count), 1);
+  if (also)
+    for (std::size_t v = 0; v < near.size(); ++v) near[v] = near[v] || (*also)[v];
   for (int ring = 0; ring < rings; ++ring) {
     std::vector<std::uint8_t> next(near);
     for (const Triangle& t : mesh.triangles)
@@ -77,6 +83,102 @@ bool closed_mesh(const Mesh& mesh) {
   return !mesh.triangles.empty() && analyze_topology(mesh).boundary_edges == 0;
 }
 
+/// Flags the vertices of `mesh` on its boundary edges.
+std::vector<std::uint8_t> boundary_vertices(const Mesh& mesh) {
+  std::vector<std::uint64_t> edges;
+  edges.reserve(3 * mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles)
+    for (std::size_t k = 0; k < 3; ++k) {
+      const auto [u, v] = std::minmax(t[k], t[(k + 1) % 3]);
+      edges.push_back((static_cast<std::uint64_t>(u) << 32) | v);
+    }
+  std::sort(edges.begin(), edges.end());
+  std::vector<std::uint8_t> on(mesh.positions.size(), 0);
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i == 1) on[edges[i] >> 32] = on[edges[i] & 0xffffffffu] = 1;
+    i = j;
+  }
+  return on;
+}
+
+/// The first boundary vertex of `mesh` (`on`) farther than `tolerance` from every face of `box`, if any.
+std::optional<Vec3> off_the_box(const Mesh& mesh, const std::vector<std::uint8_t>& on, const Box& box,
+                                double tolerance) {
+  for (std::size_t v = 0; v < on.size(); ++v) {
+    if (!on[v]) continue;
+    const Vec3& p = mesh.positions[v];
+    const double gap = std::min((p - box.lo).cwiseAbs().minCoeff(), (p - box.hi).cwiseAbs().minCoeff());
+    if (gap > tolerance) return p;
+  }
+  return std::nullopt;
+}
+
+/// What join_faces() puts together.
+struct JoinInput {
+  const Mesh& lattice_mesh;
+  const Mesh& cutter_mesh;
+  const SurfacePtr& lattice;
+  const SurfacePtr& cutter;
+  const std::vector<CreaseLoop>& loops;
+  std::size_t crease_vertices;
+  double edge;
+  const Settings& settings;
+  const Box& box;
+  const Box& lattice_box;
+  bool open;  ///< the box cuts the part: the crease holds arcs, the part's boundary lies on the box
+};
+
+/// Both faces trimmed and zipped to the crease (zip_face()), put together sharing the crease's vertices,
+/// their crease angles repaired (the boundary on the box held), and checked: a 2-manifold, outward,
+/// closed unless the box cuts it (then every boundary vertex on the box), no triangle near the crease or
+/// the box crossing another. `rejoin_ring`: each face's whole ring at the box is joined anew.
+/// \throw CreaseError naming the place where a check fails; the errors of zip_face().
+Mesh join_faces(const JoinInput& in, bool rejoin_ring, AngleRepair& repair) {
+  const std::size_t crease_vertices = in.crease_vertices;
+  Mesh mesh = zip_face(in.lattice_mesh, *in.lattice, *in.cutter, in.loops, false, in.edge, in.settings, in.box,
+                       in.lattice_box, in.open, rejoin_ring);
+  const Mesh other = zip_face(in.cutter_mesh, *in.cutter, *in.lattice, in.loops, true, in.edge, in.settings,
+                              in.box, in.box, in.open, rejoin_ring);
+  const auto offset = static_cast<std::uint32_t>(mesh.positions.size() - crease_vertices);
+  mesh.positions.insert(mesh.positions.end(),
+                        other.positions.begin() + static_cast<std::ptrdiff_t>(crease_vertices),
+                        other.positions.end());
+  for (Triangle t : other.triangles) {
+    for (std::uint32_t& v : t)
+      if (v >= crease_vertices) v += offset;
+    mesh.triangles.push_back(t);
+  }
+  // Where the box cuts the part, its boundary stays on the box's faces.
+  const std::vector<std::uint8_t> on_box = in.open ? boundary_vertices(mesh) : std::vector<std::uint8_t>{};
+  repair = repair_crease_angles(mesh, {in.lattice, in.cutter}, in.box, in.open ? &on_box : nullptr);
+  const TopologyReport topology = analyze_topology(mesh);
+  if (in.open) {
+    if (const std::optional<Vec3> p = off_the_box(mesh, on_box, in.box, kOnCrease * in.box.diagonal()))
+      throw CreaseError("the two solids' mesh has a boundary off the box near " + point_text(*p) +
+                        ": a feature narrower than an edge at the crease; a smaller --edge-length, or "
+                        "--creases off for a smooth mesh");
+  }
+  if ((!in.open && !topology.watertight()) || !topology.manifold() || !topology.consistently_oriented())
+    throw CreaseError("the two solids' mesh is not a closed 2-manifold (" +
+                      std::to_string(topology.boundary_edges) + " boundary edges, " +
+                      std::to_string(topology.non_manifold_edges + topology.non_manifold_vertices) +
+                      " non-manifold places): a feature narrower than an edge at the crease; a smaller "
+                      "--edge-length, or --creases off for a smooth mesh");
+  // The joins are new: no triangle near the crease (or the box, where the faces were joined to it) may
+  // cross another (a crease loop zipped to the wrong boundary, two creases closer than an edge).
+  const SelfIntersectionReport crossing =
+      find_self_intersections(near_crease(mesh, crease_vertices, 4, in.open ? &on_box : nullptr), 1);
+  if (crossing.pairs > 0) {
+    const Vec3& p = crossing.example_point;
+    throw CreaseError("the two solids' faces cross near their crease at (" + std::to_string(p.x()) + ", " +
+                      std::to_string(p.y()) + ", " + std::to_string(p.z()) +
+                      "): creases closer than an edge; a smaller --edge-length, or --creases off");
+  }
+  return mesh;
+}
+
 }  // namespace
 
 std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& settings, MeshStats* stats) {
@@ -92,15 +194,27 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
   plain.frame.reset();
   if (analyse_creases(*shape->first, plain) || analyse_creases(*shape->second, plain)) return std::nullopt;
   const double edge = default_edge_length(settings, box);
-  // The cutter: the operand whose solid lies in the box (the second first, as formulas write it).
+  // The cutter: the operand whose solid lies in the box (the second first, as formulas write it). When
+  // neither does, the box cuts the part open: both operands are meshed in it with their boundary on its
+  // faces, and the crease is cut into arcs from the box to the box.
   MeshStats cutter_stats;
   SurfacePtr lattice = shape->first, cutter = shape->second;
   Mesh cutter_mesh = mesh_operand(*cutter, settings, box, edge, &cutter_stats);
+  bool open = false;
+  std::optional<Mesh> open_lattice;
   if (!closed_mesh(cutter_mesh)) {
-    std::swap(lattice, cutter);
-    cutter_stats = MeshStats{};
-    cutter_mesh = mesh_operand(*cutter, settings, box, edge, &cutter_stats);
-    if (!closed_mesh(cutter_mesh)) return std::nullopt;
+    MeshStats first_stats;
+    Mesh first_mesh = mesh_operand(*lattice, settings, box, edge, &first_stats);
+    if (closed_mesh(first_mesh)) {
+      std::swap(lattice, cutter);
+      cutter_mesh = std::move(first_mesh);
+      cutter_stats = first_stats;
+    } else {
+      if (cutter_mesh.triangles.empty() || first_mesh.triangles.empty()) return std::nullopt;
+      open = true;
+      open_lattice = std::move(first_mesh);
+      if (stats) *stats = first_stats;
+    }
   }
   const double analysis = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   // The lattice only where the cutter's solid is, and a little beyond it, when that saves much; else in
@@ -109,8 +223,8 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
   const Box around = bounding_box(cutter_mesh);
   Box lattice_box{(around.lo - Vec3::Constant(3.0 * edge)).cwiseMax(box.lo),
                   (around.hi + Vec3::Constant(3.0 * edge)).cwiseMin(box.hi)};
-  if (lattice_box.size().prod() > kTrimmedShare * box.size().prod()) lattice_box = box;
-  Mesh lattice_mesh = mesh_operand(*lattice, settings, lattice_box, edge, stats, true);
+  if (open || lattice_box.size().prod() > kTrimmedShare * box.size().prod()) lattice_box = box;
+  Mesh lattice_mesh = open ? std::move(*open_lattice) : mesh_operand(*lattice, settings, lattice_box, edge, stats, true);
   const auto join_start = std::chrono::steady_clock::now();
   const double tolerance = kOnCrease * box.diagonal();
   Mesh mesh;
@@ -118,39 +232,22 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
   AngleRepair repair;
   run_in_task_arena(settings, stats, [&] {
     const std::vector<CreaseLoop> loops =
-        trace_crease_loops(lattice_mesh, *lattice, *cutter, edge, tolerance);
+        trace_crease_loops(lattice_mesh, *lattice, *cutter, edge, tolerance, open ? &box : nullptr);
     loops_count = loops.size();
     for (const CreaseLoop& loop : loops) crease_vertices += loop.points.size();
-    mesh = zip_face(lattice_mesh, *lattice, *cutter, loops, false, edge, settings, box, lattice_box);
-    const Mesh other = zip_face(cutter_mesh, *cutter, *lattice, loops, true, edge, settings, box, box);
-    const auto offset = static_cast<std::uint32_t>(mesh.positions.size() - crease_vertices);
-    mesh.positions.insert(mesh.positions.end(),
-                          other.positions.begin() + static_cast<std::ptrdiff_t>(crease_vertices),
-                          other.positions.end());
-    for (Triangle t : other.triangles) {
-      for (std::uint32_t& v : t)
-        if (v >= crease_vertices) v += offset;
-      mesh.triangles.push_back(t);
+    const JoinInput in{lattice_mesh, cutter_mesh, lattice, cutter, loops, crease_vertices, edge, settings,
+                       box, lattice_box, open};
+    try {
+      mesh = join_faces(in, false, repair);
+    } catch (const CreaseError&) {
+      // Where the box cuts the part and the faces' runs to the box do not close (a crease nearly along
+      // a face of the box), both faces' whole rings at the box are joined anew.
+      if (!open) throw;
+      repair = AngleRepair{};
+      mesh = join_faces(in, true, repair);
     }
-    repair = repair_crease_angles(mesh, {lattice, cutter}, box);
     return 0;
   });
-  const TopologyReport topology = analyze_topology(mesh);
-  if (!topology.watertight() || !topology.manifold() || !topology.consistently_oriented())
-    throw CreaseError("the two solids' mesh is not a closed 2-manifold (" +
-                      std::to_string(topology.boundary_edges) + " boundary edges, " +
-                      std::to_string(topology.non_manifold_edges + topology.non_manifold_vertices) +
-                      " non-manifold places): a feature narrower than an edge at the crease; a smaller "
-                      "--edge-length, or --creases off for a smooth mesh");
-  // The joins are new: no triangle near the crease may cross another (a crease loop zipped to the wrong
-  // boundary, two creases closer than an edge).
-  const SelfIntersectionReport crossing = find_self_intersections(near_crease(mesh, crease_vertices, 4), 1);
-  if (crossing.pairs > 0) {
-    const Vec3& p = crossing.example_point;
-    throw CreaseError("the two solids' faces cross near their crease at (" + std::to_string(p.x()) + ", " +
-                      std::to_string(p.y()) + ", " + std::to_string(p.z()) +
-                      "): creases closer than an edge; a smaller --edge-length, or --creases off");
-  }
   const double joining = std::chrono::duration<double>(std::chrono::steady_clock::now() - join_start).count();
   if (stats) {
     CreaseStats c;

@@ -17,9 +17,11 @@ namespace isopatch {
 
 /// The mesh of `surface` as two smooth solids intersected, or nullopt when it is not one: not a formula,
 /// not max(a, b) with both operands curved, creases off, another method, a region or cells given, an
-/// operand with creases of its own, or neither operand's solid inside the box (the part would leave it).
-/// The mesh is closed, outward, a 2-manifold; every crease vertex lies on a = 0 and b = 0 to 1e-9 of the
-/// box's diagonal, every other vertex on its face. `stats` holds the lattice operand's run with the
+/// operand with creases of its own, or an operand that does not cross the box. The mesh is outward and a
+/// 2-manifold, closed when one operand's solid lies inside the box; otherwise the box cuts the part open
+/// (a lattice inside a ball larger than the box): its boundary lies on the box's faces, and the crease
+/// runs in arcs from the box to the box whose ends lie on both surfaces and exactly on the face. Every
+/// crease vertex lies on a = 0 and b = 0 to 1e-9 of the box's diagonal, every other vertex on its face. `stats` holds the lattice operand's run with the
 /// other's vertices and the crease added (MeshStats::creases, stage "caps").
 /// \throw CreaseError naming the place when the faces cannot be joined (surfaces meeting tangentially,
 ///        a feature narrower than an edge at the crease); the errors of mesh_surface().

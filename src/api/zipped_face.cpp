@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "api/band_join.hpp"
+#include "api/box_boundary_loops.hpp"
 #include "api/exact_positions.hpp"
 #include "api/local_cleanup.hpp"
 #include "csg/crease_graph.hpp"
@@ -36,8 +38,16 @@ constexpr double kTrimWidths[] = {0.3, 0.15, 0.05};
 constexpr double kStripWidth = 1.5;
 /// The opening keeps what lies within this many rings of a vertex farther than kStripWidth edges.
 constexpr int kOpeningRings = 2;
+/// A crease loop no walk reached that is nowhere wider than this many edges (a sliver between a crease and
+/// the box, or between two creases), with at most kMostThinLoopPoints points, is closed by zipping its
+/// two halves.
+constexpr double kThinLoop = 2.0;
+constexpr std::size_t kMostThinLoopPoints = 400;
 /// The clean-up reaches this many rings from the band of new triangles.
 constexpr int kCleanedRings = 3;
+/// A vertex of the mesh's boundary on the box this close to an arc's end (in edges) is left out of the
+/// face's boundary there.
+constexpr double kNearArcEnd = 0.5;
 
 std::uint64_t half_edge_key(std::uint32_t u, std::uint32_t v) {
   return (static_cast<std::uint64_t>(u) << 32) | v;
@@ -164,11 +174,49 @@ bool small_loop(const std::vector<std::uint32_t>& loop, const std::vector<Vec3>&
                      [&](std::uint32_t v) { return (positions[v] - centre).norm() <= 2.0 * edge; });
 }
 
+/// A loop no wider than kThinLoop edges (a sliver of the face between a crease and the box) as its two
+/// halves between its two points farthest apart: the backward one first, both from the first of those
+/// points to the second (band_join.hpp zip_between closes it); nullopt when it is wider.
+std::optional<std::array<std::vector<std::uint32_t>, 2>> thin_loop_halves(const std::vector<std::uint32_t>& loop,
+                                                                         const std::vector<Vec3>& positions,
+                                                                         double edge) {
+  const std::size_t n = loop.size();
+  if (n < 4 || n > kMostThinLoopPoints) return std::nullopt;
+  std::size_t a = 0, b = 0;
+  double widest = -1.0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const double d = (positions[loop[i]] - positions[loop[j]]).norm();
+      if (d > widest) {
+        widest = d;
+        a = i;
+        b = j;
+      }
+    }
+  std::array<std::vector<std::uint32_t>, 2> halves;
+  for (std::size_t k = a;; k = (k + n - 1) % n) {
+    halves[0].push_back(loop[k]);
+    if (k == b) break;
+  }
+  for (std::size_t k = a;; k = (k + 1) % n) {
+    halves[1].push_back(loop[k]);
+    if (k == b) break;
+  }
+  for (int h = 0; h < 2; ++h)
+    for (std::uint32_t v : halves[static_cast<std::size_t>(h)]) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (std::uint32_t w : halves[static_cast<std::size_t>(1 - h)])
+        nearest = std::min(nearest, (positions[v] - positions[w]).norm());
+      if (nearest > kThinLoop * edge) return std::nullopt;
+    }
+  return halves;
+}
+
 }  // namespace
 
 Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
                          const std::vector<CreaseLoop>& loops, bool reversed, double edge,
-                         const Settings& settings, const Box& box, bool whole) {
+                         const Settings& settings, const Box& box, bool whole, bool rejoin_ring) {
   // The crease points first, every loop in this face's boundary direction.
   Mesh face;
   std::vector<std::vector<std::uint32_t>> crease;
@@ -193,6 +241,57 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
       throw EvaluationError("the cutting surface is not finite at " + point_text(mesh.positions[v]));
     distance[v] = n > 0.0 ? values[v].value / n : values[v].value;
   }
+  // Where the box cuts the part (the crease in arcs from the box to the box), the face's boundary loops
+  // are the arcs and the mesh's own boundary inside o between them (box_boundary_loops.hpp), its vertices
+  // copied after the crease's points; the trimmed face keeps those it reaches, and is joined to the rest.
+  std::vector<std::vector<std::uint32_t>> closed_loops, box_loops;
+  std::vector<std::uint8_t> left_out(mesh.positions.size(), 0);
+  std::unordered_map<std::uint32_t, std::uint32_t> copy;
+  std::vector<std::vector<Vec3>> arcs;
+  std::vector<std::size_t> arc_loop;
+  for (std::size_t k = 0; k < loops.size(); ++k) {
+    if (loops[k].closed) {
+      closed_loops.push_back(crease[k]);
+      continue;
+    }
+    arc_loop.push_back(k);
+    arcs.emplace_back();
+    for (std::uint32_t v : crease[k]) arcs.back().push_back(face.positions[v]);
+  }
+  if (!arcs.empty()) {
+    std::vector<std::uint8_t> inside(mesh.positions.size(), 0);
+    for (std::size_t v = 0; v < inside.size(); ++v) inside[v] = distance[v] < 0.0 ? 1 : 0;
+    for (const std::vector<BoundaryPoint>& loop : box_boundary_loops(mesh, inside, arcs, edge)) {
+      std::vector<std::uint32_t> ids;
+      const std::size_t n = loop.size();
+      const auto position = [&](const BoundaryPoint& p) -> const Vec3& {
+        return p.arc >= 0 ? arcs[static_cast<std::size_t>(p.arc)][p.index] : mesh.positions[p.index];
+      };
+      for (std::size_t k = 0; k < n; ++k) {
+        const BoundaryPoint& p = loop[k];
+        if (p.arc >= 0) {
+          ids.push_back(crease[arc_loop[static_cast<std::size_t>(p.arc)]][p.index]);
+          continue;
+        }
+        // A vertex of the mesh's boundary beside an arc's end, closer to it than kNearArcEnd edges, is
+        // left out (the boundary goes straight from the arc's end to the next vertex).
+        const BoundaryPoint& before = loop[(k + n - 1) % n];
+        const BoundaryPoint& after = loop[(k + 1) % n];
+        if (n > 4 && ((before.arc >= 0 && (position(before) - position(p)).norm() < kNearArcEnd * edge) ||
+                      (after.arc >= 0 && (position(after) - position(p)).norm() < kNearArcEnd * edge))) {
+          left_out[p.index] = 1;
+          continue;
+        }
+        const auto [it, added] = copy.emplace(p.index, static_cast<std::uint32_t>(face.positions.size()));
+        if (added) face.positions.push_back(mesh.positions[p.index]);
+        if (rejoin_ring) left_out[p.index] = 1;
+        ids.push_back(it->second);
+      }
+      box_loops.push_back(std::move(ids));
+    }
+  }
+  std::vector<std::vector<std::uint32_t>> walked;  // the loops the crease walk joins
+  const std::size_t joined_points = face.positions.size();
   // The mesh where o < 0, clear of the crease by a band, joined to it; a narrower band where that fails.
   std::optional<BandJoin> band;
   std::size_t kept_triangles = 0;
@@ -202,35 +301,46 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
     // pieces, then none (walked, where the strips branch).
     const double width = kTrimWidths[trial / 3];
     std::vector<std::uint8_t> keep(mesh.positions.size(), 0);
-    for (std::size_t v = 0; v < keep.size(); ++v) keep[v] = distance[v] < -width * edge ? 1 : 0;
+    for (std::size_t v = 0; v < keep.size(); ++v) keep[v] = distance[v] < -width * edge && !left_out[v] ? 1 : 0;
     std::vector<Triangle> kept;
     for (const Triangle& t : mesh.triangles)
       if (keep[t[0]] && keep[t[1]] && keep[t[2]]) kept.push_back(t);
     kept = without_pinches(std::move(kept));
     if (trial % 3 == 0) kept = opened(kept, distance, edge);
     if (trial % 3 == 1) kept = without_thin_pieces(kept, distance, edge);
-    face.positions.resize(held);
+    face.positions.resize(joined_points);
     face.triangles.clear();
     std::vector<std::int64_t> id(mesh.positions.size(), -1);
     for (const Triangle& t : kept) {
       Triangle f{};
       for (std::size_t k = 0; k < 3; ++k) {
         if (id[t[k]] < 0) {
-          id[t[k]] = static_cast<std::int64_t>(face.positions.size());
-          face.positions.push_back(mesh.positions[t[k]]);
+          const auto it = copy.find(t[k]);
+          if (it != copy.end()) {
+            id[t[k]] = it->second;
+          } else {
+            id[t[k]] = static_cast<std::int64_t>(face.positions.size());
+            face.positions.push_back(mesh.positions[t[k]]);
+          }
         }
         f[k] = static_cast<std::uint32_t>(id[t[k]]);
       }
       face.triangles.push_back(f);
     }
-    const std::vector<std::vector<std::uint32_t>> boundary = boundary_loops(face.triangles);
-    band = join_band({face.positions, crease, boundary, edge}, failure);
+    std::optional<BoxJoin> at_box = BoxJoin{{}, {}, boundary_loops(face.triangles)};
+    if (!box_loops.empty()) at_box = join_at_the_box(face.positions, box_loops, at_box->free_boundary, failure);
+    if (!at_box) continue;
+    walked = closed_loops;
+    walked.insert(walked.end(), at_box->free_loops.begin(), at_box->free_loops.end());
+    band = join_band({face.positions, walked, at_box->free_boundary, edge}, failure);
     if (!band) continue;
+    band->triangles.insert(band->triangles.end(), at_box->triangles.begin(), at_box->triangles.end());
     // Crease loops no walk reached and no strip took: faces under an edge, closed by fans.
-    for (std::size_t c = 0; c < crease.size() && band; ++c)
-      if (band->untouched[c] && !small_loop(crease[c], face.positions, edge)) {
+    for (std::size_t c = 0; c < walked.size() && band; ++c)
+      if (band->untouched[c] && !small_loop(walked[c], face.positions, edge) &&
+          !thin_loop_halves(walked[c], face.positions, edge)) {
         failure = "the face of max(a, b) has a crease with no face beside it near " +
-                  point_text(face.positions[crease[c].front()]) + ": creases closer than an edge";
+                  point_text(face.positions[walked[c].front()]) + ": creases closer than an edge";
         band.reset();
       }
     if (band) kept_triangles = face.triangles.size();
@@ -238,15 +348,20 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
   if (!band) throw CreaseError(failure + "; a smaller edge length");
   for (const Vec3& p : band->extra) face.positions.push_back(onto_surface(s, p));
   face.triangles.insert(face.triangles.end(), band->triangles.begin(), band->triangles.end());
-  for (std::size_t c = 0; c < crease.size(); ++c) {
+  for (std::size_t c = 0; c < walked.size(); ++c) {
     if (!band->untouched[c]) continue;
+    if (!small_loop(walked[c], face.positions, edge)) {
+      const auto halves = thin_loop_halves(walked[c], face.positions, edge);
+      zip_between(face.positions, (*halves)[0], (*halves)[1], face.triangles);
+      continue;
+    }
     Vec3 centre = Vec3::Zero();
-    for (std::uint32_t v : crease[c]) centre += face.positions[v];
-    centre /= static_cast<double>(crease[c].size());
+    for (std::uint32_t v : walked[c]) centre += face.positions[v];
+    centre /= static_cast<double>(walked[c].size());
     const auto middle = static_cast<std::uint32_t>(face.positions.size());
     face.positions.push_back(onto_surface(s, centre));
-    for (std::size_t k = 0; k < crease[c].size(); ++k)
-      face.triangles.push_back({crease[c][k], crease[c][(k + 1) % crease[c].size()], middle});
+    for (std::size_t k = 0; k < walked[c].size(); ++k)
+      face.triangles.push_back({walked[c][k], walked[c][(k + 1) % walked[c].size()], middle});
   }
   // The clean-up on s near the band, the crease held: its vertices come back bit for bit.
   RemeshSettings r = preset_remesh_settings(settings, kDefaultRemeshIterations);

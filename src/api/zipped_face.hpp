@@ -20,13 +20,16 @@ namespace isopatch {
 /// pieces, then none); the boundary loops left are walked to the crease loops (band_join.hpp); a crease
 /// loop no walk or strip reached, within two edges of its centroid, is closed by a fan; the band is
 /// cleaned up on s (`settings`' preset and sizes over `box`) with the loops held bit for bit, or the
-/// whole face when `whole` (a mesh finer than `edge`, brought to it). `reversed`: the loops run against
+/// whole face when `whole` (a mesh finer than `edge`, brought to it). Where the box cuts the face (`loops`
+/// ends with open arcs, after the closed loops; `mesh` open on the box's faces), the mesh's own boundary
+/// stays boundary and each run of the trimmed boundary from the box to the box is joined to the arc beside
+/// it (band_join.hpp join_open_runs). `reversed`: the loops run against
 /// this face's boundary direction (the face on o, whose side is on the right of grad s x grad o). The
 /// result's first vertices are the loops' points, in loop order; its triangles run along grad s.
 /// \throw CreaseError naming the place when no trim joins (creases closer than the band, branching
 ///        strips); EvaluationError where o is not finite; the errors of remesh_on_surface().
 Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
                          const std::vector<CreaseLoop>& loops, bool reversed, double edge,
-                         const Settings& settings, const Box& box, bool whole = false);
+                         const Settings& settings, const Box& box, bool whole = false, bool rejoin_ring = false);
 
 }  // namespace isopatch

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -97,7 +99,7 @@ TEST(CreaseLoops, TwoBallsMeetInOneEvenCircleOnBothTurningWithTheirGradients) {
   EXPECT_LT(longest / shortest, 1.05);
 }
 
-TEST(CreaseLoops, ACreaseLeavingTheMeshIsRefused) {
+TEST(CreaseLoops, ACreaseLeavingTheMeshIsRefusedUnlessTheBoxCutsIt) {
   const Box box = cut_box(1.0);
   const SurfacePtr a = expression_surface("z", box);
   const SurfacePtr b = expression_surface("x^2+y^2-4", box);
@@ -107,6 +109,35 @@ TEST(CreaseLoops, ACreaseLeavingTheMeshIsRefused) {
   EXPECT_TRUE(trace_crease_loops(plane, *a, *b, 0.2, 1e-12).empty());
   const SurfacePtr d = expression_surface("x-0.1", box);
   EXPECT_THROW(trace_crease_loops(plane, *a, *d, 0.2, 1e-12), CreaseError);
+  // Cut by the box: one arc from y = -1 to y = 1 (grad a x grad b = +y), its ends exactly on those faces.
+  const std::vector<CreaseLoop> arcs = trace_crease_loops(plane, *a, *d, 0.2, 1e-12, &box);
+  ASSERT_EQ(arcs.size(), 1u);
+  const std::vector<Vec3>& p = arcs[0].points;
+  EXPECT_FALSE(arcs[0].closed);
+  ASSERT_EQ(p.size(), 11u);
+  EXPECT_EQ(p.front().y(), -1.0);
+  EXPECT_EQ(p.back().y(), 1.0);
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    EXPECT_NEAR(p[k].x(), 0.1, 1e-12);
+    EXPECT_NEAR(p[k].z(), 0.0, 1e-12);
+    EXPECT_NEAR(p[k].y(), -1.0 + 0.2 * static_cast<double>(k), 1e-9);
+  }
+}
+
+TEST(CreaseLoops, AnArcEndsOnTheTwoFacesOfTheBoxItCrosses) {
+  // The crease x + y = 1.5, z = 0 crosses the corner of the box from the face y = 1 to the face x = 1,
+  // along grad a x grad b = (-1, 1, 0).
+  const Box box = cut_box(1.0);
+  const SurfacePtr a = expression_surface("z", box);
+  const SurfacePtr d = expression_surface("x+y-1.5", box);
+  const Mesh plane = mesh_in(*a, box, 0.2);
+  const std::vector<CreaseLoop> arcs = trace_crease_loops(plane, *a, *d, 0.2, 1e-12, &box);
+  ASSERT_EQ(arcs.size(), 1u);
+  EXPECT_EQ(arcs[0].points.front().x(), 1.0);
+  EXPECT_NEAR(arcs[0].points.front().y(), 0.5, 1e-12);
+  EXPECT_NEAR(arcs[0].points.back().x(), 0.5, 1e-12);
+  EXPECT_EQ(arcs[0].points.back().y(), 1.0);
+  EXPECT_GE(arcs[0].points.size(), 4u);
 }
 
 std::vector<SurfacePtr> cut_faces(const std::string& lattice) {
@@ -171,20 +202,95 @@ TEST(CurvedCut, ARotatedFrameKeepsTheCreaseAndTheTopology) {
   EXPECT_EQ(analyze_topology(turned.mesh).genus, analyze_topology(plain.mesh).genus);
 }
 
-TEST(CurvedCut, ABallLeavingTheBoxIsNotTakenForACut) {
-  // Neither operand's solid lies in the box: the general crease path decides (here: refused, with the
-  // way out named), never an open mesh passed off as the part.
+/// The vertices of `mesh` on its boundary edges.
+std::vector<std::uint32_t> boundary_of(const Mesh& mesh) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
+  for (const Triangle& t : mesh.triangles)
+    for (std::size_t k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
+  std::vector<std::uint32_t> out;
+  for (const auto& [e, n] : count)
+    if (n == 1) out.insert(out.end(), {e.first, e.second});
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+/// The gyroid inside a ball of radius^2 `r2` that the box [-3, 3]^3 cuts.
+test::CappedRun mesh_open_cut(double edge, const std::string& r2 = "16") {
   test::CappedRun run;
-  run.surface = expression_surface("max(" + kCutGyroid + ",x^2+y^2+z^2-16)", cut_box(3.0));
+  const std::string part = "max(" + kCutGyroid + ",x^2+y^2+z^2-" + r2 + ")";
+  run.surface = expression_surface(part, cut_box(3.0));
   Settings s;
   s.box = cut_box(3.0);
-  s.edge_length = 0.25;
-  try {
-    run.mesh = mesh_surface(*run.surface, s, &run.stats);
-    EXPECT_NE(run.stats.creases ? run.stats.creases->faces : 0u, 2u);
-  } catch (const CreaseError& e) {
-    EXPECT_NE(std::string(e.what()).find("creases off"), std::string::npos);
+  s.edge_length = edge;
+  run.mesh = mesh_surface(*run.surface, s, &run.stats);
+  return run;
+}
+
+TEST(CurvedCut, ABallLeavingTheBoxCutsThePartOpenAlongItsCrease) {
+  // Neither solid lies in the box: the box cuts the part open. Its boundary lies exactly on the box's
+  // faces, the crease runs in arcs from the box to the box, every crease vertex on both surfaces.
+  const test::CappedRun run = mesh_open_cut(0.15);
+  const Box box = cut_box(3.0);
+  const TopologyReport t = analyze_topology(run.mesh);
+  EXPECT_FALSE(t.watertight());
+  EXPECT_TRUE(t.manifold());
+  EXPECT_TRUE(t.consistently_oriented());
+  EXPECT_EQ(t.unreferenced_vertices, 0u);
+  EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
+  ASSERT_TRUE(run.stats.creases);
+  EXPECT_EQ(run.stats.creases->faces, 2u);
+  EXPECT_GT(run.stats.creases->creases, 0u);
+  const std::vector<std::uint32_t> boundary = boundary_of(run.mesh);
+  ASSERT_FALSE(boundary.empty());
+  for (std::uint32_t v : boundary) {
+    const Vec3& p = run.mesh.positions[v];
+    EXPECT_LT(std::min((p - box.lo).cwiseAbs().minCoeff(), (p - box.hi).cwiseAbs().minCoeff()), 1e-12)
+        << p.transpose();
   }
+  const SurfacePtr gyroid = expression_surface(kCutGyroid, box);
+  const SurfacePtr ball = expression_surface("x^2+y^2+z^2-16", box);
+  std::size_t crease = 0, crease_on_box = 0;
+  for (const Vec3& p : run.mesh.positions) {
+    const double on_gyroid = std::abs(gyroid->value(p)) / gyroid->value_gradient(p).gradient.norm();
+    const double on_ball = std::abs(ball->value(p)) / ball->value_gradient(p).gradient.norm();
+    EXPECT_LT(std::min(on_gyroid, on_ball), 1e-9 * box.diagonal());
+    if (on_gyroid < 1e-9 * box.diagonal() && on_ball < 1e-9 * box.diagonal()) {
+      ++crease;
+      if (std::min((p - box.lo).cwiseAbs().minCoeff(), (p - box.hi).cwiseAbs().minCoeff()) == 0.0)
+        ++crease_on_box;
+    }
+  }
+  EXPECT_GE(run.stats.creases->crease_vertices, crease);
+  EXPECT_GT(crease, 0u);
+  // Every arc's two ends lie exactly on the box.
+  EXPECT_GE(crease_on_box, 2u);
+  EXPECT_EQ(crease_on_box % 2, 0u);
+  const std::vector<int> valence = test::valences(run.mesh);
+  std::size_t interior_six = 0, interior = 0;
+  const std::vector<std::uint32_t>& b = boundary;
+  for (std::uint32_t v = 0; v < valence.size(); ++v)
+    if (!std::binary_search(b.begin(), b.end(), v)) {
+      ++interior;
+      interior_six += valence[v] == 6 ? 1 : 0;
+    }
+  EXPECT_GE(static_cast<double>(interior_six) / static_cast<double>(interior), 0.85);
+}
+
+TEST(CurvedCut, ThePartCutOpenByTheBoxHasTheTopologyOfAFinerMesh) {
+  const test::CappedRun coarse = mesh_open_cut(0.2, "12.25");
+  const test::CappedRun fine = mesh_open_cut(0.1, "12.25");
+  const TopologyReport c = analyze_topology(coarse.mesh), f = analyze_topology(fine.mesh);
+  ASSERT_TRUE(coarse.stats.creases && fine.stats.creases);
+  EXPECT_EQ(coarse.stats.creases->creases, fine.stats.creases->creases);
+  EXPECT_EQ(c.euler_characteristic, f.euler_characteristic);
+  EXPECT_EQ(c.components.size(), f.components.size());
+  const auto loops = [](const TopologyReport& r) {
+    std::size_t n = 0;
+    for (const ComponentTopology& k : r.components) n += k.boundary_loops;
+    return n;
+  };
+  EXPECT_EQ(loops(c), loops(f));
 }
 
 }  // namespace
