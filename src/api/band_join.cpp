@@ -67,7 +67,8 @@ constexpr std::size_t kMostNeckArcs = 6;
 /// The nearest crease point within a few edges (core/point_grid.hpp, cubes of the reach).
 class CreaseGrid {
  public:
-  CreaseGrid(const std::vector<Vec3>& points, const std::vector<std::vector<std::uint32_t>>& loops, double cell)
+  CreaseGrid(const std::vector<Vec3>& points, const std::vector<std::vector<std::uint32_t>>& loops,
+             double cell)
       : points_(points), grid_(cell) {
     for (const std::vector<std::uint32_t>& loop : loops)
       for (std::uint32_t k : loop) grid_.insert(points[k], k);

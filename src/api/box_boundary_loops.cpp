@@ -66,7 +66,8 @@ struct Crossing {
 
 }  // namespace
 
-std::vector<std::vector<BoundaryPoint>> box_boundary_loops(const Mesh& mesh, const std::vector<std::uint8_t>& inside,
+std::vector<std::vector<BoundaryPoint>> box_boundary_loops(const Mesh& mesh,
+                                                           const std::vector<std::uint8_t>& inside,
                                                            const std::vector<std::vector<Vec3>>& arcs,
                                                            double reach) {
   const std::vector<std::vector<std::uint32_t>> loops = mesh_boundary_loops(mesh);
@@ -98,16 +99,18 @@ std::vector<std::vector<BoundaryPoint>> box_boundary_loops(const Mesh& mesh, con
       for (std::size_t k = 0; k < crossings.size(); ++k) {
         const std::vector<std::uint32_t>& loop = loops[crossings[k].loop];
         const std::size_t i = crossings[k].index;
-        const double d = to_segment(end, mesh.positions[loop[i]], mesh.positions[loop[(i + 1) % loop.size()]]);
+        const double d =
+            to_segment(end, mesh.positions[loop[i]], mesh.positions[loop[(i + 1) % loop.size()]]);
         if (!taken[k] && d <= best) {
           best = d;
           of_arc[c] = k;
         }
       }
       if (!of_arc[c])
-        throw CreaseError("the crease of max(a, b) reaches the box near " + point_text(end) +
-                          " where the face's boundary on the box does not cross it: creases closer than an edge "
-                          "at the box");
+        throw CreaseError(
+            "the crease of max(a, b) reaches the box near " + point_text(end) +
+            " where the face's boundary on the box does not cross it: creases closer than an edge "
+            "at the box");
       taken[*of_arc[c]] = 1;
     }
     for (std::size_t k = 0; k < crossings.size(); ++k)

@@ -30,7 +30,8 @@ struct BoundaryPoint {
 /// from negative to positive, its last to one where it turns back, the nearest within `reach` of each.
 /// \throw CreaseError naming the place when an arc end has no such edge near it, or an edge where o changes
 ///        sign has no arc end (a crease the tracing missed, or one closer to another than `reach`).
-std::vector<std::vector<BoundaryPoint>> box_boundary_loops(const Mesh& mesh, const std::vector<std::uint8_t>& inside,
+std::vector<std::vector<BoundaryPoint>> box_boundary_loops(const Mesh& mesh,
+                                                           const std::vector<std::uint8_t>& inside,
                                                            const std::vector<std::vector<Vec3>>& arcs,
                                                            double reach);
 

@@ -76,7 +76,8 @@ Vec3 arc_end(const Vec3& p, const Vec3& u, const Vec3& v, const Surface& a, cons
       }
   if (faces != 1)
     throw CreaseError("the crease of max(a, b) leaves the box " +
-                      std::string(faces == 0 ? "off its faces" : "at an edge of it") + " near " + point_text(p));
+                      std::string(faces == 0 ? "off its faces" : "at an edge of it") + " near " +
+                      point_text(p));
   const SurfacePtr face = plane_surface(Vec3::Unit(axis), level, box);
   const std::optional<Vec3> end = settle_on_corner(a, b, *face, p, settle_params(edge, tolerance));
   if (!end)

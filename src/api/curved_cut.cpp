@@ -7,8 +7,8 @@
 #include <isopatch/topology.hpp>
 
 #include <algorithm>
-#include <optional>
 #include <chrono>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -60,7 +60,8 @@ Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::v
 
 /// The triangles of `mesh` within `rings` rings of its first `count` vertices (the crease's) and of the
 /// vertices `also` flags (when given: the boundary on the box).
-Mesh near_crease(const Mesh& mesh, std::size_t count, int rings, const std::vector<std::uint8_t>* also = nullptr) {
+Mesh near_crease(const Mesh& mesh, std::size_t count, int rings,
+                 const std::vector<std::uint8_t>* also = nullptr) {
   std::vector<std::uint8_t> near(mesh.positions.size(), 0);
   std::fill(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(count), 1);
   if (also)
@@ -137,8 +138,8 @@ struct JoinInput {
 /// \throw CreaseError naming the place where a check fails; the errors of zip_face().
 Mesh join_faces(const JoinInput& in, bool rejoin_ring, AngleRepair& repair) {
   const std::size_t crease_vertices = in.crease_vertices;
-  Mesh mesh = zip_face(in.lattice_mesh, *in.lattice, *in.cutter, in.loops, false, in.edge, in.settings, in.box,
-                       in.lattice_box, in.open, rejoin_ring);
+  Mesh mesh = zip_face(in.lattice_mesh, *in.lattice, *in.cutter, in.loops, false, in.edge, in.settings,
+                       in.box, in.lattice_box, in.open, rejoin_ring);
   const Mesh other = zip_face(in.cutter_mesh, *in.cutter, *in.lattice, in.loops, true, in.edge, in.settings,
                               in.box, in.box, in.open, rejoin_ring);
   const auto offset = static_cast<std::uint32_t>(mesh.positions.size() - crease_vertices);
@@ -185,20 +186,26 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
   if (settings.creases == Creases::Off || settings.method != Method::Projection || !settings.cells.empty() ||
       !settings.region.empty() || !surface.expression())
     return std::nullopt;
-  const auto start = std::chrono::steady_clock::now();
   const Box box = settings.box.value_or(surface.box());
   std::optional<CutShape> shape = split_cut_shape(surface, box);
   if (!shape) return std::nullopt;
   Settings plain = settings;
   plain.box = box;
+  return mesh_two_solids(*shape, plain, stats);
+}
+
+std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& settings, MeshStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  const Box box = *settings.box;
+  Settings plain = settings;
   plain.frame.reset();
-  if (analyse_creases(*shape->first, plain) || analyse_creases(*shape->second, plain)) return std::nullopt;
+  if (analyse_creases(*shape.first, plain) || analyse_creases(*shape.second, plain)) return std::nullopt;
   const double edge = default_edge_length(settings, box);
   // The cutter: the operand whose solid lies in the box (the second first, as formulas write it). When
   // neither does, the box cuts the part open: both operands are meshed in it with their boundary on its
   // faces, and the crease is cut into arcs from the box to the box.
   MeshStats cutter_stats;
-  SurfacePtr lattice = shape->first, cutter = shape->second;
+  SurfacePtr lattice = shape.first, cutter = shape.second;
   Mesh cutter_mesh = mesh_operand(*cutter, settings, box, edge, &cutter_stats);
   bool open = false;
   std::optional<Mesh> open_lattice;
@@ -224,7 +231,8 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
   Box lattice_box{(around.lo - Vec3::Constant(3.0 * edge)).cwiseMax(box.lo),
                   (around.hi + Vec3::Constant(3.0 * edge)).cwiseMin(box.hi)};
   if (open || lattice_box.size().prod() > kTrimmedShare * box.size().prod()) lattice_box = box;
-  Mesh lattice_mesh = open ? std::move(*open_lattice) : mesh_operand(*lattice, settings, lattice_box, edge, stats, true);
+  Mesh lattice_mesh =
+      open ? std::move(*open_lattice) : mesh_operand(*lattice, settings, lattice_box, edge, stats, true);
   const auto join_start = std::chrono::steady_clock::now();
   const double tolerance = kOnCrease * box.diagonal();
   Mesh mesh;
@@ -235,8 +243,8 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
         trace_crease_loops(lattice_mesh, *lattice, *cutter, edge, tolerance, open ? &box : nullptr);
     loops_count = loops.size();
     for (const CreaseLoop& loop : loops) crease_vertices += loop.points.size();
-    const JoinInput in{lattice_mesh, cutter_mesh, lattice, cutter, loops, crease_vertices, edge, settings,
-                       box, lattice_box, open};
+    const JoinInput in{lattice_mesh, cutter_mesh, lattice, cutter,      loops, crease_vertices,
+                       edge,         settings,    box,     lattice_box, open};
     try {
       mesh = join_faces(in, false, repair);
     } catch (const CreaseError&) {

@@ -13,6 +13,8 @@
 
 #include <optional>
 
+#include "csg/capped_shape.hpp"
+
 namespace isopatch {
 
 /// The mesh of `surface` as two smooth solids intersected, or nullopt when it is not one: not a formula,
@@ -21,10 +23,15 @@ namespace isopatch {
 /// 2-manifold, closed when one operand's solid lies inside the box; otherwise the box cuts the part open
 /// (a lattice inside a ball larger than the box): its boundary lies on the box's faces, and the crease
 /// runs in arcs from the box to the box whose ends lie on both surfaces and exactly on the face. Every
-/// crease vertex lies on a = 0 and b = 0 to 1e-9 of the box's diagonal, every other vertex on its face. `stats` holds the lattice operand's run with the
-/// other's vertices and the crease added (MeshStats::creases, stage "caps").
-/// \throw CreaseError naming the place when the faces cannot be joined (surfaces meeting tangentially,
+/// crease vertex lies on a = 0 and b = 0 to 1e-9 of the box's diagonal, every other vertex on its face.
+/// `stats` holds the lattice operand's run with the other's vertices and the crease added
+/// (MeshStats::creases, stage "caps"). \throw CreaseError naming the place when the faces cannot be joined
+/// (surfaces meeting tangentially,
 ///        a feature narrower than an edge at the crease); the errors of mesh_surface().
 std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& settings, MeshStats* stats);
+
+/// mesh_curved_cut() for the two operands of `shape` in `settings.box` (given): nullopt when an operand
+/// has creases of its own or does not cross the box. \throw as mesh_curved_cut().
+std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& settings, MeshStats* stats);
 
 }  // namespace isopatch

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "api/capped_curved_cut.hpp"
 #include "api/capped_meshing.hpp"
 #include "api/clipped_creases.hpp"
 #include "api/crease_meshing.hpp"
@@ -364,6 +365,16 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
           "--edge-length finds a part thinner than the edge)");
     return mesh;
   };
+  std::string cut_failure;
+  // Two smooth solids capped by planes across the axes (a lattice in a cylinder capped at both ends): cut
+  // open by the planes' box, closed by planar caps. Where that fails, the paths below are tried.
+  try {
+    if (std::optional<Mesh> cut = mesh_capped_curved_cut(surface, time.next(), stats))
+      return not_empty(std::move(*cut));
+  } catch (const CreaseError& e) {
+    cut_failure = e.what();
+    if (stats) *stats = before;
+  }
   try {
     if (std::optional<Mesh> capped = mesh_capped_shape(surface, time.next(), stats))
       return not_empty(std::move(*capped));
@@ -372,7 +383,6 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
   }
   // Two smooth solids intersected (a lattice cut by a sphere) are their trimmed faces joined along the
   // crease, whatever the faces' genus; where they cannot be joined, the general crease path meshes them.
-  std::string cut_failure;
   try {
     if (std::optional<Mesh> cut = mesh_curved_cut(surface, time.next(), stats))
       return not_empty(std::move(*cut));

@@ -80,8 +80,9 @@ struct EdgeChains {
 class CapBuilder {
  public:
   CapBuilder(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, std::size_t capped,
-             const Box& box, double edge, double tolerance, const Settings& settings)
-      : mesh_(mesh),
+             const Box& box, double edge, double tolerance, const Settings& settings, bool narrow_corners)
+      : narrow_corners_(narrow_corners),
+        mesh_(mesh),
         smooth_(smooth),
         planes_(planes),
         capped_(capped),
@@ -107,7 +108,7 @@ class CapBuilder {
 
   CapReport run() {
     // The cut's own narrow corners, where it meets a polyhedron edge or corner (cap_wedges.hpp).
-    if (smooth_) {
+    if (smooth_ && narrow_corners_) {
       std::vector<bool> held(mesh_.positions.size(), false);
       for (std::uint32_t v : cut_vertices_) held[v] = true;
       open_narrow_corners(mesh_, *smooth_, held, kNarrowCorner, kSettle * tol_);
@@ -150,6 +151,7 @@ class CapBuilder {
   }
 
  private:
+  bool narrow_corners_;
   Mesh& mesh_;
   const Surface* smooth_;
   const ConvexRegion& planes_;
@@ -390,8 +392,9 @@ class CapBuilder {
 }  // namespace
 
 CapReport close_with_caps(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, std::size_t capped,
-                          const Box& box, double edge, double tolerance, const Settings& settings) {
-  return CapBuilder(mesh, smooth, planes, capped, box, edge, tolerance, settings).run();
+                          const Box& box, double edge, double tolerance, const Settings& settings,
+                          bool narrow_corners) {
+  return CapBuilder(mesh, smooth, planes, capped, box, edge, tolerance, settings, narrow_corners).run();
 }
 
 }  // namespace isopatch

@@ -30,10 +30,13 @@ struct CapReport {
 /// with one cap per plane that the solid g <= 0 meets, oriented along the plane's normal, at edge length
 /// `edge`. `settings` give the clean-up's preset; `box` clips the planes' polygons: where the polyhedron
 /// leaves it, the box cuts the part open (the cut's boundary edges on the box's faces or a region's planes
-/// and the caps' sides there stay boundary, exactly on them). \throw CreaseError naming the place when a
+/// and the caps' sides there stay boundary, exactly on them). `narrow_corners`: the cut's narrow corners
+/// at the planes opened first (cap_wedges.hpp; off for a cut of two faces, whose flips would cross their
+/// crease). \throw CreaseError naming the place when a
 /// boundary edge lies on no plane or box face, or a cap's
 ///        boundary does not bound a region (curves crossing, not closing).
 CapReport close_with_caps(Mesh& mesh, const Surface* smooth, const ConvexRegion& planes, std::size_t capped,
-                          const Box& box, double edge, double tolerance, const Settings& settings);
+                          const Box& box, double edge, double tolerance, const Settings& settings,
+                          bool narrow_corners = true);
 
 }  // namespace isopatch

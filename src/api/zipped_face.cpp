@@ -177,9 +177,8 @@ bool small_loop(const std::vector<std::uint32_t>& loop, const std::vector<Vec3>&
 /// A loop no wider than kThinLoop edges (a sliver of the face between a crease and the box) as its two
 /// halves between its two points farthest apart: the backward one first, both from the first of those
 /// points to the second (band_join.hpp zip_between closes it); nullopt when it is wider.
-std::optional<std::array<std::vector<std::uint32_t>, 2>> thin_loop_halves(const std::vector<std::uint32_t>& loop,
-                                                                         const std::vector<Vec3>& positions,
-                                                                         double edge) {
+std::optional<std::array<std::vector<std::uint32_t>, 2>> thin_loop_halves(
+    const std::vector<std::uint32_t>& loop, const std::vector<Vec3>& positions, double edge) {
   const std::size_t n = loop.size();
   if (n < 4 || n > kMostThinLoopPoints) return std::nullopt;
   std::size_t a = 0, b = 0;
@@ -301,7 +300,8 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
     // pieces, then none (walked, where the strips branch).
     const double width = kTrimWidths[trial / 3];
     std::vector<std::uint8_t> keep(mesh.positions.size(), 0);
-    for (std::size_t v = 0; v < keep.size(); ++v) keep[v] = distance[v] < -width * edge && !left_out[v] ? 1 : 0;
+    for (std::size_t v = 0; v < keep.size(); ++v)
+      keep[v] = distance[v] < -width * edge && !left_out[v] ? 1 : 0;
     std::vector<Triangle> kept;
     for (const Triangle& t : mesh.triangles)
       if (keep[t[0]] && keep[t[1]] && keep[t[2]]) kept.push_back(t);
@@ -328,7 +328,8 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
       face.triangles.push_back(f);
     }
     std::optional<BoxJoin> at_box = BoxJoin{{}, {}, boundary_loops(face.triangles)};
-    if (!box_loops.empty()) at_box = join_at_the_box(face.positions, box_loops, at_box->free_boundary, failure);
+    if (!box_loops.empty())
+      at_box = join_at_the_box(face.positions, box_loops, at_box->free_boundary, failure);
     if (!at_box) continue;
     walked = closed_loops;
     walked.insert(walked.end(), at_box->free_loops.begin(), at_box->free_loops.end());

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include <isopatch/expression.hpp>
@@ -197,7 +199,12 @@ std::optional<ShelledShape> split_shelled_shape(const Surface& f, const Box& box
   return std::nullopt;
 }
 
-std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box) {
+namespace {
+
+/// f's leaves as max(c_1, ..., c_m, p_1, ..., p_k): the curved operands (formulas of their own) and the
+/// planes (unit normals out of the solid, duplicates kept once); nullopt when f is not such a tree, a
+/// leaf is a constant or more than kMaxCapPlanes planes.
+std::optional<std::pair<std::vector<Expression>, ConvexRegion>> max_leaves(const Surface& f) {
   const Expression* formula = f.expression();
   if (formula == nullptr) return std::nullopt;
   const Tape& tape = formula->tape();
@@ -205,14 +212,13 @@ std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box) 
   LeafWalk walk(tape);
   std::vector<BranchChoice> leaves;
   if (!walk.run(leaves) || leaves.size() < 2) return std::nullopt;
-  std::optional<Expression> smooth;
+  std::vector<Expression> curved;
   ConvexRegion planes;
   for (const BranchChoice& leaf : leaves) {
     const Kind kind = walk.leaf_kind(leaf);
     Expression e(std::make_shared<const Tape>(walk.leaf_tape(leaf)));
     if (kind == Kind::Other) {
-      if (smooth) return std::nullopt;  // two curved operands: a crease between them, not a cap
-      smooth = std::move(e);
+      curved.push_back(std::move(e));
       continue;
     }
     if (kind != Kind::Affine) return std::nullopt;  // a constant operand: no plane
@@ -225,9 +231,36 @@ std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box) 
                                       [&h](const HalfSpace& o) { return same_plane(h, o, 1e-14); });
     if (!repeated) planes.push_back(h);
   }
-  if (planes.empty() || planes.size() > kMaxCapPlanes) return std::nullopt;
-  SurfacePtr g = smooth ? expression_surface(std::move(*smooth), box, "the smooth operand") : nullptr;
-  return CappedShape{std::move(g), std::move(planes)};
+  if (planes.size() > kMaxCapPlanes) return std::nullopt;
+  return std::make_pair(std::move(curved), std::move(planes));
+}
+
+}  // namespace
+
+std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box) {
+  std::optional<std::pair<std::vector<Expression>, ConvexRegion>> leaves = max_leaves(f);
+  // Two curved operands: a crease between them, not a cap.
+  if (!leaves || leaves->first.size() > 1 || leaves->second.empty()) return std::nullopt;
+  SurfacePtr g = leaves->first.empty()
+                     ? nullptr
+                     : expression_surface(std::move(leaves->first.front()), box, "the smooth operand");
+  return CappedShape{std::move(g), std::move(leaves->second)};
+}
+
+std::optional<CappedCutShape> split_capped_cut_shape(const Surface& f, const Box& box) {
+  std::optional<std::pair<std::vector<Expression>, ConvexRegion>> leaves = max_leaves(f);
+  if (!leaves || leaves->second.empty()) return std::nullopt;
+  if (leaves->first.size() == 2)
+    return CappedCutShape{
+        CutShape{expression_surface(std::move(leaves->first[0]), box, "the first operand"),
+                 expression_surface(std::move(leaves->first[1]), box, "the second operand")},
+        std::move(leaves->second)};
+  // max(max(a, b), planes): the operand with no plane under it is one leaf, itself two solids.
+  if (leaves->first.size() != 1) return std::nullopt;
+  const SurfacePtr both = expression_surface(std::move(leaves->first.front()), box, "the solids");
+  std::optional<CutShape> solids = split_cut_shape(*both, box);
+  if (!solids) return std::nullopt;
+  return CappedCutShape{std::move(*solids), std::move(leaves->second)};
 }
 
 std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box) {

@@ -42,6 +42,18 @@ struct CutShape {
 /// nullopt for any other formula (nothing is evaluated; `f` without an expression gives nullopt).
 std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box);
 
+/// Two smooth solids capped by planes: f = max(a, b, p_1, ..., p_k) as split_capped_shape() reads it but
+/// with exactly two curved leaves (a lattice inside a cylinder capped at both ends:
+/// max(gyroid, x^2 + y^2 - r^2, abs(z) - h)).
+struct CappedCutShape {
+  CutShape solids;      ///< a and b, in the formula's order
+  ConvexRegion planes;  ///< unit normals out of the solid; p_i = n . x + d
+};
+
+/// Splits `f` when it is such a shape; nullopt for any other formula (nothing is evaluated but the
+/// planes' coefficients).
+std::optional<CappedCutShape> split_capped_cut_shape(const Surface& f, const Box& box);
+
 /// A lattice closed by a skin: f = min(max(g, P), max(P, -R)) (either order, through increasing steps
 /// at the root; each operand a capped shape as above): the polyhedron P of the part's planes, solid
 /// between it and the inner polyhedron R, the lattice g < 0 inside R ("a lattice shelled by its box").

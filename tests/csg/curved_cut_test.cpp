@@ -13,10 +13,10 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <utility>
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "api/crease_loops.hpp"
