@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The lattice catalogue of docs/lattices.md: each TPMS as a solid (f < 0) and a sheet (|f| - t < 0)
-# capped by the box of two periods (CUT=box) or cut by the ball of radius 6 (CUT=ball), meshed at 1/N
-# of the part's side (diameter); prints one Markdown row per part
+# capped by the box of two periods (CUT=box), cut by the ball of radius 6 (CUT=ball), inside the cylinder
+# of radius 6 capped at z = +-6 (CUT=cylinder), or inside a ball of radius 8 that the box [-6, 6]^3 cuts
+# open (CUT=open), meshed at 1/N of the part's side (diameter); prints one Markdown row per part
 # (whole-process seconds timed from outside, vertices, watertight/manifold/outward, self-intersections,
 # smallest angle, valence-6 share) or the exit code and message of a refusal.
 # Usage: bench/lattice_catalogue.sh [ISOPATCH_BIN] [SHEET_T] [N] [CUT]
@@ -19,9 +20,17 @@ declare -A tpms=(
   [iwp]="2*(cos(x)*cos(y)+cos(y)*cos(z)+cos(z)*cos(x))-(cos(2*x)+cos(2*y)+cos(2*z))"
 )
 divisor="${3:-60}"
+box="-6.6,-6.6,-6.6,6.6,6.6,6.6"
 if [ "${4:-box}" = ball ]; then
   cap="x*x+y*y+z*z-36"
   edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 12 / n }')  # the diameter 12 over N
+elif [ "${4:-box}" = cylinder ]; then
+  cap="max(x*x+y*y-36,abs(z)-6)"
+  edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 12 / n }')  # the diameter and height 12 over N
+elif [ "${4:-box}" = open ]; then
+  cap="x*x+y*y+z*z-64"
+  box="-6,-6,-6,6,6,6"
+  edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 12 / n }')  # the box's side 12 over N
 else
   cap="max(max(abs(x),abs(y)),abs(z))-2*pi"
   edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 4 * atan2(0, -1) / n }')  # the side 4 pi over N
@@ -33,7 +42,7 @@ for name in gyroid diamond schwarz_p neovius iwp; do
   for kind in solid sheet; do
     if [ "$kind" = solid ]; then part="max($f,$cap)"; else part="max(abs($f)-$t,$cap)"; fi
     start=$(date +%s%N)
-    "$bin" mesh "$part" --box -6.6,-6.6,-6.6,6.6,6.6,6.6 --edge-length "$edge" -q -o "$out/m.ply" 2>"$out/err"
+    "$bin" mesh "$part" --box "$box" --edge-length "$edge" -q -o "$out/m.ply" 2>"$out/err"
     rc=$?
     ms=$(( ($(date +%s%N) - start) / 1000000 ))
     seconds="$((ms / 1000)).$(printf %03d $((ms % 1000)))"
@@ -44,6 +53,9 @@ for name in gyroid diamond schwarz_p neovius iwp; do
     report=$("$bin" analyze "$out/m.ply")
     vertices=$(echo "$report" | sed -n 's/.*: \([0-9,]*\) vertices.*/\1/p' | head -n 1)
     closed=$(echo "$report" | sed -n 's/.*watertight \([a-z]*\), manifold \([a-z]*\).*outward \([a-z]*\).*/\1, \2, \3/p')
+    # A part the box cuts open: the creases' rows say so (rounded creases leave a smooth mesh).
+    grep -q "creases" "$out/err" && closed="$closed (creases rounded)"
+    [ "${4:-box}" = open ] && closed="$closed; $(echo "$report" | sed -n 's/.*boundary edges \([0-9,]*[0-9]\).*/\1/p') boundary edges"
     self=$(echo "$report" | sed -n 's/.*self-intersections \(.*\)/\1/p')
     angle=$(echo "$report" | sed -n 's/^min angle *min \([0-9.]*\).*/\1/p')
     valence=$(echo "$report" | sed -n 's/.*: \([0-9.]*%\) of valence 6.*/\1/p')

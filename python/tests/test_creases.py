@@ -178,6 +178,30 @@ def test_a_gyroid_in_a_capped_cylinder_is_one_closed_part_along_its_creases():
     assert abs(volume / (0.5 * np.pi * 25 * 10) - 1) < 2e-3
 
 
+def test_a_gyroid_in_a_cylinder_the_box_cuts_is_open_exactly_on_the_box_with_its_crease():
+    # docs/lattices.md "Cut open by the box": both solids meshed in the box, the crease in arcs from the box
+    # to the box, the boundary exactly on the box's faces.
+    lo, hi = (-6.6, -6.6, -6.6), (6.6, 6.6, 6.6)
+    m = isopatch.mesh(f"max({GYROID},x^2+y^2-25)", box=(lo, hi), edge_length=0.2)
+    assert m.stats["creases"]["faces"] == 2 and "creases_leave_box" not in m.stats["warnings"]
+    x, y, z = m.vertices.T
+    g = np.sin(x) * np.cos(y) + np.sin(y) * np.cos(z) + np.sin(z) * np.cos(x)
+    cylinder = x * x + y * y - 25
+    assert np.max(np.abs(np.maximum(g, cylinder))) < 1e-9
+    crease = (np.abs(g) < 1e-9) & (np.abs(cylinder) < 1e-9)
+    assert crease.sum() == m.stats["creases"]["crease_vertices"]
+    assert np.sum(crease & (np.abs(z) == 6.6)) >= 2  # the arcs' ends, exactly on the box
+    report = m.analyze()
+    topology = report["topology"]
+    assert topology["boundary_edges"] > 0 and topology["manifold"] and topology["consistently_oriented"]
+    assert report["self_intersections"]["pairs"] == 0
+    edges = np.sort(np.concatenate([m.faces[:, [0, 1]], m.faces[:, [1, 2]], m.faces[:, [2, 0]]]), axis=1)
+    unique, count = np.unique(edges, axis=0, return_counts=True)
+    boundary = m.vertices[np.unique(unique[count == 1])]
+    assert np.all(np.min(np.abs(np.concatenate([boundary - lo, boundary - hi], axis=1)), axis=1) == 0.0)
+    assert report["shape"]["min_angle_degrees"]["min"] >= 20.0
+
+
 def test_creases_the_paths_cannot_follow_are_rounded_with_a_warning_or_refused_when_exact():
     # A gyroid in a capped cylinder cut by a tilted plane is neither a lattice capped by planes alone, nor
     # one cut by one curved solid, nor two solids capped by planes across the axes: the general crease path

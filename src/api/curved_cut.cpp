@@ -47,14 +47,14 @@ Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& b
 /// cleaned up to the edge: twice the vertices across a strip or neck between creases.
 Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
               bool reversed, double edge, const Settings& settings, const Box& box, const Box& mesh_box,
-              bool open, bool rejoin_ring) {
+              bool open, BoxCut cut) {
   try {
-    return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box, false, rejoin_ring);
+    return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box, false, cut);
   } catch (const CreaseError&) {
     Settings finer = settings;
     finer.edge_length = 0.5 * edge;
     const Mesh fine = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, !open);
-    return zip_face_to_creases(fine, s, o, loops, reversed, edge, settings, box, true, rejoin_ring);
+    return zip_face_to_creases(fine, s, o, loops, reversed, edge, settings, box, true, cut);
   }
 }
 
@@ -138,10 +138,11 @@ struct JoinInput {
 /// \throw CreaseError naming the place where a check fails; the errors of zip_face().
 Mesh join_faces(const JoinInput& in, bool rejoin_ring, AngleRepair& repair) {
   const std::size_t crease_vertices = in.crease_vertices;
+  const BoxCut cut = !in.open ? BoxCut::None : rejoin_ring ? BoxCut::Ring : BoxCut::Runs;
   Mesh mesh = zip_face(in.lattice_mesh, *in.lattice, *in.cutter, in.loops, false, in.edge, in.settings,
-                       in.box, in.lattice_box, in.open, rejoin_ring);
+                       in.box, in.lattice_box, in.open, cut);
   const Mesh other = zip_face(in.cutter_mesh, *in.cutter, *in.lattice, in.loops, true, in.edge, in.settings,
-                              in.box, in.box, in.open, rejoin_ring);
+                              in.box, in.box, in.open, cut);
   const auto offset = static_cast<std::uint32_t>(mesh.positions.size() - crease_vertices);
   mesh.positions.insert(mesh.positions.end(),
                         other.positions.begin() + static_cast<std::ptrdiff_t>(crease_vertices),

@@ -215,7 +215,7 @@ std::optional<std::array<std::vector<std::uint32_t>, 2>> thin_loop_halves(
 
 Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
                          const std::vector<CreaseLoop>& loops, bool reversed, double edge,
-                         const Settings& settings, const Box& box, bool whole, bool rejoin_ring) {
+                         const Settings& settings, const Box& box, bool whole, BoxCut cut) {
   // The crease points first, every loop in this face's boundary direction.
   Mesh face;
   std::vector<std::vector<std::uint32_t>> crease;
@@ -257,7 +257,7 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
     arcs.emplace_back();
     for (std::uint32_t v : crease[k]) arcs.back().push_back(face.positions[v]);
   }
-  if (!arcs.empty()) {
+  if (cut != BoxCut::None) {
     std::vector<std::uint8_t> inside(mesh.positions.size(), 0);
     for (std::size_t v = 0; v < inside.size(); ++v) inside[v] = distance[v] < 0.0 ? 1 : 0;
     for (const std::vector<BoundaryPoint>& loop : box_boundary_loops(mesh, inside, arcs, edge)) {
@@ -283,7 +283,7 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
         }
         const auto [it, added] = copy.emplace(p.index, static_cast<std::uint32_t>(face.positions.size()));
         if (added) face.positions.push_back(mesh.positions[p.index]);
-        if (rejoin_ring) left_out[p.index] = 1;
+        if (cut == BoxCut::Ring) left_out[p.index] = 1;
         ids.push_back(it->second);
       }
       box_loops.push_back(std::move(ids));

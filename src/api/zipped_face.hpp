@@ -14,6 +14,11 @@
 
 namespace isopatch {
 
+/// How the box cuts the part: not at all (the face's mesh is closed where o < 0), or open on the box's
+/// faces, the trimmed face joined to its boundary there where it reaches it (`Runs`) or its whole ring
+/// at the box joined anew (`Ring`).
+enum class BoxCut { None, Runs, Ring };
+
 /// The face of s = 0 where o < 0, from `mesh` (a mesh of s = 0, triangles along grad s, covering the
 /// face and beyond it): vertices within 0.3 `edge` of o = 0 (0.15, then 0.05 where that fails) and beyond
 /// are dropped, with the thin tails and pieces lying within 1.5 edges of it throughout (then only the
@@ -30,6 +35,7 @@ namespace isopatch {
 ///        strips); EvaluationError where o is not finite; the errors of remesh_on_surface().
 Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
                          const std::vector<CreaseLoop>& loops, bool reversed, double edge,
-                         const Settings& settings, const Box& box, bool whole = false, bool rejoin_ring = false);
+                         const Settings& settings, const Box& box, bool whole = false,
+                         BoxCut cut = BoxCut::None);
 
 }  // namespace isopatch

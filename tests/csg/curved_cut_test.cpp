@@ -216,13 +216,14 @@ std::vector<std::uint32_t> boundary_of(const Mesh& mesh) {
 }
 
 /// The gyroid inside a ball of radius^2 `r2` that the box [-3, 3]^3 cuts.
-test::CappedRun mesh_open_cut(double edge, const std::string& r2 = "16") {
+test::CappedRun mesh_open_cut(double edge, const std::string& r2 = "16", int threads = 0) {
   test::CappedRun run;
   const std::string part = "max(" + kCutGyroid + ",x^2+y^2+z^2-" + r2 + ")";
   run.surface = expression_surface(part, cut_box(3.0));
   Settings s;
   s.box = cut_box(3.0);
   s.edge_length = edge;
+  s.threads = threads;
   run.mesh = mesh_surface(*run.surface, s, &run.stats);
   return run;
 }
@@ -291,6 +292,14 @@ TEST(CurvedCut, ThePartCutOpenByTheBoxHasTheTopologyOfAFinerMesh) {
     return n;
   };
   EXPECT_EQ(loops(c), loops(f));
+}
+
+TEST(CurvedCut, ThePartCutOpenByTheBoxIsTheSameBytesForOneAndTwoThreads) {
+  const test::CappedRun one = mesh_open_cut(0.2, "12.25", 1);
+  const test::CappedRun two = mesh_open_cut(0.2, "12.25", 2);
+  ASSERT_TRUE(one.stats.creases);
+  EXPECT_EQ(one.mesh.positions, two.mesh.positions);
+  EXPECT_EQ(one.mesh.triangles, two.mesh.triangles);
 }
 
 }  // namespace
