@@ -42,15 +42,23 @@ Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& b
   return mesh_surface(operand, plain, stats);
 }
 
-/// zip_face_to_creases(); where its join fails (creases closer than the trim's band), the operand meshed
-/// again at half the edge in `mesh_box` (the box `mesh` was made in), joined there, and the whole face
-/// cleaned up to the edge: twice the vertices across a strip or neck between creases.
+/// zip_face_to_creases(); where its join fails, with `cut` BoxCut::Runs the face's whole ring at the box
+/// joined anew, then (creases closer than the trim's band) the operand meshed again at half the edge in
+/// `mesh_box` (the box `mesh` was made in), joined there, and the whole face cleaned up to the edge: twice
+/// the vertices across a strip or neck between creases.
 Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
               bool reversed, double edge, const Settings& settings, const Box& box, const Box& mesh_box,
               bool open, BoxCut cut) {
   try {
     return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box, false, cut);
   } catch (const CreaseError&) {
+    // Where the trimmed face's runs to the box do not close, its whole ring at the box joined anew first.
+    if (cut == BoxCut::Runs) {
+      try {
+        return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box, false, BoxCut::Ring);
+      } catch (const CreaseError&) {
+      }
+    }
     Settings finer = settings;
     finer.edge_length = 0.5 * edge;
     const Mesh fine = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, !open);
