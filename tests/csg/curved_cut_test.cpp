@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/box_boundary_loops.hpp"
 #include "api/crease_loops.hpp"
 #include "csg/capped_shape.hpp"
 #include "mesh_checks.hpp"
@@ -32,6 +33,19 @@ const std::string kCutBall = "x^2+y^2+z^2-9";
 
 Box cut_box(double a) {
   return {Vec3::Constant(-a), Vec3::Constant(a)};
+}
+
+/// The vertices of `mesh` on its boundary edges.
+std::vector<std::uint32_t> boundary_of(const Mesh& mesh) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
+  for (const Triangle& t : mesh.triangles)
+    for (std::size_t k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
+  std::vector<std::uint32_t> out;
+  for (const auto& [e, n] : count)
+    if (n == 1) out.insert(out.end(), {e.first, e.second});
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 test::CappedRun mesh_cut(const std::string& formula, double edge, int threads = 0,
@@ -124,6 +138,45 @@ TEST(CreaseLoops, ACreaseLeavingTheMeshIsRefusedUnlessTheBoxCutsIt) {
   }
 }
 
+TEST(BoxBoundaryLoops, AnArcAndTheMeshsBoundaryInsideTheOtherSolidCloseOneLoop) {
+  // The plane z = 0 in [-1, 1]^3 where x < 0.1: bounded by the crease's arc x = 0.1 (from y = -1 to 1, the
+  // face on its left) and the square's sides where x < 0.1, in one loop with the face on its left.
+  const Box box = cut_box(1.0);
+  const SurfacePtr a = expression_surface("z", box);
+  const SurfacePtr b = expression_surface("x-0.1", box);
+  const Mesh plane = mesh_in(*a, box, 0.2);
+  const std::vector<CreaseLoop> arcs = trace_crease_loops(plane, *a, *b, 0.2, 1e-12, &box);
+  ASSERT_EQ(arcs.size(), 1u);
+  std::vector<std::uint8_t> inside(plane.positions.size(), 0);
+  std::size_t boundary_inside = 0;
+  const std::vector<std::uint32_t> boundary = boundary_of(plane);
+  for (std::size_t v = 0; v < inside.size(); ++v) inside[v] = plane.positions[v].x() < 0.1 ? 1 : 0;
+  for (std::uint32_t v : boundary) boundary_inside += inside[v];
+  const std::vector<std::vector<BoundaryPoint>> loops = box_boundary_loops(plane, inside, {arcs[0].points}, 0.2);
+  ASSERT_EQ(loops.size(), 1u);
+  const std::vector<BoundaryPoint>& loop = loops[0];
+  ASSERT_EQ(loop.size(), arcs[0].points.size() + boundary_inside);
+  for (std::size_t k = 0; k < arcs[0].points.size(); ++k) {
+    EXPECT_EQ(loop[k].arc, 0);
+    EXPECT_EQ(loop[k].index, k);
+  }
+  // Then around the square from (0.1, 1) to (0.1, -1) through x = -1: the face on the left of each step.
+  Vec3 previous = arcs[0].points.back();
+  double turning = 0.0;
+  for (std::size_t k = arcs[0].points.size(); k < loop.size(); ++k) {
+    ASSERT_EQ(loop[k].arc, -1);
+    const Vec3& p = plane.positions[loop[k].index];
+    EXPECT_LT(p.x(), 0.1);
+    EXPECT_EQ(std::max(std::abs(p.x()), std::abs(p.y())), 1.0);
+    turning += previous.x() * p.y() - previous.y() * p.x();
+    previous = p;
+  }
+  EXPECT_GT(turning, 0.0);  // counter-clockwise about +z, the face's normal
+  // An arc end with no crossing near it is refused.
+  std::vector<std::uint8_t> none(plane.positions.size(), 1);
+  EXPECT_THROW(box_boundary_loops(plane, none, {arcs[0].points}, 0.2), CreaseError);
+}
+
 TEST(CreaseLoops, AnArcEndsOnTheTwoFacesOfTheBoxItCrosses) {
   // The crease x + y = 1.5, z = 0 crosses the corner of the box from the face y = 1 to the face x = 1,
   // along grad a x grad b = (-1, 1, 0).
@@ -200,19 +253,6 @@ TEST(CurvedCut, ARotatedFrameKeepsTheCreaseAndTheTopology) {
   };
   EXPECT_NEAR(count(turned) / count(plain), 1.0, 0.05);
   EXPECT_EQ(analyze_topology(turned.mesh).genus, analyze_topology(plain.mesh).genus);
-}
-
-/// The vertices of `mesh` on its boundary edges.
-std::vector<std::uint32_t> boundary_of(const Mesh& mesh) {
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> count;
-  for (const Triangle& t : mesh.triangles)
-    for (std::size_t k = 0; k < 3; ++k) ++count[std::minmax(t[k], t[(k + 1) % 3])];
-  std::vector<std::uint32_t> out;
-  for (const auto& [e, n] : count)
-    if (n == 1) out.insert(out.end(), {e.first, e.second});
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
 }
 
 /// The gyroid inside a ball of radius^2 `r2` that the box [-3, 3]^3 cuts.
