@@ -85,6 +85,7 @@ std::vector<std::vector<BoundaryPoint>> box_boundary_loops(const Mesh& mesh,
     }
     if (!crossed && inside[loop.front()]) {
       std::vector<BoundaryPoint> whole;
+      whole.reserve(loop.size());
       for (std::uint32_t v : loop) whole.push_back({-1, v});
       out.push_back(std::move(whole));
     }

@@ -152,7 +152,8 @@ TEST(BoxBoundaryLoops, AnArcAndTheMeshsBoundaryInsideTheOtherSolidCloseOneLoop) 
   const std::vector<std::uint32_t> boundary = boundary_of(plane);
   for (std::size_t v = 0; v < inside.size(); ++v) inside[v] = plane.positions[v].x() < 0.1 ? 1 : 0;
   for (std::uint32_t v : boundary) boundary_inside += inside[v];
-  const std::vector<std::vector<BoundaryPoint>> loops = box_boundary_loops(plane, inside, {arcs[0].points}, 0.2);
+  const std::vector<std::vector<BoundaryPoint>> loops =
+      box_boundary_loops(plane, inside, {arcs[0].points}, 0.2);
   ASSERT_EQ(loops.size(), 1u);
   const std::vector<BoundaryPoint>& loop = loops[0];
   ASSERT_EQ(loop.size(), arcs[0].points.size() + boundary_inside);
