@@ -105,7 +105,14 @@ std::optional<Mesh> mesh_capped_curved_cut(const Surface& surface, const Setting
   part.box = inner;
   part.edge_length = edge;
   const double analysis = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::optional<Mesh> mesh = mesh_two_solids(shape->solids, part, stats);
+  // The planes' box may hold no surface of an operand (the part is then the other's, or empty): not this
+  // form, the paths after it decide.
+  std::optional<Mesh> mesh;
+  try {
+    mesh = mesh_two_solids(shape->solids, part, stats);
+  } catch (const NoSurfaceError&) {
+    return std::nullopt;
+  }
   if (!mesh) return std::nullopt;
   const auto caps_start = std::chrono::steady_clock::now();
   const auto solid = std::make_shared<const LargerOfTwo>(shape->solids.first, shape->solids.second);

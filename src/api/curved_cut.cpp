@@ -208,19 +208,35 @@ std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& setti
   const Box box = *settings.box;
   Settings plain = settings;
   plain.frame.reset();
-  if (analyse_creases(*shape.first, plain) || analyse_creases(*shape.second, plain)) return std::nullopt;
+  // An operand with creases of its own, in the box or leaving it, is not smooth: not this form.
+  for (const SurfacePtr& operand : {shape.first, shape.second}) {
+    std::optional<Vec3> leaves;
+    if (analyse_creases(*operand, plain, &leaves) || leaves) return std::nullopt;
+  }
   const double edge = default_edge_length(settings, box);
   // The cutter: the operand whose solid lies in the box (the second first, as formulas write it). When
   // neither does, the box cuts the part open: both operands are meshed in it with their boundary on its
   // faces, and the crease is cut into arcs from the box to the box.
+  // An operand that does not cross the box leaves the part to the other alone: not this form.
   MeshStats cutter_stats;
   SurfacePtr lattice = shape.first, cutter = shape.second;
-  Mesh cutter_mesh = mesh_operand(*cutter, settings, box, edge, &cutter_stats);
+  const auto operand_mesh = [&](const Surface& operand, MeshStats* run) -> std::optional<Mesh> {
+    try {
+      return mesh_operand(operand, settings, box, edge, run);
+    } catch (const NoSurfaceError&) {
+      return std::nullopt;
+    }
+  };
+  std::optional<Mesh> second_mesh = operand_mesh(*cutter, &cutter_stats);
+  if (!second_mesh) return std::nullopt;
+  Mesh cutter_mesh = std::move(*second_mesh);
   bool open = false;
   std::optional<Mesh> open_lattice;
   if (!closed_mesh(cutter_mesh)) {
     MeshStats first_stats;
-    Mesh first_mesh = mesh_operand(*lattice, settings, box, edge, &first_stats);
+    std::optional<Mesh> first = operand_mesh(*lattice, &first_stats);
+    if (!first) return std::nullopt;
+    Mesh first_mesh = std::move(*first);
     if (closed_mesh(first_mesh)) {
       std::swap(lattice, cutter);
       cutter_mesh = std::move(first_mesh);
