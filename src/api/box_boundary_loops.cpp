@@ -19,7 +19,7 @@ namespace isopatch {
 
 namespace {
 
-std::uint64_t half_edge(std::uint32_t u, std::uint32_t v) {
+std::uint64_t directed_edge_key(std::uint32_t u, std::uint32_t v) {
   return (static_cast<std::uint64_t>(u) << 32) | v;
 }
 
@@ -29,11 +29,11 @@ std::vector<std::vector<std::uint32_t>> mesh_boundary_loops(const Mesh& mesh) {
   std::unordered_set<std::uint64_t> half;
   half.reserve(3 * mesh.triangles.size());
   for (const Triangle& t : mesh.triangles)
-    for (std::size_t k = 0; k < 3; ++k) half.insert(half_edge(t[k], t[(k + 1) % 3]));
+    for (std::size_t k = 0; k < 3; ++k) half.insert(directed_edge_key(t[k], t[(k + 1) % 3]));
   std::map<std::uint32_t, std::uint32_t> next;
   for (const Triangle& t : mesh.triangles)
     for (std::size_t k = 0; k < 3; ++k)
-      if (!half.count(half_edge(t[(k + 1) % 3], t[k]))) next[t[k]] = t[(k + 1) % 3];
+      if (!half.count(directed_edge_key(t[(k + 1) % 3], t[k]))) next[t[k]] = t[(k + 1) % 3];
   std::vector<std::vector<std::uint32_t>> loops;
   std::unordered_set<std::uint32_t> used;
   for (const auto& [first, unused] : next) {
