@@ -41,6 +41,7 @@
 
 #include <isopatch/mesh.hpp>
 
+#include <atomic>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -67,6 +68,12 @@ MeshFormat format_from_path(const std::string& path);
 ///        without triangles or with more than 2^32 - 1 vertices or triangles.
 void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
                 const std::vector<Vec3>& vertex_colours = {});
+/// Same, stopped when `cancel` (may be null) becomes true while it writes: checked before each 1 MiB
+/// chunk goes to the file and before the rename. A stopped write removes its temporary file, leaves a
+/// file already at `path` as it was and throws LimitError("cancel") naming the file. For a caller that
+/// writes on a worker thread and lets the user stop it (Python's Mesh.write and Ctrl-C).
+void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
+                const std::vector<Vec3>& vertex_colours, const std::atomic<bool>* cancel);
 /// Same, with the format from the extension.
 void write_mesh(const Mesh& mesh, const std::string& path, const std::vector<Vec3>& vertex_colours = {});
 

@@ -89,7 +89,9 @@ class Mesh:
 
     def write(self, path: str, fields: bool = False) -> None:
         """Writes the mesh, the format from the extension (.ply, .obj, .off, .stl, .glb, .3mf). With fields=True the
-        fields are stored as PLY vertex attributes. Raises IoError when the file cannot be written."""
+        fields are stored as PLY vertex attributes. The file is written whole or not at all (a temporary file
+        beside it, renamed at the end): IoError when it cannot be written, KeyboardInterrupt on Ctrl-C, and
+        either way no temporary file is left and a file already at `path` stays as it was."""
         self._result.write(str(path), bool(fields))
 
     def analyze(self, surface: bool = True) -> Dict[str, Any]:

@@ -10,6 +10,7 @@
 
 #include "arrays.hpp"
 #include "report_dict.hpp"
+#include "run_released.hpp"
 
 namespace py = pybind11;
 
@@ -66,9 +67,14 @@ py::dict stats(const MeshResult& r) {
   return d;
 }
 
+/// Written on a worker thread that Ctrl-C stops (run_released): KeyboardInterrupt, the temporary file
+/// removed and a file already at `path` left as it was.
 void write(const MeshResult& r, const std::string& path, bool with_fields) {
-  const py::gil_scoped_release release;
-  write_mesh(with_fields ? mesh_with_fields(r) : r.mesh, path);
+  const MeshFormat format = format_from_path(path);
+  run_released([&](const std::atomic<bool>* cancel) {
+    write_mesh(with_fields ? mesh_with_fields(r) : r.mesh, path, format, {}, cancel);
+    return true;
+  });
 }
 
 py::dict analyze(const MeshResult& r, bool against_surface) {

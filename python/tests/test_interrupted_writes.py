@@ -93,3 +93,32 @@ def test_a_missing_or_unwritable_folder_is_one_line(tmp_path):
                          capture_output=True, text=True, timeout=120)
     assert run.returncode == IO_ERROR
     assert len(run.stderr.strip().splitlines()) == 1 and "does not exist" in run.stderr, run.stderr
+
+
+WRITER = """
+import sys
+import isopatch
+mesh = isopatch.mesh("sphere", edge_length=0.03)
+mesh.write(sys.argv[1])
+"""
+
+
+@pytest.mark.parametrize("name", ["out.ply", "out.3mf"])
+def test_ctrl_c_in_python_while_writing_raises_keyboard_interrupt_and_leaves_no_part(tmp_path, name):
+    target = previous_file(tmp_path, name)
+    mark = tmp_path.parent / f"{tmp_path.name}-python-writing"
+    process = subprocess.Popen(["/usr/bin/python3", "-c", WRITER, str(target)], stderr=subprocess.PIPE,
+                               text=True, env=shim_env(ISOPATCH_SHIM_STALL=mark))
+    deadline = time.monotonic() + 60
+    while not mark.exists():
+        assert process.poll() is None, process.stderr.read()
+        assert time.monotonic() < deadline, "Mesh.write never began writing"
+        time.sleep(0.02)
+    process.send_signal(signal.SIGINT)
+    time.sleep(0.5)  # the interpreter's signal check runs every 50 ms while the write is held
+    mark.unlink()  # the held write goes on, and stops before its next chunk or the rename
+    _, err = process.communicate(timeout=60)
+    assert process.returncode == -signal.SIGINT, err  # Python ends by SIGINT after a KeyboardInterrupt
+    assert "KeyboardInterrupt" in err, err
+    assert target.read_bytes() == b"the file from before\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == [name]

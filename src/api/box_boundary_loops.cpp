@@ -23,15 +23,28 @@ std::uint64_t directed_edge_key(std::uint32_t u, std::uint32_t v) {
   return (static_cast<std::uint64_t>(u) << 32) | v;
 }
 
-/// The mesh's boundary loops, each with the mesh on its left, each from its smallest vertex, in the order
-/// of those.
-std::vector<std::vector<std::uint32_t>> mesh_boundary_loops(const Mesh& mesh) {
+/// The distance from p to the segment [u, v].
+double to_segment(const Vec3& p, const Vec3& u, const Vec3& v) {
+  const Vec3 d = v - u;
+  const double length2 = d.squaredNorm();
+  const double t = length2 > 0.0 ? std::clamp((p - u).dot(d) / length2, 0.0, 1.0) : 0.0;
+  return (p - (u + t * d)).norm();
+}
+
+/// A boundary edge where o changes sign: the loop, and the index of its first vertex there.
+struct Crossing {
+  std::size_t loop = 0, index = 0;
+};
+
+}  // namespace
+
+std::vector<std::vector<std::uint32_t>> triangle_boundary_loops(const std::vector<Triangle>& triangles) {
   std::unordered_set<std::uint64_t> half;
-  half.reserve(3 * mesh.triangles.size());
-  for (const Triangle& t : mesh.triangles)
+  half.reserve(3 * triangles.size());
+  for (const Triangle& t : triangles)
     for (std::size_t k = 0; k < 3; ++k) half.insert(directed_edge_key(t[k], t[(k + 1) % 3]));
   std::map<std::uint32_t, std::uint32_t> next;
-  for (const Triangle& t : mesh.triangles)
+  for (const Triangle& t : triangles)
     for (std::size_t k = 0; k < 3; ++k)
       if (!half.count(directed_edge_key(t[(k + 1) % 3], t[k]))) next[t[k]] = t[(k + 1) % 3];
   std::vector<std::vector<std::uint32_t>> loops;
@@ -51,26 +64,11 @@ std::vector<std::vector<std::uint32_t>> mesh_boundary_loops(const Mesh& mesh) {
   return loops;
 }
 
-/// The distance from p to the segment [u, v].
-double to_segment(const Vec3& p, const Vec3& u, const Vec3& v) {
-  const Vec3 d = v - u;
-  const double length2 = d.squaredNorm();
-  const double t = length2 > 0.0 ? std::clamp((p - u).dot(d) / length2, 0.0, 1.0) : 0.0;
-  return (p - (u + t * d)).norm();
-}
-
-/// A boundary edge where o changes sign: the loop, and the index of its first vertex there.
-struct Crossing {
-  std::size_t loop = 0, index = 0;
-};
-
-}  // namespace
-
 std::vector<std::vector<BoundaryPoint>> box_boundary_loops(const Mesh& mesh,
                                                            const std::vector<std::uint8_t>& inside,
                                                            const std::vector<std::vector<Vec3>>& arcs,
                                                            double reach) {
-  const std::vector<std::vector<std::uint32_t>> loops = mesh_boundary_loops(mesh);
+  const std::vector<std::vector<std::uint32_t>> loops = triangle_boundary_loops(mesh.triangles);
   std::vector<std::vector<BoundaryPoint>> out;
   // Where o turns positive along a loop (an arc leaves there) and where it turns negative (one arrives).
   std::vector<Crossing> leaving, arriving;

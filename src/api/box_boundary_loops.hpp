@@ -23,6 +23,11 @@ struct BoundaryPoint {
   std::uint32_t index = 0;
 };
 
+/// The boundary loops of `triangles` (an edge-manifold triangle set): each in its triangles' direction
+/// (the triangles on its left), starting at its smallest vertex, the loops in the order of those. A
+/// boundary that passes a vertex twice is cut there into loops (each vertex is visited once).
+std::vector<std::vector<std::uint32_t>> triangle_boundary_loops(const std::vector<Triangle>& triangles);
+
 /// F's boundary loops, each with F on its left (the mesh's orientation), from `mesh` (a mesh of s = 0
 /// whose boundary lies on the box's faces, triangles along grad s), `inside` (one flag per vertex: o < 0
 /// there) and `arcs` (the crease's arcs as points in F's boundary direction: F on their left, each from

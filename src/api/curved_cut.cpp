@@ -45,10 +45,11 @@ Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& b
 /// zip_face_to_creases(); where its join fails, with `cut` BoxCut::Runs the face's whole ring at the box
 /// joined anew, then (creases closer than the trim's band) the operand meshed again at half the edge in
 /// `mesh_box` (the box `mesh` was made in), joined there, and the whole face cleaned up to the edge: twice
-/// the vertices across a strip or neck between creases.
+/// the vertices across a strip or neck between creases. `cut` None: the part is closed, the operand
+/// is meshed closed.
 Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
               bool reversed, double edge, const Settings& settings, const Box& box, const Box& mesh_box,
-              bool open, BoxCut cut) {
+              BoxCut cut) {
   try {
     return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box, false, cut);
   } catch (const CreaseError&) {
@@ -61,7 +62,7 @@ Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::v
     }
     Settings finer = settings;
     finer.edge_length = 0.5 * edge;
-    const Mesh fine = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, !open);
+    const Mesh fine = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, cut == BoxCut::None);
     return zip_face_to_creases(fine, s, o, loops, reversed, edge, settings, box, true, cut);
   }
 }
@@ -148,9 +149,9 @@ Mesh join_faces(const JoinInput& in, bool rejoin_ring, AngleRepair& repair) {
   const std::size_t crease_vertices = in.crease_vertices;
   const BoxCut cut = !in.open ? BoxCut::None : rejoin_ring ? BoxCut::Ring : BoxCut::Runs;
   Mesh mesh = zip_face(in.lattice_mesh, *in.lattice, *in.cutter, in.loops, false, in.edge, in.settings,
-                       in.box, in.lattice_box, in.open, cut);
+                       in.box, in.lattice_box, cut);
   const Mesh other = zip_face(in.cutter_mesh, *in.cutter, *in.lattice, in.loops, true, in.edge, in.settings,
-                              in.box, in.box, in.open, cut);
+                              in.box, in.box, cut);
   const auto offset = static_cast<std::uint32_t>(mesh.positions.size() - crease_vertices);
   mesh.positions.insert(mesh.positions.end(),
                         other.positions.begin() + static_cast<std::ptrdiff_t>(crease_vertices),

@@ -49,10 +49,6 @@ constexpr int kCleanedRings = 3;
 /// face's boundary there.
 constexpr double kNearArcEnd = 0.5;
 
-std::uint64_t half_edge_key(std::uint32_t u, std::uint32_t v) {
-  return (static_cast<std::uint64_t>(u) << 32) | v;
-}
-
 /// `triangles` without those at a vertex where two fans of them meet (a bow tie), until none is left.
 std::vector<Triangle> without_pinches(std::vector<Triangle> kept) {
   for (std::vector<std::uint32_t> pinched = pinched_vertices(kept); !pinched.empty();
@@ -119,37 +115,6 @@ std::vector<Triangle> without_thin_pieces(const std::vector<Triangle>& kept,
   for (const Triangle& t : kept)
     if (thick.count(find(t[0]))) out.push_back(t);
   return out;
-}
-
-/// The boundary loops of `triangles` (a 2-manifold), each in its triangles' direction (the face on the
-/// left), starting at its smallest vertex, in the order of those.
-std::vector<std::vector<std::uint32_t>> boundary_loops(const std::vector<Triangle>& triangles) {
-  std::unordered_set<std::uint64_t> half;
-  for (const Triangle& t : triangles)
-    for (int k = 0; k < 3; ++k)
-      half.insert(half_edge_key(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)]));
-  std::map<std::uint32_t, std::uint32_t> next;
-  for (const Triangle& t : triangles)
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t u = t[static_cast<std::size_t>(k)], v = t[static_cast<std::size_t>((k + 1) % 3)];
-      if (!half.count(half_edge_key(v, u))) next[u] = v;
-    }
-  std::vector<std::vector<std::uint32_t>> loops;
-  std::unordered_set<std::uint32_t> used;
-  for (const auto& [first, unused] : next) {
-    if (used.count(first)) continue;
-    std::vector<std::uint32_t> loop;
-    std::uint32_t v = first;
-    while (!used.count(v)) {
-      used.insert(v);
-      loop.push_back(v);
-      const auto it = next.find(v);
-      if (it == next.end()) break;
-      v = it->second;
-    }
-    loops.push_back(std::move(loop));
-  }
-  return loops;
 }
 
 /// A point of s = 0 near `p` (Newton steps along grad s).
@@ -327,7 +292,7 @@ Mesh zip_face_to_creases(const Mesh& mesh, const Surface& s, const Surface& o,
       }
       face.triangles.push_back(f);
     }
-    std::optional<BoxJoin> at_box = BoxJoin{{}, {}, boundary_loops(face.triangles)};
+    std::optional<BoxJoin> at_box = BoxJoin{{}, {}, triangle_boundary_loops(face.triangles)};
     if (!box_loops.empty())
       at_box = join_at_the_box(face.positions, box_loops, at_box->free_boundary, failure);
     if (!at_box) continue;

@@ -1,6 +1,8 @@
 // Mesh writers' output in chunks, see byte_sink.hpp.
 #include "mesh/byte_sink.hpp"
 
+#include <isopatch/error.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <system_error>
@@ -9,9 +11,14 @@
 
 namespace isopatch::io {
 
+void ByteSink::check_cancel() const {
+  if (cancel_ != nullptr && cancel_->load()) throw LimitError(name_ + ": writing cancelled", "cancel");
+}
+
 void ByteSink::spill() {
   largest_held_ = std::max(largest_held_, buffer_.size());
   if (buffer_.empty()) return;
+  check_cancel();
   if (consumer_) {
     consumer_(buffer_.data(), buffer_.size());
     buffer_.clear();

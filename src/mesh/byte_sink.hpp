@@ -4,6 +4,7 @@
 // (encode_mesh). Writers append with the few members of std::string they use, so number formatting
 // (io_util.hpp) serves both.
 
+#include <atomic>
 #include <cstddef>
 #include <cstdio>
 #include <functional>
@@ -47,8 +48,14 @@ class ByteSink {
     return *this;
   }
 
-  /// Hands what it holds to the file. \throw IoError when the write fails (disk full, ...).
+  /// Hands what it holds to the file. \throw IoError when the write fails (disk full, ...);
+  /// LimitError("cancel") when the flag given to stop_when() is set.
   void flush();
+  /// A file or consumer sink checks `cancel` (if not null) before it hands each chunk on and throws
+  /// LimitError("cancel") once it is true; `cancel` must outlive the sink.
+  void stop_when(const std::atomic<bool>* cancel) { cancel_ = cancel; }
+  /// \throw LimitError("cancel") naming the file when the flag given to stop_when() is set.
+  void check_cancel() const;
   /// Bytes appended so far.
   std::size_t written() const { return written_; }
   /// The most bytes a file sink held at once (at most kChunk plus the largest single append): what a
@@ -60,6 +67,7 @@ class ByteSink {
 
   std::string* memory_ = nullptr;
   std::FILE* file_ = nullptr;
+  const std::atomic<bool>* cancel_ = nullptr;
   std::function<void(const char*, std::size_t)> consumer_;
   std::string name_;
   std::string buffer_;

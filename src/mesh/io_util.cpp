@@ -114,7 +114,7 @@ void remove_temporary(const std::string& path) {
 /// Opens `file_path`, lets `write` fill it through a ByteSink (errors name `path`) and closes it; a
 /// temporary file is removed when anything fails.
 void fill(const std::string& path, const std::string& file_path, bool temporary,
-          const std::function<void(ByteSink&)>& write) {
+          const std::function<void(ByteSink&)>& write, const std::atomic<bool>* cancel) {
   errno = 0;
   std::FILE* file = std::fopen(file_path.c_str(), "wb");
   if (!file) {
@@ -128,8 +128,10 @@ void fill(const std::string& path, const std::string& file_path, bool temporary,
   }
   try {
     ByteSink out(file, path);
+    out.stop_when(cancel);
     write(out);
     out.flush();
+    out.check_cancel();  // a mesh of one chunk, or a cancel during its last write
   } catch (...) {
     std::fclose(file);
     if (temporary) remove_temporary(file_path);
@@ -148,13 +150,14 @@ std::atomic<std::uint64_t> writes{0};
 
 }  // namespace
 
-void write_file(const std::string& path, const std::function<void(ByteSink&)>& write) {
+void write_file(const std::string& path, const std::function<void(ByteSink&)>& write,
+                const std::atomic<bool>* cancel) {
   namespace fs = std::filesystem;
   std::error_code error;
   const fs::file_status status = fs::status(path, error);  // through symbolic links
   if (fs::exists(status) && !fs::is_regular_file(status)) {
     if (fs::is_directory(status)) fail(path, "is a folder, not a file");
-    return fill(path, path, false, write);  // a device or a pipe: written directly
+    return fill(path, path, false, write, cancel);  // a device or a pipe: written directly
   }
   // Beside the file a link points to, so that the rename replaces that file and the link stays.
   fs::path target = path;
@@ -174,7 +177,7 @@ void write_file(const std::string& path, const std::function<void(ByteSink&)>& w
   const std::string temporary =
       (target.has_parent_path() ? target.parent_path() / name : fs::path(name)).string();
   const UnfinishedFile listed(temporary);
-  fill(path, temporary, true, write);
+  fill(path, temporary, true, write, cancel);
   errno = 0;
   if (std::rename(temporary.c_str(), target.c_str()) != 0) {
     const int why = errno;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <charconv>
 #include <cstdint>
@@ -30,9 +31,12 @@ class ByteSink;
 /// Lets `write` write `path` through a ByteSink in chunks, whole or not at all: into a temporary file
 /// beside it, renamed onto it at the end (mesh_io.hpp's write_whole_file says the rest). A write that
 /// throws leaves no temporary file and the old file at `path` as it was.
+/// With `cancel` (may be null) set before the rename, the write stops at the next chunk or at the end
+/// with LimitError("cancel"), as any other failure.
 /// \throw IoError when the file cannot be created or the write fails (disk full, ...); what `write`
-/// throws.
-void write_file(const std::string& path, const std::function<void(ByteSink&)>& write);
+/// throws; LimitError on cancel.
+void write_file(const std::string& path, const std::function<void(ByteSink&)>& write,
+                const std::atomic<bool>* cancel = nullptr);
 /// Unlinks the temporary files of the writes in progress (mesh_io.hpp's remove_unfinished_files).
 void remove_unfinished() noexcept;
 

@@ -77,9 +77,15 @@ Mesh decode_mesh(std::string_view bytes, MeshFormat format, const std::string& n
 }
 
 void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
-                const std::vector<Vec3>& vertex_colours) {
+                const std::vector<Vec3>& vertex_colours, const std::atomic<bool>* cancel) {
   mesh.validate();  // before the file is made
-  io::write_file(path, [&](io::ByteSink& out) { io::encode_to(mesh, format, vertex_colours, out); });
+  io::write_file(
+      path, [&](io::ByteSink& out) { io::encode_to(mesh, format, vertex_colours, out); }, cancel);
+}
+
+void write_mesh(const Mesh& mesh, const std::string& path, MeshFormat format,
+                const std::vector<Vec3>& vertex_colours) {
+  write_mesh(mesh, path, format, vertex_colours, nullptr);
 }
 
 void write_mesh(const Mesh& mesh, const std::string& path, const std::vector<Vec3>& vertex_colours) {

@@ -6,8 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -84,6 +86,36 @@ TEST(StreamingWriters, AFailedWriteLeavesNoPartialFile) {
     EXPECT_THROW(write_mesh(large_grid(200), "/dev/full", MeshFormat::PlyBinary), IoError);
     EXPECT_TRUE(std::filesystem::exists("/dev/full")) << "a device is never removed";
   }
+}
+
+TEST(StreamingWriters, ACancelledWriteStopsAtTheNextChunkAndLeavesThePreviousFile) {
+  const Mesh mesh = large_grid(300);
+  // A flag set while the first chunk goes out stops the writer before the second.
+  std::atomic<bool> cancel{false};
+  int chunks = 0;
+  io::ByteSink sink([&](const char*, std::size_t) {
+    ++chunks;
+    cancel.store(true);
+  });
+  sink.stop_when(&cancel);
+  EXPECT_THROW(io::encode_to(mesh, MeshFormat::Obj, {}, sink), LimitError);
+  EXPECT_EQ(chunks, 1);
+  // write_mesh: no temporary file left, the file there before as it was, the error names the budget.
+  const test::TempDir dir;
+  const std::string path = dir.file("kept.ply");
+  write_whole_file(path, "before");
+  try {
+    write_mesh(mesh, path, MeshFormat::PlyBinary, {}, &cancel);
+    ADD_FAILURE() << "a cancelled write returned";
+  } catch (const LimitError& e) {
+    EXPECT_EQ(e.setting(), "cancel");
+    EXPECT_NE(std::string(e.what()).find("kept.ply"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(file_bytes(path), "before");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.file("")), {}), 1);
+  cancel.store(false);
+  write_mesh(mesh, path, MeshFormat::PlyBinary, {}, &cancel);
+  EXPECT_TRUE(file_bytes(path) == encode_mesh(mesh, MeshFormat::PlyBinary));
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // and a process held in the middle of writing a file so that a test can interrupt it there. Only files
 // opened for writing whose path contains ISOPATCH_SHIM_MATCH are touched:
 //   ISOPATCH_SHIM_FAIL_AFTER=N  the bytes past the first N of such a file fail with ENOSPC;
-//   ISOPATCH_SHIM_STALL=PATH    the first write to such a file creates PATH, then sleeps 60 s.
+//   ISOPATCH_SHIM_STALL=PATH    each write to such a file creates PATH and waits while it exists (60 s
+//                               at most): a test removes it to let the write go on.
 #include <dlfcn.h>
 #include <unistd.h>
 
@@ -53,7 +54,8 @@ extern "C" size_t fwrite(const void* data, size_t size, size_t count, FILE* file
   if (file != watched.load() || size == 0) return real(data, size, count, file);
   if (const char* mark = std::getenv("ISOPATCH_SHIM_STALL"); mark != nullptr && *mark != '\0') {
     if (FILE* m = std::fopen(mark, "w")) std::fclose(m);
-    ::sleep(60);
+    // Held while the mark exists (the test removes it to let the write go on), at most 60 s.
+    for (int step = 0; step < 3000 && ::access(mark, F_OK) == 0; ++step) ::usleep(20000);
   }
   if (const char* limit = std::getenv("ISOPATCH_SHIM_FAIL_AFTER"); limit != nullptr && *limit != '\0') {
     const unsigned long long room = std::strtoull(limit, nullptr, 10);
