@@ -2,7 +2,9 @@
 # The lattice catalogue of docs/lattices.md: each TPMS as a solid (f < 0) and a sheet (|f| - t < 0)
 # capped by the box of two periods (CUT=box), cut by the ball of radius 6 (CUT=ball), inside the cylinder
 # of radius 6 capped at z = +-6 (CUT=cylinder), or inside a ball of radius 8 that the box [-6, 6]^3 cuts
-# open (CUT=open), meshed at 1/N of the part's side (diameter); prints one Markdown row per part
+# open (CUT=open), capped by the box of two periods with a solid ball of radius 3 in it (CUT=insert: the
+# union min(lattice, ball)) or a spherical void of radius 3 (CUT=void: max(lattice, -ball)), meshed at 1/N
+# of the part's side (diameter); prints one Markdown row per part
 # (whole-process seconds timed from outside, vertices, watertight/manifold/outward, self-intersections,
 # smallest angle, valence-6 share) or the exit code and message of a refusal.
 # Usage: bench/lattice_catalogue.sh [ISOPATCH_BIN] [SHEET_T] [N] [CUT]
@@ -35,12 +37,22 @@ else
   cap="max(max(abs(x),abs(y)),abs(z))-2*pi"
   edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 4 * atan2(0, -1) / n }')  # the side 4 pi over N
 fi
+ball="x*x+y*y+z*z-9"
+# The lattice $1 with the insert or the void of mode $2 (insert, void), or alone.
+with_ball() {
+  case "$2" in
+    insert) echo "min($1,$ball)" ;;
+    void) echo "max($1,-($ball))" ;;
+    *) echo "$1" ;;
+  esac
+}
 echo "| part | kind | exit | seconds (whole) | vertices | closed, manifold, outward | self-intersections | smallest angle | valence 6 |"
 echo "|---|---|---|---|---|---|---|---|---|"
 for name in gyroid diamond schwarz_p neovius iwp; do
   f="${tpms[$name]}"
   for kind in solid sheet; do
-    if [ "$kind" = solid ]; then part="max($f,$cap)"; else part="max(abs($f)-$t,$cap)"; fi
+    if [ "$kind" = solid ]; then lattice="$f"; else lattice="abs($f)-$t"; fi
+    part="max($(with_ball "$lattice" "${4:-box}"),$cap)"
     start=$(date +%s%N)
     "$bin" mesh "$part" --box "$box" --edge-length "$edge" -q -o "$out/m.ply" 2>"$out/err"
     rc=$?

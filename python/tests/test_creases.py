@@ -178,6 +178,33 @@ def test_a_gyroid_in_a_capped_cylinder_is_one_closed_part_along_its_creases():
     assert abs(volume / (0.5 * np.pi * 25 * 10) - 1) < 2e-3
 
 
+@pytest.mark.parametrize("insert", ["solid", "void"])
+def test_a_gyroid_with_a_solid_ball_or_a_void_capped_by_its_box_is_one_closed_part_along_its_creases(insert):
+    # docs/lattices.md "Unions and voids": min(g, ball) read as -max(-g, -ball), max(g, -ball) with the
+    # ball's sphere closed around an unbounded solid. The gyroid is odd and the box and ball symmetric: the
+    # part holds half the box plus (solid) or minus (void) half the ball.
+    ball = "x^2+y^2+z^2-4"
+    solids = f"min({GYROID},{ball})" if insert == "solid" else f"max({GYROID},-({ball}))"
+    m = isopatch.mesh(f"max({solids},max(max(abs(x),abs(y)),abs(z))-5)", box=((-5.4,) * 3, (5.4,) * 3),
+                      edge_length=0.25)
+    assert "creases_rounded" not in m.stats["warnings"]
+    assert m.stats["creases"]["caps"] == 6 and m.stats["creases"]["crease_vertices"] > 100
+    x, y, z = m.vertices.T
+    g = np.sin(x) * np.cos(y) + np.sin(y) * np.cos(z) + np.sin(z) * np.cos(x)
+    b = x * x + y * y + z * z - 4
+    on_ball_and_gyroid = (np.abs(g) < 1e-9) & (np.abs(b) < 1e-9)
+    assert on_ball_and_gyroid.sum() > 50  # the crease, exact on both
+    report = m.analyze()
+    assert report["topology"]["watertight"] and report["topology"]["outward_oriented"]
+    assert report["self_intersections"]["pairs"] == 0
+    assert report["valence"]["share_6"] >= 0.9
+    assert report["shape"]["min_angle_degrees"]["min"] >= 25.0
+    a, bb, c = (m.vertices[m.faces[:, k]] for k in range(3))
+    volume = np.einsum("ij,ij->i", a, np.cross(bb, c)).sum() / 6.0
+    half_ball = 0.5 * 4.0 / 3.0 * np.pi * 8.0
+    assert abs(volume / (500.0 + (half_ball if insert == "solid" else -half_ball)) - 1) < 2e-3
+
+
 def test_a_gyroid_in_a_cylinder_the_box_cuts_is_open_exactly_on_the_box_with_its_crease():
     # docs/lattices.md "Cut open by the box": both solids meshed in the box, the crease in arcs from the box
     # to the box, the boundary exactly on the box's faces.

@@ -25,22 +25,32 @@ namespace isopatch {
 
 namespace {
 
-/// max(a, b) as a surface: the solid the caps close (their sides are sampled inside it).
-class LargerOfTwo final : public Surface {
+/// max(a, b), or -max(a, b) when `negated` (the union of two solids as CutShape reads it), as a surface:
+/// the solid the caps close (their sides are sampled inside it).
+class SolidOfTwo final : public Surface {
  public:
-  LargerOfTwo(SurfacePtr a, SurfacePtr b)
-      : Surface("max(a, b)", a->box()), a_(std::move(a)), b_(std::move(b)) {}
-  double value(const Vec3& p) const override { return std::max(a_->value(p), b_->value(p)); }
+  SolidOfTwo(SurfacePtr a, SurfacePtr b, bool negated)
+      : Surface(negated ? "min(a, b)" : "max(a, b)", a->box()),
+        a_(std::move(a)),
+        b_(std::move(b)),
+        sign_(negated ? -1.0 : 1.0) {}
+  double value(const Vec3& p) const override { return sign_ * std::max(a_->value(p), b_->value(p)); }
   ValueGradient value_gradient(const Vec3& p) const override {
     const ValueGradient a = a_->value_gradient(p), b = b_->value_gradient(p);
-    return a.value >= b.value ? a : b;
+    const ValueGradient& larger = a.value >= b.value ? a : b;
+    return ValueGradient{sign_ * larger.value, sign_ * larger.gradient};
   }
   SecondOrder second_order(const Vec3& p) const override {
-    return a_->value(p) >= b_->value(p) ? a_->second_order(p) : b_->second_order(p);
+    SecondOrder s = a_->value(p) >= b_->value(p) ? a_->second_order(p) : b_->second_order(p);
+    s.value *= sign_;
+    s.gradient *= sign_;
+    s.hessian *= sign_;
+    return s;
   }
 
  private:
   SurfacePtr a_, b_;
+  double sign_;
 };
 
 /// An axis-aligned plane of the part: the axis, the level, and whether the solid lies below it.
@@ -115,7 +125,8 @@ std::optional<Mesh> mesh_capped_curved_cut(const Surface& surface, const Setting
   }
   if (!mesh) return std::nullopt;
   const auto caps_start = std::chrono::steady_clock::now();
-  const auto solid = std::make_shared<const LargerOfTwo>(shape->solids.first, shape->solids.second);
+  const auto solid =
+      std::make_shared<const SolidOfTwo>(shape->solids.first, shape->solids.second, shape->solids.united);
   std::vector<SurfacePtr> faces{shape->solids.first, shape->solids.second};
   for (const HalfSpace& h : capped) faces.push_back(plane_surface(Vec3(h.a, h.b, h.c), -h.d, box));
   AngleRepair repair;

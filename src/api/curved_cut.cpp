@@ -2,6 +2,7 @@
 #include "api/curved_cut.hpp"
 
 #include <isopatch/error.hpp>
+#include <isopatch/interval.hpp>
 #include <isopatch/isopatch.hpp>
 #include <isopatch/self_intersection.hpp>
 #include <isopatch/topology.hpp>
@@ -88,9 +89,37 @@ Mesh near_crease(const Mesh& mesh, std::size_t count, int rings,
   return part;
 }
 
-/// Whether the mesh is closed (its solid inside the box it was meshed in).
+/// Whether `minus` (an operand -a of a union) is negative on every face of `box`, proved by interval bounds
+/// over 8 x 8 tiles of each face: a's solid stays off the box's faces. False when a bound is not finite.
+bool negative_on_the_box(const Surface& minus, const Box& box) {
+  constexpr int kTiles = 8;
+  for (int axis = 0; axis < 3; ++axis)
+    for (const double level : {box.lo[axis], box.hi[axis]}) {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      for (int i = 0; i < kTiles; ++i)
+        for (int j = 0; j < kTiles; ++j) {
+          Box tile;
+          tile.lo[axis] = tile.hi[axis] = level;
+          tile.lo[u] = box.lo[u] + box.size()[u] * i / kTiles;
+          tile.hi[u] = box.lo[u] + box.size()[u] * (i + 1) / kTiles;
+          tile.lo[v] = box.lo[v] + box.size()[v] * j / kTiles;
+          tile.hi[v] = box.lo[v] + box.size()[v] * (j + 1) / kTiles;
+          const std::optional<Interval> b = minus.bound(tile);
+          if (!b || !(b->hi < 0.0)) return false;
+        }
+    }
+  return true;
+}
+
+/// Whether the mesh is closed and bounds its solid (the solid inside the box it was meshed in): not the
+/// closed surface of a complement (-a for a ball a), whose solid reaches the box and whose mesh, oriented
+/// along the gradient, encloses a negative volume.
 bool closed_mesh(const Mesh& mesh) {
-  return !mesh.triangles.empty() && analyze_topology(mesh).boundary_edges == 0;
+  if (mesh.triangles.empty()) return false;
+  const TopologyReport topology = analyze_topology(mesh);
+  double volume = 0.0;
+  for (const ComponentTopology& c : topology.components) volume += c.volume;
+  return topology.boundary_edges == 0 && volume > 0.0;
 }
 
 /// Flags the vertices of `mesh` on its boundary edges.
@@ -207,6 +236,11 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
 std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& settings, MeshStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   const Box box = *settings.box;
+  // A union of two solids inside the box (two balls) has faces the general crease path cuts into discs,
+  // with better valences than here: left to it. A union the box cuts (a lattice with a solid in it) is
+  // meshed here.
+  if (shape.united && negative_on_the_box(*shape.first, box) && negative_on_the_box(*shape.second, box))
+    return std::nullopt;
   Settings plain = settings;
   plain.frame.reset();
   // An operand with creases of its own, in the box or leaving it, is not smooth: not this form.
@@ -244,6 +278,11 @@ std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& setti
       cutter_stats = first_stats;
     } else {
       if (cutter_mesh.triangles.empty() || first_mesh.triangles.empty()) return std::nullopt;
+      // Two balls united, one solid of them reaching no face of the box only where the interval bounds
+      // could not show it: as below.
+      if (shape.united && analyze_topology(cutter_mesh).boundary_edges == 0 &&
+          analyze_topology(first_mesh).boundary_edges == 0)
+        return std::nullopt;
       open = true;
       open_lattice = std::move(first_mesh);
       if (stats) *stats = first_stats;
@@ -300,6 +339,9 @@ std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& setti
     stats->vertices = mesh.vertex_count();
     stats->triangles = mesh.triangle_count();
   }
+  // min(a, b) = -max(-a, -b): the same surface, outward the other way.
+  if (shape.united)
+    for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
   return mesh;
 }
 

@@ -335,6 +335,10 @@ std::string with_remedies(const std::string& what, double edge) {
     out += half;
     out += ")";
   } else if ((has("than an edge") || has("too short") || has("narrower")) && !has("--edge-length")) {
+    // A message that already ends by asking for a smaller edge length gets the length itself there.
+    const std::string bare = "; a smaller edge length";
+    if (out.size() >= bare.size() && out.compare(out.size() - bare.size(), bare.size(), bare) == 0)
+      out.erase(out.size() - bare.size());
     out += "; a smaller edge length (--edge-length ";
     out += half;
     out += ") may mesh it";

@@ -76,8 +76,13 @@ bool same_plane(const HalfSpace& h, const HalfSpace& o, double tolerance) {
 /// The walk down f's tree of max: every leaf as the branch choice that leads to it.
 class LeafWalk {
  public:
-  explicit LeafWalk(const Tape& tape)
-      : tape_(tape), switches_(expr::switch_instructions(tape)), writers_(operand_writers(tape)) {
+  /// `split_negated_min`: a min under an odd number of decreasing steps is split too (-min(a, b) is
+  /// max(-a, -b)), for the union of two solids read as the complement of their complements' intersection.
+  explicit LeafWalk(const Tape& tape, bool split_negated_min = false)
+      : tape_(tape),
+        switches_(expr::switch_instructions(tape)),
+        writers_(operand_writers(tape)),
+        split_negated_min_(split_negated_min) {
     switch_of_.assign(tape.code.size(), -1);
     for (std::size_t s = 0; s < switches_.size(); ++s) switch_of_[switches_[s]] = static_cast<int>(s);
   }
@@ -99,6 +104,7 @@ class LeafWalk {
   const Tape& tape_;
   std::vector<std::uint32_t> switches_;
   OperandWriters writers_;
+  bool split_negated_min_ = false;
   std::vector<int> switch_of_;
   bool overflow_ = false;
 
@@ -115,7 +121,8 @@ class LeafWalk {
     const auto index = static_cast<std::size_t>(node);
     if (const int order = monotone_step(in))
       return collect(writers_.a[index], choice, negated != (order < 0));
-    if (negated) return {choice};
+    const bool splits = negated ? split_negated_min_ && in.op == Op::Min : in.op == Op::Max;
+    if (negated && !splits) return {choice};
     if (in.op == Op::Abs) {
       // abs(u) = max(u, -u): two planes when u is affine, else one leaf.
       BranchChoice plus = choice, minus = choice;
@@ -124,12 +131,13 @@ class LeafWalk {
       if (leaf_kind(plus) == Kind::Affine && leaf_kind(minus) == Kind::Affine) return {plus, minus};
       return {choice};
     }
-    if (in.op != Op::Max) return {choice};
+    if (!splits) return {choice};
     std::vector<BranchChoice> out;
     for (std::int8_t side = 0; side < 2; ++side) {
       BranchChoice c = choice;
       c[static_cast<std::size_t>(switch_of_[index])] = side;
-      std::vector<BranchChoice> leaves = collect(side == 0 ? writers_.a[index] : writers_.b[index], c);
+      std::vector<BranchChoice> leaves =
+          collect(side == 0 ? writers_.a[index] : writers_.b[index], c, negated);
       // An operand with no plane under it is one smooth leaf, its own switches left open.
       if (!has_plane(leaves)) leaves = {c};
       out.insert(out.end(), leaves.begin(), leaves.end());
@@ -263,10 +271,11 @@ std::optional<CappedCutShape> split_capped_cut_shape(const Surface& f, const Box
   return CappedCutShape{std::move(*solids), std::move(leaves->second)};
 }
 
-std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box) {
-  const Expression* formula = f.expression();
-  if (formula == nullptr || formula->tape().code.empty()) return std::nullopt;
-  LeafWalk walk(formula->tape());
+namespace {
+
+/// The two curved leaves of `tape`'s tree of max (see LeafWalk), or nullopt.
+std::optional<CutShape> two_curved_leaves(const Tape& tape, bool split_negated_min, const Box& box) {
+  LeafWalk walk(tape, split_negated_min);
   std::vector<BranchChoice> leaves;
   if (!walk.run(leaves) || leaves.size() != 2) return std::nullopt;
   for (const BranchChoice& leaf : leaves)
@@ -274,7 +283,19 @@ std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box) {
   return CutShape{expression_surface(Expression(std::make_shared<const Tape>(walk.leaf_tape(leaves[0]))), box,
                                      "the first operand"),
                   expression_surface(Expression(std::make_shared<const Tape>(walk.leaf_tape(leaves[1]))), box,
-                                     "the second operand")};
+                                     "the second operand"),
+                  split_negated_min};
+}
+
+}  // namespace
+
+std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box) {
+  const Expression* formula = f.expression();
+  if (formula == nullptr || formula->tape().code.empty()) return std::nullopt;
+  if (std::optional<CutShape> intersection = two_curved_leaves(formula->tape(), false, box))
+    return intersection;
+  // min(a, b) = -max(-a, -b): the leaves of -f with its min split are -a and -b.
+  return two_curved_leaves(negated(formula->tape()), true, box);
 }
 
 }  // namespace isopatch

@@ -33,13 +33,18 @@ std::optional<CappedShape> split_capped_shape(const Surface& f, const Box& box);
 
 /// Two smooth solids intersected: f = max(a, b) through increasing steps, neither operand with a plane
 /// under it (a lattice cut by a sphere: max(gyroid, x^2 + y^2 + z^2 - r^2)). Meshed as a = 0 trimmed where
-/// b < 0 and b = 0 trimmed where a < 0, joined along their crease (api/curved_cut.hpp).
+/// b < 0 and b = 0 trimmed where a < 0, joined along their crease (api/curved_cut.hpp). Or two smooth
+/// solids united, f = min(a, b) (a lattice with a solid ball in it), read as -max(-a, -b): the same faces
+/// and crease, the mesh of max(-a, -b) turned inside out.
 struct CutShape {
-  SurfacePtr first, second;  ///< a and b, in the formula's order (formulas of their own over the box)
+  SurfacePtr first, second;  ///< a and b in the formula's order (formulas of their own over the box); -a
+                             ///< and -b when `united`
+  bool united = false;       ///< f = -max(first, second) = min(a, b)
 };
 
-/// Splits `f` when it is max(a, b) as above (exactly two leaves of f's tree of max, both not affine);
-/// nullopt for any other formula (nothing is evaluated; `f` without an expression gives nullopt).
+/// Splits `f` when it is max(a, b) as above (exactly two leaves of f's tree of max, both not affine), or
+/// min(a, b) (the same of -f's tree, a min under a negation split as a max; `united`); nullopt for any
+/// other formula (nothing is evaluated; `f` without an expression gives nullopt).
 std::optional<CutShape> split_cut_shape(const Surface& f, const Box& box);
 
 /// Two smooth solids capped by planes: f = max(a, b, p_1, ..., p_k) as split_capped_shape() reads it but
