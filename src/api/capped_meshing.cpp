@@ -40,7 +40,8 @@ std::optional<std::vector<CappedPart>> shelled_parts(const Surface& surface, con
   Settings plain = settings;
   plain.box = box;
   plain.frame.reset();
-  if (analyse_creases(*shape->hollow, plain)) return std::nullopt;
+  std::optional<Vec3> leaves;
+  if (analyse_creases(*shape->hollow, plain, &leaves) || leaves) return std::nullopt;
   std::vector<CappedPart> parts;
   parts.push_back({nullptr, shape->outer, shape->outer.size(), true, box, false});
   parts.push_back({shape->hollow, shape->inner, shape->inner.size(), true, box, true});
@@ -77,8 +78,11 @@ std::optional<std::vector<CappedPart>> split_capped_parts(const Surface& surface
   plain.box = box;
   plain.frame.reset();
   plain.region.clear();
-  // g with creases of its own (struts joined by min, say) is a shape for the general crease path.
-  if (smooth && analyse_creases(*smooth, plain)) return std::nullopt;
+  // g with creases of its own (struts joined by min, say), in the box or leaving it, is a shape for the
+  // general crease path (which says so when it rounds them): its smooth mesh here would round them
+  // silently.
+  std::optional<Vec3> leaves;
+  if (smooth && (analyse_creases(*smooth, plain, &leaves) || leaves)) return std::nullopt;
   return std::vector<CappedPart>{{smooth, planes, capped, closed, box, false}};
 }
 

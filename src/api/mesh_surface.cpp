@@ -420,6 +420,16 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
           : ClippedAttempt{};
   if (clipped.mesh) return not_empty(std::move(*clipped.mesh));
   if (stats && clipped.tried) *stats = before;
+  // Exact creases asked for and none of the crease paths could follow them: refused, never rounded.
+  if (given.creases == Creases::Exact && (creased.creases_leave_box || clipped.has_creases)) {
+    throw CreaseError(with_remedies(
+        creased.creases_leave_box
+            ? "creases of the shape leave the box, and the shape cut open by the box could not be meshed "
+              "along them; a box that holds the whole shape may mesh it along its creases"
+            : "the shape cut by the region, seen through the frame or in the given cells could not be meshed "
+              "along its creases; without the region, frame or cells it may be",
+        edge));
+  }
   const Settings settings = time.next();
   Mesh mesh = run_in_task_arena(settings, stats, [&] {
     if (settings.max_evaluations == 0 && settings.time_limit == 0.0)

@@ -7,6 +7,7 @@
 
 #include "csg_checks.hpp"
 #include "mesh_checks.hpp"
+#include "self_intersection.hpp"
 
 namespace isopatch {
 namespace {
@@ -111,6 +112,36 @@ TEST(CreaseMeshing, CreasesThePathsCannotFollowAreRoundedOrRefusedWhenExact) {
     EXPECT_EQ(what.rfind(rounded.stats.warnings.crease_failure, 0), 0u) << what;
     EXPECT_NE(what.find("--edge-length 0.0234"), std::string::npos) << what;
     EXPECT_NE(what.find("--creases off"), std::string::npos) << what;
+  }
+}
+
+TEST(CreaseMeshing, ACappedOperandWhoseCreasesLeaveTheBoxIsNeverRoundedSilently) {
+  // A gyroid united with a rod, capped by a tilted plane: the capped operand min(g, rod) has a crease
+  // that leaves the box. It used to be capped as if smooth (its crease rounded without a word, its mesh
+  // crossing itself); now it goes to the crease paths, which say why they round it, and Creases::Exact
+  // refuses it.
+  const std::string part = "max(min(sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x),x^2+y^2-4),0.6*x+0.8*z-4)";
+  const Box box{Vec3::Constant(-5.0), Vec3::Constant(5.0)};
+  const SurfacePtr f = expression_surface(part, box);
+  Settings automatic;
+  automatic.box = box;
+  automatic.edge_length = 0.25;
+  MeshStats stats;
+  const Mesh mesh = mesh_surface(*f, automatic, &stats);
+  EXPECT_FALSE(stats.creases);
+  EXPECT_EQ(stats.warnings.creases_leave_box, 1u);
+  EXPECT_TRUE(analyze_topology(mesh).manifold());
+  EXPECT_EQ(test::count_self_intersections(mesh, 10), 0u);
+  Settings exact = automatic;
+  exact.creases = Creases::Exact;
+  try {
+    mesh_surface(*f, exact);
+    ADD_FAILURE() << "no CreaseError with Creases::Exact";
+  } catch (const CreaseError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("leave the box"), std::string::npos) << what;
+    EXPECT_NE(what.find("--creases off"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
   }
 }
 
