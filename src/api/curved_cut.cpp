@@ -47,15 +47,16 @@ Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& b
 /// joined anew, then (creases closer than the trim's band) the operand meshed again at half the edge in
 /// `mesh_box` (the box `mesh` was made in), joined there, and the whole face cleaned up to the edge: twice
 /// the vertices across a strip or neck between creases. `cut` None: the part is closed, the operand
-/// is meshed closed.
+/// is meshed closed. `fine`: straight to the join at half the edge.
 Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::vector<CreaseLoop>& loops,
               bool reversed, double edge, const Settings& settings, const Box& box, const Box& mesh_box,
-              BoxCut cut) {
+              BoxCut cut, bool fine) {
   try {
+    if (fine) throw CreaseError("the join at half the edge asked for");
     return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box, false, cut);
   } catch (const CreaseError&) {
     // Where the trimmed face's runs to the box do not close, its whole ring at the box joined anew first.
-    if (cut == BoxCut::Runs) {
+    if (cut == BoxCut::Runs && !fine) {
       try {
         return zip_face_to_creases(mesh, s, o, loops, reversed, edge, settings, box, false, BoxCut::Ring);
       } catch (const CreaseError&) {
@@ -63,8 +64,8 @@ Mesh zip_face(const Mesh& mesh, const Surface& s, const Surface& o, const std::v
     }
     Settings finer = settings;
     finer.edge_length = 0.5 * edge;
-    const Mesh fine = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, cut == BoxCut::None);
-    return zip_face_to_creases(fine, s, o, loops, reversed, edge, settings, box, true, cut);
+    const Mesh half_edge_mesh = mesh_operand(s, finer, mesh_box, 0.5 * edge, nullptr, cut == BoxCut::None);
+    return zip_face_to_creases(half_edge_mesh, s, o, loops, reversed, edge, settings, box, true, cut);
   }
 }
 
@@ -172,15 +173,16 @@ struct JoinInput {
 /// Both faces trimmed and zipped to the crease (zip_face()), put together sharing the crease's vertices,
 /// their crease angles repaired (the boundary on the box held), and checked: a 2-manifold, outward,
 /// closed unless the box cuts it (then every boundary vertex on the box), no triangle near the crease or
-/// the box crossing another. `rejoin_ring`: each face's whole ring at the box is joined anew.
+/// the box crossing another. `rejoin_ring`: each face's whole ring at the box is joined anew. `fine`:
+/// both faces joined on their operands' meshes at half the edge (zip_face()).
 /// \throw CreaseError naming the place where a check fails; the errors of zip_face().
-Mesh join_faces(const JoinInput& in, bool rejoin_ring, AngleRepair& repair) {
+Mesh join_faces(const JoinInput& in, bool rejoin_ring, AngleRepair& repair, bool fine = false) {
   const std::size_t crease_vertices = in.crease_vertices;
   const BoxCut cut = !in.open ? BoxCut::None : rejoin_ring ? BoxCut::Ring : BoxCut::Runs;
   Mesh mesh = zip_face(in.lattice_mesh, *in.lattice, *in.cutter, in.loops, false, in.edge, in.settings,
-                       in.box, in.lattice_box, cut);
+                       in.box, in.lattice_box, cut, fine);
   const Mesh other = zip_face(in.cutter_mesh, *in.cutter, *in.lattice, in.loops, true, in.edge, in.settings,
-                              in.box, in.box, cut);
+                              in.box, in.box, cut, fine);
   const auto offset = static_cast<std::uint32_t>(mesh.positions.size() - crease_vertices);
   mesh.positions.insert(mesh.positions.end(),
                         other.positions.begin() + static_cast<std::ptrdiff_t>(crease_vertices),
@@ -314,10 +316,17 @@ std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& setti
       mesh = join_faces(in, false, repair);
     } catch (const CreaseError&) {
       // Where the box cuts the part and the faces' runs to the box do not close (a crease nearly along
-      // a face of the box), both faces' whole rings at the box are joined anew.
-      if (!open) throw;
+      // a face of the box), both faces' whole rings at the box are joined anew; where the joined part
+      // fails its checks (creases closer than an edge: two loops nearly touching where the surfaces are
+      // nearly tangent), both faces are joined on meshes of half the edge, cleaned up to the edge.
       repair = AngleRepair{};
-      mesh = join_faces(in, true, repair);
+      try {
+        if (!open) throw;
+        mesh = join_faces(in, true, repair);
+      } catch (const CreaseError&) {
+        repair = AngleRepair{};
+        mesh = join_faces(in, false, repair, true);
+      }
     }
     return 0;
   });

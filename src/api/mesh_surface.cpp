@@ -403,7 +403,14 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
   try {
     creased = mesh_along_creases(surface, time.next(), stats);
   } catch (const ShapeNotManifoldError& e) {
-    throw ShapeNotManifoldError(with_remedies(e.what(), edge));
+    // Two smooth solids whose join failed for another reason than a tangency are a 2-manifold: the
+    // general path's verdict there is its own failure to cut a face of many handles, not a fault of the
+    // shape. The join's reason stands, as any crease path's failure.
+    if (cut_failure.empty() || cut_failure.find("tangential") != std::string::npos)
+      throw ShapeNotManifoldError(with_remedies(e.what(), edge));
+    if (given.creases == Creases::Exact) throw CreaseError(with_remedies(cut_failure, edge));
+    crease_failure = cut_failure;
+    if (stats) *stats = before;
   } catch (const CreaseError& e) {
     // For two solids intersected, why their join failed.
     const std::string what = cut_failure.empty() ? std::string(e.what()) : cut_failure;
