@@ -55,8 +55,8 @@ void settle_all(std::vector<Vec3>& points, const Surface& a, const Surface& b, d
   });
   for (std::size_t k = first; k < last; ++k)
     if (failed[k])
-      throw CreaseError("the surfaces of max(a, b) meet tangentially near " + point_text(points[k]) +
-                        ": their crease has no point there");
+      throw ShapeNotManifoldError("the surfaces of max(a, b) meet tangentially near " +
+                                  point_text(points[k]) + ": their crease has no point there");
 }
 
 /// The end of an arc where the crease leaves the box: the point of a = b = 0 on the face of `box` that

@@ -27,8 +27,9 @@ struct CreaseLoop {
 /// runs; with it (the box `mesh_a` was meshed in, its boundary on the box's faces), a crease reaching the
 /// mesh's boundary is an arc ending where a = b = 0 meets that face of the box.
 /// \throw CreaseError naming the place when the crease reaches the mesh's boundary without `open_at` (it
-///        leaves the mesh's box) or at an edge of the box, the surfaces meet tangentially (no curve to
-///        settle on), or a resampled curve folds; EvaluationError where a or b is not finite.
+///        leaves the mesh's box) or at an edge of the box, or a resampled curve folds;
+///        ShapeNotManifoldError (a CreaseError) where the surfaces meet tangentially (no curve to settle
+///        on: the shape is no 2-manifold there); EvaluationError where a or b is not finite.
 std::vector<CreaseLoop> trace_crease_loops(const Mesh& mesh_a, const Surface& a, const Surface& b,
                                            double edge, double tolerance, const Box* open_at = nullptr);
 

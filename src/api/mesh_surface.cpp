@@ -370,6 +370,7 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
     return mesh;
   };
   std::string cut_failure;
+  bool cut_is_shape_fault = false;  // the two solids meet tangentially: not a 2-manifold
   // Two smooth solids capped by planes across the axes (a lattice in a cylinder capped at both ends): cut
   // open by the planes' box, closed by planar caps. Where that fails, the paths below are tried.
   try {
@@ -377,6 +378,7 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
       return not_empty(std::move(*cut));
   } catch (const CreaseError& e) {
     cut_failure = e.what();
+    cut_is_shape_fault = dynamic_cast<const ShapeNotManifoldError*>(&e) != nullptr;
     if (stats) *stats = before;
   }
   try {
@@ -392,6 +394,7 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
       return not_empty(std::move(*cut));
   } catch (const CreaseError& e) {
     cut_failure = e.what();
+    cut_is_shape_fault = dynamic_cast<const ShapeNotManifoldError*>(&e) != nullptr;
     if (stats) *stats = before;
   }
   // Every refusal says what would mesh the shape. A shape that is no 2-manifold is refused; where the
@@ -406,8 +409,7 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
     // Two smooth solids whose join failed for another reason than a tangency are a 2-manifold: the
     // general path's verdict there is its own failure to cut a face of many handles, not a fault of the
     // shape. The join's reason stands, as any crease path's failure.
-    if (cut_failure.empty() || cut_failure.find("tangential") != std::string::npos)
-      throw ShapeNotManifoldError(with_remedies(e.what(), edge));
+    if (cut_failure.empty() || cut_is_shape_fault) throw ShapeNotManifoldError(with_remedies(e.what(), edge));
     if (given.creases == Creases::Exact) throw CreaseError(with_remedies(cut_failure, edge));
     crease_failure = cut_failure;
     if (stats) *stats = before;
