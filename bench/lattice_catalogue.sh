@@ -3,7 +3,8 @@
 # capped by the box of two periods (CUT=box), cut by the ball of radius 6 (CUT=ball), inside the cylinder
 # of radius 6 capped at z = +-6 (CUT=cylinder), or inside a ball of radius 8 that the box [-6, 6]^3 cuts
 # open (CUT=open), capped by the box of two periods with a solid ball of radius 3 in it (CUT=insert: the
-# union min(lattice, ball)) or a spherical void of radius 3 (CUT=void: max(lattice, -ball)), meshed at 1/N
+# union min(lattice, ball)) or a spherical void of radius 3 (CUT=void: max(lattice, -ball)), or filling a
+# ball of radius 5.5 inside a spherical skin 0.5 thick (CUT=skin: max(r - 6, min(lattice, 5.5 - r))), meshed at 1/N
 # of the part's side (diameter); prints one Markdown row per part
 # (whole-process seconds timed from outside, vertices, watertight/manifold/outward, self-intersections,
 # smallest angle, valence-6 share) or the exit code and message of a refusal.
@@ -29,6 +30,9 @@ if [ "${4:-box}" = ball ]; then
 elif [ "${4:-box}" = cylinder ]; then
   cap="max(x*x+y*y-36,abs(z)-6)"
   edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 12 / n }')  # the diameter and height 12 over N
+elif [ "${4:-box}" = skin ]; then
+  cap="sqrt(x*x+y*y+z*z)-6"
+  edge=$(awk -v n="$divisor" 'BEGIN { printf "%.6f", 12 / n }')  # the diameter 12 over N
 elif [ "${4:-box}" = open ]; then
   cap="x*x+y*y+z*z-64"
   box="-6,-6,-6,6,6,6"
@@ -43,6 +47,7 @@ with_ball() {
   case "$2" in
     insert) echo "min($1,$ball)" ;;
     void) echo "max($1,-($ball))" ;;
+    skin) echo "min($1,5.5-sqrt(x*x+y*y+z*z))" ;;
     *) echo "$1" ;;
   esac
 }

@@ -8,12 +8,15 @@ from __future__ import annotations
 
 
 class Error(Exception):
-    """Base of every isopatch error. ``setting`` names the argument the error is about ('' if none)."""
+    """Base of every isopatch error. ``setting`` names the argument the error is about ('' if none);
+    ``command_line_message`` is the message in the command line's words (its flags where ``message``
+    names keyword arguments), for front ends that run as a command."""
 
     def __init__(self, message: str, setting: str = "") -> None:
         super().__init__(message)
         self.message = message
         self.setting = setting
+        self.command_line_message = message
 
     def __str__(self) -> str:
         return self.message

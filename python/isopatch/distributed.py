@@ -407,7 +407,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
                                memory_limit=a.memory_limit, edge_length=a.edge_length, quality=a.quality,
                                refine=a.refine, creases=a.creases, split=a.split)
     except Error as e:
-        print("isopatch: error: %s" % e, file=sys.stderr)
+        print("isopatch: error: %s" % e.command_line_message, file=sys.stderr)
         return _exit_code(e)
     print("isopatch: %d vertices, %d triangles in %d %s (%d made, %d reused) in %.1f s; manifest %s%s"
           % (manifest["vertices"], manifest["triangles"], manifest["blocks"],

@@ -77,6 +77,8 @@ void raise(const Error& e) {
                    py::arg("excerpt") = parse->excerpt());
   else
     instance = cls(in_python_words(e.what()), py::arg("setting") = e.setting());
+  // The library's own words, which name the command line's flags, for the command line's front ends.
+  instance.attr("command_line_message") = std::string(e.what());
   PyErr_SetObject(cls.ptr(), instance.ptr());
 }
 

@@ -205,6 +205,31 @@ def test_a_gyroid_with_a_solid_ball_or_a_void_capped_by_its_box_is_one_closed_pa
     assert abs(volume / (500.0 + (half_ball if insert == "solid" else -half_ball)) - 1) < 2e-3
 
 
+def test_a_lattice_sheet_inside_a_spherical_skin_is_meshed_along_its_creases_in_any_frame():
+    # docs/lattices.md "Skins": max(outer, min(lattice, -inner)), the outer sphere apart from the rest, each
+    # meshed by its own path; a frame keeps the creases.
+    r = "sqrt(x^2+y^2+z^2)"
+    formula = f"max({r}-5,min(abs({GYROID})-0.3,4.5-{r}))"
+    box = ((-5.4,) * 3, (5.4,) * 3)
+    m = isopatch.mesh(formula, box=box, edge_length=0.25)
+    assert "creases_rounded" not in m.stats["warnings"]
+    x, y, z = m.vertices.T
+    g = np.sin(x) * np.cos(y) + np.sin(y) * np.cos(z) + np.sin(z) * np.cos(x)
+    radius = np.sqrt(x * x + y * y + z * z)
+    crease = (np.abs(np.abs(g) - 0.3) < 1e-9) & (np.abs(radius - 4.5) < 1e-9)
+    assert crease.sum() > 100 and crease.sum() <= m.stats["creases"]["crease_vertices"]
+    assert np.sum(np.abs(radius - 5) < 1e-9) > 1000  # the skin's outer sphere
+    report = m.analyze()
+    assert report["topology"]["watertight"] and report["topology"]["outward_oriented"]
+    assert report["self_intersections"]["pairs"] == 0
+    assert report["valence"]["share_6"] >= 0.9
+    assert report["shape"]["min_angle_degrees"]["min"] >= 25.0
+    turned = isopatch.mesh(formula, box=box, edge_length=0.25, frame=(30, 20, 10))
+    assert "creases_rounded" not in turned.stats["warnings"]
+    ratio = turned.stats["creases"]["crease_vertices"] / m.stats["creases"]["crease_vertices"]
+    assert abs(ratio - 1) < 0.05
+
+
 def test_a_gyroid_in_a_cylinder_the_box_cuts_is_open_exactly_on_the_box_with_its_crease():
     # docs/lattices.md "Cut open by the box": both solids meshed in the box, the crease in arcs from the box
     # to the box, the boundary exactly on the box's faces.

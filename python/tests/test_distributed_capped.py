@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from conftest import expect_one_manifold_part, read_ply, require
-from isopatch import SettingError, distributed
+from isopatch import CreaseError, SettingError, distributed
 
 require("distributed", "python3-distributed")
 
@@ -122,6 +122,23 @@ def test_tiles_by_planes_refuse_a_capped_lattice_in_one_line(client, tmp_path):
         distributed.mesh_blocks(CAPPED, box=BOX, edge_length=EDGE, tiles=8, split="planes", out_dir=str(tmp_path),
                                 scheduler=client)
     assert "\n" not in str(e.value)
+
+
+def test_a_shape_blocks_cannot_follow_is_refused_with_what_meshes_it_in_each_front_ends_words(client, tmp_path):
+    # A gyroid inside a spherical skin: one process meshes it along its creases (docs/lattices.md "Skins"),
+    # the blocked run's crease path cannot cut the gyroid's face.
+    r = "sqrt(x*x+y*y+z*z)"
+    skinned = "max(%s-5,min(%s,4.5-%s))" % (r, GYROID, r)
+    with pytest.raises(CreaseError) as e:
+        distributed.mesh_blocks(skinned, box=((-5.4,) * 3, (5.4,) * 3), edge_length=0.25, tiles=4,
+                                out_dir=str(tmp_path / "py"), scheduler=client)
+    message = str(e.value)
+    assert "\n" not in message and "without tiles" in message and 'creases="off"' in message
+    run = subprocess.run([CLI, "mesh", skinned, "--box", "-5.4,-5.4,-5.4,5.4,5.4,5.4", "--edge-length", "0.25",
+                          "--tiles", "4", "--out-dir", str(tmp_path / "cli"), "-o", str(tmp_path / "m.ply")],
+                         capture_output=True, text=True, timeout=600)
+    assert run.returncode == 11, run.stderr[-2000:]
+    assert "without --tiles" in run.stderr and "--creases off" in run.stderr
 
 
 @pytest.mark.skipif(not CLI, reason="ISOPATCH_CLI names the command-line tool")

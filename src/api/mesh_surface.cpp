@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "api/apart_meshing.hpp"
 #include "api/capped_curved_cut.hpp"
 #include "api/capped_meshing.hpp"
 #include "api/clipped_creases.hpp"
@@ -384,6 +385,15 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
   try {
     if (std::optional<Mesh> capped = mesh_capped_shape(surface, time.next(), stats))
       return not_empty(std::move(*capped));
+  } catch (const CreaseError&) {
+    if (stats) *stats = before;
+  }
+  // Two solids whose surfaces never meet (a lattice with a void inside a curved skin, parts side by
+  // side): each surface meshed on its own by whichever path fits it, the components the other keeps.
+  // Where a part cannot be meshed along its creases, the paths below try the whole.
+  try {
+    if (std::optional<Mesh> apart = mesh_apart_operands(surface, time.next(), stats, mesh_surface))
+      return std::move(*apart);
   } catch (const CreaseError&) {
     if (stats) *stats = before;
   }

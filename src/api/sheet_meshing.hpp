@@ -9,27 +9,22 @@
 #include <isopatch/settings.hpp>
 #include <isopatch/surface.hpp>
 
+#include "api/apart_meshing.hpp"
+
 #include <array>
-#include <functional>
 #include <optional>
 
 namespace isopatch {
 
-/// Meshes one surface with settings (the full entry point, mesh_surface, so that a wall with creases
-/// or a sheet of a sheet is meshed as such).
-using WallMesher = std::function<Mesh(const Surface&, const Settings&, MeshStats*)>;
-
-/// When `f` is a sheet whose walls stay apart throughout the domain of `settings` (its box, region,
-/// cells, or every rotation of its box for a frame) and the method is Projection: each wall meshed by
-/// `mesh_wall` with the same settings (the second with what is left of max_vertices, max_evaluations
-/// and time_limit), the two meshes concatenated (first wall's vertices first). A wall that does not
-/// cross the domain is left out. `stats` (may be null) gets both runs' counts added, stage times
-/// merged, and `sheet` set. Returns nullopt when `f` is not such a sheet.
-/// \throw NoSurfaceError when neither wall crosses the domain; whatever `mesh_wall` throws otherwise.
 /// The two walls mesh_sheet() meshes `f` as (split_sheet_shape() over the box, or every rotation of it
 /// in a frame), or nullopt when f is not such a sheet there or the method is not the projection.
 std::optional<std::array<SurfacePtr, 2>> sheet_walls(const Surface& f, const Settings& settings);
 
+/// When `f` is a sheet whose walls stay apart throughout the domain of `settings` (its box, region,
+/// cells, or every rotation of its box for a frame) and the method is Projection: each wall meshed by
+/// `mesh_wall` as mesh_apart_surfaces() meshes its parts (first wall's vertices first); `stats` (may
+/// be null) as there, and `sheet` set. Returns nullopt when `f` is not such a sheet.
+/// \throw NoSurfaceError when neither wall crosses the domain; whatever `mesh_wall` throws otherwise.
 std::optional<Mesh> mesh_sheet(const Surface& f, const Settings& settings, MeshStats* stats,
                                const WallMesher& mesh_wall);
 

@@ -4,8 +4,11 @@
 #include <isopatch/blocks.hpp>
 #include <isopatch/composite_mesh.hpp>
 
+#include <isopatch/error.hpp>
+
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -21,9 +24,28 @@ struct CreasedPieces {
   Box box;                        ///< the box the analysis was made in (the repair's tolerances)
 };
 
+namespace {
+
+/// What meshes a shape the blocked run's crease path refuses: one process's other crease paths, or
+/// turning creases off.
+constexpr const char* kBlockedRemedy =
+    "; blocks (--tiles) follow creases only by cutting each face into pieces by planes, which fails on faces "
+    "of many handles: one process (without --tiles) meshes lattices capped, cut, with inserts, voids or "
+    "skins along their creases (docs/lattices.md); turning creases off (--creases off) meshes it as a "
+    "smooth surface (creases rounded)";
+
+}  // namespace
+
 std::shared_ptr<const CreasedPieces> creased_pieces(const Surface& surface, const Settings& settings) {
   settings.validate();
-  std::optional<CsgShape> shape = analyse_creases(surface, settings);
+  std::optional<CsgShape> shape;
+  try {
+    shape = analyse_creases(surface, settings);
+  } catch (const ShapeNotManifoldError& e) {
+    throw ShapeNotManifoldError(std::string(e.what()) + kBlockedRemedy);
+  } catch (const CreaseError& e) {
+    throw CreaseError(std::string(e.what()) + kBlockedRemedy);
+  }
   if (!shape) return nullptr;
   return std::make_shared<const CreasedPieces>(
       CreasedPieces{CompositeModel(std::make_shared<const Composite>(std::move(shape->composite))),
