@@ -139,6 +139,75 @@ std::optional<Tape> factored(const Tape& tape) {
   return std::nullopt;
 }
 
+/// Whether the instructions `i` and `j` compute exact negations of each other: -u and u, u + c and
+/// -c - u, c * u and -c * u, u - v and v - u (u and v values of instructions; rounding is symmetric).
+bool negations(const Tape& tape, const OperandWriters& w, int i, int j) {
+  if (i < 0 || j < 0) return false;
+  const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+  const expr::Instruction &a = tape.code[ui], &b = tape.code[uj];
+  if ((a.op == Op::Neg && w.a[ui] == j) || (b.op == Op::Neg && w.a[uj] == i)) return true;
+  const bool same_operand = w.a[ui] >= 0 && w.a[ui] == w.a[uj];
+  if (same_operand && ((a.op == Op::AddC && b.op == Op::RSubC) || (a.op == Op::RSubC && b.op == Op::AddC)))
+    return b.imm == -a.imm;
+  if (same_operand && a.op == Op::MulC && b.op == Op::MulC) return b.imm == -a.imm;
+  return a.op == Op::Sub && b.op == Op::Sub && w.a[ui] >= 0 && w.b[ui] >= 0 && w.a[ui] == w.b[uj] &&
+         w.b[ui] == w.a[uj];
+}
+
+/// Whether s <= 0 implies t < 0 throughout `box` (the solid s < 0 lies inside t < 0, apart from its
+/// surface): on every box of a bisection down to `finest`, s > 0 or t < 0 by the enclosures.
+bool inside(const Tape& s, const Tape& t, const Box& box, double finest, std::size_t& budget) {
+  if (budget == 0) return false;
+  --budget;
+  if (expr::evaluate_interval(s, box).lo > 0.0 || expr::evaluate_interval(t, box).hi < 0.0) return true;
+  const Vec3 size = box.hi - box.lo;
+  int axis = 0;
+  for (int k = 1; k < 3; ++k)
+    if (size[k] > size[axis]) axis = k;
+  if (!(size[axis] > finest)) return false;
+  Box low = box, high = box;
+  low.hi[axis] = high.lo[axis] = 0.5 * (box.lo[axis] + box.hi[axis]);
+  return inside(s, t, low, finest, budget) && inside(s, t, high, finest, budget);
+}
+
+/// f = min(max(X, s), max(t, -s)) (in any order, the root a min itself) with the solid s < 0 inside
+/// t < 0 in `box`: an infill X < 0 of the inner body s < 0 united with the skin between it and the
+/// outer body t < 0. Its solid is that of max(t, min(X, -s)), whose surface lacks only the face s = 0
+/// the two operands share (where f = 0 inside the solid without changing sign); nullopt for other
+/// formulas or when the inclusion is not proved.
+std::optional<Tape> factored_by_inclusion(const Tape& tape, const Box& box, double finest,
+                                          std::size_t budget) {
+  const OperandWriters w = operand_writers(tape);
+  const int root = w.root;
+  if (root < 0 || tape.code[static_cast<std::size_t>(root)].op != Op::Min) return std::nullopt;
+  const int sides[2] = {w.a[static_cast<std::size_t>(root)], w.b[static_cast<std::size_t>(root)]};
+  for (const int side : sides)
+    if (side < 0 || tape.code[static_cast<std::size_t>(side)].op != Op::Max) return std::nullopt;
+  const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);
+  for (std::int8_t infill = 0; infill < 2; ++infill) {
+    const auto p = static_cast<std::size_t>(sides[infill]), q = static_cast<std::size_t>(sides[1 - infill]);
+    for (std::int8_t i = 0; i < 2; ++i)
+      for (std::int8_t j = 0; j < 2; ++j) {
+        if (!negations(tape, w, i == 0 ? w.a[p] : w.b[p], j == 0 ? w.a[q] : w.b[q])) continue;
+        const Tape on_p = with_branch(tape, switches, root, infill);
+        const Tape on_q = with_branch(tape, switches, root, static_cast<std::int8_t>(1 - infill));
+        const std::vector<std::uint32_t> p_switches = expr::switch_instructions(on_p);
+        const std::vector<std::uint32_t> q_switches = expr::switch_instructions(on_q);
+        // The root's branch fixed leaves a copy of it (u + 0) over the inner max.
+        const int p_node = root_node(on_p, operand_writers(on_p)),
+                  q_node = root_node(on_q, operand_writers(on_q));
+        if (p_node < 0 || q_node < 0) return std::nullopt;
+        const Tape inner = with_branch(on_p, p_switches, p_node, i);
+        const Tape lattice = with_branch(on_p, p_switches, p_node, static_cast<std::int8_t>(1 - i));
+        const Tape minus_inner = with_branch(on_q, q_switches, q_node, j);
+        const Tape outer = with_branch(on_q, q_switches, q_node, static_cast<std::int8_t>(1 - j));
+        if (!inside(inner, outer, box, finest, budget)) continue;
+        return combined(Op::Max, outer, combined(Op::Min, lattice, minus_inner));
+      }
+  }
+  return std::nullopt;
+}
+
 /// split_apart_operands() of one tape.
 std::optional<ApartOperands> split_tape(const Tape& tape, const Box& box, double finest,
                                         std::size_t most_boxes) {
@@ -173,9 +242,11 @@ std::optional<ApartOperands> split_apart_operands(const Surface& f, const Box& b
   if (formula == nullptr || formula->tape().code.empty() || !box.valid() || !(finest > 0.0))
     return std::nullopt;
   if (std::optional<ApartOperands> split = split_tape(formula->tape(), box, finest, most_boxes)) return split;
-  const std::optional<Tape> other = factored(formula->tape());
-  if (!other) return std::nullopt;
-  return split_tape(*other, box, finest, most_boxes);
+  if (const std::optional<Tape> other = factored(formula->tape()))
+    if (std::optional<ApartOperands> split = split_tape(*other, box, finest, most_boxes)) return split;
+  if (const std::optional<Tape> other = factored_by_inclusion(formula->tape(), box, finest, most_boxes))
+    return split_tape(*other, box, finest, most_boxes);
+  return std::nullopt;
 }
 
 }  // namespace isopatch

@@ -95,12 +95,32 @@ TEST(ApartOperands, AnInfillAndASkinUnitedAreFactoredOverTheBodyTheyShare) {
   }
 }
 
+TEST(ApartOperands, AnInfillOfTheSkinsInnerBodyIsReadWithoutTheFaceTheyShare) {
+  // min(max(X, s), max(t, -s)) with s < 0 inside t < 0: the solid of max(t, min(X, -s)); f itself vanishes
+  // on the inner sphere where X < 0 without changing sign there.
+  for (const std::string& formula :
+       {"min(max(" + kGyroid + "," + kRadius + "-4.5),max(" + kRadius + "-5,4.5-" + kRadius + "))",
+        "min(max(" + kRadius + "-5,-(" + kRadius + "-4.5)),max(" + kRadius + "-4.5," + kGyroid + "))"}) {
+    const std::optional<ApartOperands> shape = split(formula, 5.4, 0.06);
+    ASSERT_TRUE(shape) << formula;
+    EXPECT_FALSE(shape->united);
+    for (const Vec3& p : {Vec3(0.3, -0.7, 1.1), Vec3(4.2, 0.1, -0.3), Vec3(-2.5, 3.0, 1.9)}) {
+      const double g = std::sin(p.x()) * std::cos(p.y()) + std::sin(p.y()) * std::cos(p.z()) +
+                       std::sin(p.z()) * std::cos(p.x());
+      EXPECT_NEAR(shape->operands[0]->value(p), p.norm() - 5.0, 1e-13);
+      EXPECT_NEAR(shape->operands[1]->value(p), std::min(g, 4.5 - p.norm()), 1e-13);
+    }
+  }
+}
+
 TEST(ApartOperands, SurfacesThatMeetShareAFaceOrComeTooCloseAreNotSplit) {
   // The lattice reaches the outer sphere: a crease between the operands.
   EXPECT_FALSE(split("max(" + kRadius + "-4,min(" + kGyroid + ",4.5-" + kRadius + "))", 5.4, 0.06));
-  // An infill and a skin sharing the sphere r = 4.5 (both operands have it as a face).
-  EXPECT_FALSE(split(
-      "min(max(" + kGyroid + "," + kRadius + "-4.5),max(" + kRadius + "-5,4.5-" + kRadius + "))", 5.4, 0.06));
+  // An infill of the ball r < 5 united with the ball of radius 5.8 about (1, 0, 0) less the ball r < 5:
+  // the infill pokes out of the outer ball at (-5, 0, 0), so r = 5 is no inner face throughout.
+  EXPECT_FALSE(
+      split("min(max(" + kGyroid + "," + kRadius + "-5),max(sqrt((x-1)^2+y^2+z^2)-5.8,5-" + kRadius + "))",
+            5.4, 0.06));
   // Surfaces 0.02 apart, closer than the proof's finest boxes of 0.06.
   EXPECT_FALSE(split("max(" + kRadius + "-5,min(" + kGyroid + ",4.98-" + kRadius + "))", 5.4, 0.06));
   // Two balls apart are smooth where f vanishes: meshed whole.
@@ -129,7 +149,7 @@ TEST(ApartOperandsMeshing, ALatticeInsideACurvedSkinIsMeshedAlongItsCreasesWithE
   EXPECT_EQ(one.mesh.triangles, run.mesh.triangles);
 }
 
-TEST(ApartOperandsMeshing, TheSkinWrittenAsAUnionWithTheInfillGivesTheSameMesh) {
+TEST(ApartOperandsMeshing, TheSkinWrittenAsAUnionWithTheInfillGivesTheSameMeshEitherWay) {
   const std::string body = kRadius + "-5";
   const test::CappedRun united =
       mesh_in_box("min(max(" + kGyroid + "," + body + "),max(" + body + ",4.5-" + kRadius + "))", 5.4, 0.25);
@@ -137,6 +157,11 @@ TEST(ApartOperandsMeshing, TheSkinWrittenAsAUnionWithTheInfillGivesTheSameMesh) 
   EXPECT_EQ(united.mesh.positions, direct.mesh.positions);
   EXPECT_EQ(united.mesh.triangles, direct.mesh.triangles);
   EXPECT_EQ(united.stats.warnings.creases_rounded, 0u);
+  // The infill of the inner ball united with the skin: the same solid, the same mesh.
+  const test::CappedRun infill = mesh_in_box(
+      "min(max(" + kGyroid + "," + kRadius + "-4.5),max(" + kRadius + "-5,4.5-" + kRadius + "))", 5.4, 0.25);
+  EXPECT_EQ(infill.mesh.positions, direct.mesh.positions);
+  EXPECT_EQ(infill.mesh.triangles, direct.mesh.triangles);
 }
 
 TEST(ApartOperandsMeshing, TwoCappedLatticesSideBySideAreTwoClosedPartsOfExactVolume) {
