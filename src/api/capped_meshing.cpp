@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/capped_curved_cut.hpp"
 #include "api/crease_meshing.hpp"
 #include "api/cut_and_caps.hpp"
 #include "api/facet_polygons.hpp"
@@ -114,6 +115,17 @@ std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& se
     stats->vertices = mesh.vertex_count();
     stats->triangles = mesh.triangle_count();
   }
+  return mesh;
+}
+
+std::optional<Mesh> mesh_capped_complement(const Surface& surface, const Settings& settings,
+                                           MeshStats* stats) {
+  const SurfacePtr minus = union_complement(surface, settings.box.value_or(surface.box()));
+  if (!minus) return std::nullopt;
+  std::optional<Mesh> mesh = mesh_capped_curved_cut(*minus, settings, stats);
+  if (!mesh) mesh = mesh_capped_shape(*minus, settings, stats);
+  if (!mesh) return std::nullopt;
+  for (Triangle& t : mesh->triangles) std::swap(t[1], t[2]);
   return mesh;
 }
 

@@ -31,6 +31,15 @@ namespace isopatch {
 /// polyhedron's caps and the hollows inside the inner one, closed and outward.
 std::optional<Mesh> mesh_capped_shape(const Surface& surface, const Settings& settings, MeshStats* stats);
 
+/// The mesh of a union whose complement is a capped shape (csg/capped_shape.hpp union_complement():
+/// min(g, -P), the outside of the polyhedron P united with the lattice g < 0; or with two curved solids,
+/// min(a, b, -P) as mesh_capped_curved_cut() takes max(-a, -b, P)): the complement's mesh by
+/// mesh_capped_curved_cut() or mesh_capped_shape(), its triangles turned over. Nullopt when f is no
+/// such union or those return nullopt.
+/// 	hrow as those.
+std::optional<Mesh> mesh_capped_complement(const Surface& surface, const Settings& settings,
+                                           MeshStats* stats);
+
 /// The parts mesh_capped_shape() meshes `surface` as (one for a capped solid; for a shell, the outer
 /// polyhedron's caps, then the hollows, `reversed`), or nullopt under the same conditions. Each is
 /// meshed by mesh_cut_and_caps(), or in blocks: its cut with cut_settings(), closed by

@@ -388,6 +388,14 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
   } catch (const CreaseError&) {
     if (stats) *stats = before;
   }
+  // A union with the outside of a polyhedron (min(g, -P): the lattice and the hollow of a skin) is the
+  // capped solid max(-g, P) turned over.
+  try {
+    if (std::optional<Mesh> complement = mesh_capped_complement(surface, time.next(), stats))
+      return not_empty(std::move(*complement));
+  } catch (const CreaseError&) {
+    if (stats) *stats = before;
+  }
   // Two solids whose surfaces never meet (a lattice with a void inside a curved skin, parts side by
   // side): each surface meshed on its own by whichever path fits it, the components the other keeps.
   // Where a part cannot be meshed along its creases, the paths below try the whole.

@@ -60,48 +60,6 @@ class ApartProof {
   std::size_t budget_;
 };
 
-/// The tape of op(a, b): x, y, z copied for b first (a's code may reuse their registers), then a's code,
-/// then b's with its registers moved past a's, then the operation.
-Tape combined(Op op, const Tape& a, const Tape& b) {
-  const std::uint32_t base = a.registers;
-  Tape out;
-  out.registers = base + b.registers + 1;
-  for (std::uint32_t k = 0; k < Tape::kVariables; ++k)
-    out.code.push_back(expr::Instruction{Op::AddC, base + k, k, k, 0.0});
-  out.code.insert(out.code.end(), a.code.begin(), a.code.end());
-  out.constants = a.constants;
-  for (expr::Instruction in : b.code) {
-    in.out += base;
-    in.a += base;
-    in.b += base;
-    out.code.push_back(in);
-  }
-  for (expr::ConstantRegister c : b.constants) {
-    c.reg += base;
-    out.constants.push_back(c);
-  }
-  out.result = base + b.registers;
-  out.code.push_back(expr::Instruction{op, out.result, a.result, base + b.result, 0.0});
-  return out;
-}
-
-/// The node under f's root through increasing steps, or -1.
-int root_node(const Tape& tape, const OperandWriters& writers) {
-  int node = writers.root;
-  while (node >= 0 && monotone_step(tape.code[static_cast<std::size_t>(node)]) > 0)
-    node = writers.a[static_cast<std::size_t>(node)];
-  return node;
-}
-
-/// f with the switch `node` (an index into the code) fixed to `side`, the instructions f no longer
-/// needs removed.
-Tape with_branch(const Tape& tape, const std::vector<std::uint32_t>& switches, int node, std::int8_t side) {
-  expr::BranchChoice choice(switches.size(), expr::kOpen);
-  for (std::size_t s = 0; s < switches.size(); ++s)
-    if (switches[s] == static_cast<std::uint32_t>(node)) choice[s] = side;
-  return expr::specialise(tape, switches, choice);
-}
-
 /// f = min(max(X, T), max(T, Y)) (T shared, in any position; through increasing steps at the root) as
 /// max(T, min(X, Y)), the same function (min and max distribute over each other); likewise
 /// max(min(X, T), min(T, Y)) as min(T, max(X, Y)). A skin written as the outer body less its offset,

@@ -147,14 +147,6 @@ class LeafWalk {
   }
 };
 
-/// `tape` with its result negated.
-Tape negated(Tape tape) {
-  const std::uint32_t out = tape.registers++;
-  tape.code.push_back(Instruction{Op::Neg, out, tape.result, tape.result, 0.0});
-  tape.result = out;
-  return tape;
-}
-
 /// The same planes, in any order (to rounding).
 bool same_planes(const ConvexRegion& a, const ConvexRegion& b) {
   if (a.size() != b.size()) return false;
@@ -164,6 +156,21 @@ bool same_planes(const ConvexRegion& a, const ConvexRegion& b) {
 }
 
 }  // namespace
+
+SurfacePtr union_complement(const Surface& f, const Box& box) {
+  const Expression* formula = f.expression();
+  if (formula == nullptr || formula->tape().code.empty()) return nullptr;
+  const Tape& tape = formula->tape();
+  const int node = root_node(tape, operand_writers(tape));
+  if (node < 0 || tape.code[static_cast<std::size_t>(node)].op != Op::Min) return nullptr;
+  // -step(min(a, b)) = max(-step(a), -step(b)) for an increasing step: the negated operands under a max,
+  // which the readers of capped shapes split.
+  const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);
+  return expression_surface(
+      Expression(std::make_shared<const Tape>(combined(Op::Max, negated(with_branch(tape, switches, node, 0)),
+                                                       negated(with_branch(tape, switches, node, 1))))),
+      box, "the complement");
+}
 
 std::optional<ShelledShape> split_shelled_shape(const Surface& f, const Box& box) {
   const Expression* formula = f.expression();

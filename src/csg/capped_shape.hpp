@@ -59,6 +59,12 @@ struct CappedCutShape {
 /// planes' coefficients).
 std::optional<CappedCutShape> split_capped_cut_shape(const Surface& f, const Box& box);
 
+/// -f as a formula of its own over `box` when f's root, through increasing steps, is a min: a union,
+/// whose complement -f is an intersection and may be a capped shape above (min(g, -P), a lattice united
+/// with the outside of a polyhedron, is the capped solid max(-g, P) turned over). Null for any other
+/// formula or a surface without an expression. Nothing is evaluated.
+SurfacePtr union_complement(const Surface& f, const Box& box);
+
 /// A lattice closed by a skin: f = min(max(g, P), max(P, -R)) (either order, through increasing steps
 /// at the root; each operand a capped shape as above): the polyhedron P of the part's planes, solid
 /// between it and the inner polyhedron R, the lattice g < 0 inside R ("a lattice shelled by its box").

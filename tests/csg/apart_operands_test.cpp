@@ -8,6 +8,7 @@
 #include <isopatch/resolve_surface.hpp>
 #include <isopatch/topology.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -162,6 +163,39 @@ TEST(ApartOperandsMeshing, TheSkinWrittenAsAUnionWithTheInfillGivesTheSameMeshEi
       "min(max(" + kGyroid + "," + kRadius + "-4.5),max(" + kRadius + "-5,4.5-" + kRadius + "))", 5.4, 0.25);
   EXPECT_EQ(infill.mesh.positions, direct.mesh.positions);
   EXPECT_EQ(infill.mesh.triangles, direct.mesh.triangles);
+}
+
+TEST(ApartOperandsMeshing, ALatticeInsideABoxSkinIsTheSkinAndTheCappedHollowsTurnedOver) {
+  // max(M - 3.3, min(g, 2.9 - M)): the outer cube apart from min(g, 2.9 - M), the union of the lattice
+  // with the outside of the inner cube, meshed as the capped solid max(-g, M - 2.9) turned over.
+  const std::string cube = "max(max(abs(x),abs(y)),abs(z))";
+  const test::CappedRun run =
+      mesh_in_box("max(" + cube + "-3.3,min(" + kGyroid + ",2.9-" + cube + "))", 3.6, 0.15);
+  const TopologyReport t = analyze_topology(run.mesh);
+  EXPECT_TRUE(t.watertight() && t.manifold() && t.consistently_oriented());
+  EXPECT_EQ(t.components.size(), 2u);
+  EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
+  EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-9 * box_of(3.6).diagonal());
+  EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0);
+  const std::vector<int> valence = test::valences(run.mesh);
+  EXPECT_GE(static_cast<double>(std::count(valence.begin(), valence.end(), 6)) /
+                static_cast<double>(valence.size()),
+            0.9);
+  // The hollows' caps on the inner cube (the outer cube is the general path's, its faces pieces).
+  ASSERT_TRUE(run.stats.creases);
+  EXPECT_EQ(run.stats.creases->caps, 6u);
+  EXPECT_EQ(run.stats.warnings.creases_rounded, 0u);
+  // Every vertex on the lattice and an inner face is on both, exactly.
+  const SurfacePtr gyroid = expression_surface(kGyroid, box_of(3.6));
+  std::size_t crease = 0;
+  for (const Vec3& p : run.mesh.positions) {
+    if (std::abs(p.cwiseAbs().maxCoeff() - 2.9) > 1e-12) continue;
+    crease += std::abs(gyroid->value(p)) < 1e-9 ? 1 : 0;
+  }
+  EXPECT_GT(crease, 100u);
+  // The outer cube less half the inner one (the gyroid is odd).
+  const double exact = std::pow(6.6, 3) - 0.5 * std::pow(5.8, 3);
+  EXPECT_NEAR(test::enclosed_volume(run.mesh) / exact, 1.0, 2e-3);
 }
 
 TEST(ApartOperandsMeshing, TwoCappedLatticesSideBySideAreTwoClosedPartsOfExactVolume) {
