@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "csg/box_halves.hpp"
 #include "csg/tape_walk.hpp"
 #include "expr/branches.hpp"
 #include "expr/evaluate.hpp"
@@ -26,39 +27,16 @@ bool has_switch(const Tape& tape) {
   return !expr::switch_instructions(tape).empty();
 }
 
-/// Proves a = 0 and b = 0 apart over `box` by bisection (see split_apart_operands()); `budget` counts
-/// the enclosures left.
-class ApartProof {
- public:
-  ApartProof(const Tape& a, const Tape& b, double finest, std::size_t budget)
-      : a_(a), b_(b), finest_(finest), budget_(budget) {}
-
-  bool apart(const Box& box) {
-    if (budget_ == 0) return false;
-    --budget_;
-    const Interval va = expr::evaluate_interval(a_, box);
-    if (va.lo > 0.0 || va.hi < 0.0) return true;
-    const Interval vb = expr::evaluate_interval(b_, box);
-    if (vb.lo > 0.0 || vb.hi < 0.0) return true;
-    const Vec3 size = box.hi - box.lo;
-    int axis = 0;
-    for (int k = 1; k < 3; ++k)
-      if (size[k] > size[axis]) axis = k;
-    // Both enclosures hold 0 (or are not finite) on a box as small as asked: undecided.
-    if (!(size[axis] > finest_)) return false;
-    Box low = box, high = box;
-    const double mid = 0.5 * (box.lo[axis] + box.hi[axis]);
-    low.hi[axis] = mid;
-    high.lo[axis] = mid;
-    return apart(low) && apart(high);
-  }
-
- private:
-  const Tape& a_;
-  const Tape& b_;
-  double finest_;
-  std::size_t budget_;
-};
+/// Whether a = 0 and b = 0 do not meet in `box`: on every box of the bisection, the enclosure of a or of
+/// b excludes 0 (see split_apart_operands()).
+bool apart(const Tape& a, const Tape& b, const Box& box, double finest, std::size_t budget) {
+  const auto excludes_zero = [](const Tape& f, const Box& cell) {
+    const Interval v = expr::evaluate_interval(f, cell);
+    return v.lo > 0.0 || v.hi < 0.0;
+  };
+  return settled_throughout(
+      box, finest, budget, [&](const Box& cell) { return excludes_zero(a, cell) || excludes_zero(b, cell); });
+}
 
 /// f = min(max(X, T), max(T, Y)) (T shared, in any position; through increasing steps at the root) as
 /// max(T, min(X, Y)), the same function (min and max distribute over each other); likewise
@@ -113,19 +91,11 @@ bool negations(const Tape& tape, const OperandWriters& w, int i, int j) {
 }
 
 /// Whether s <= 0 implies t < 0 throughout `box` (the solid s < 0 lies inside t < 0, apart from its
-/// surface): on every box of a bisection down to `finest`, s > 0 or t < 0 by the enclosures.
-bool inside(const Tape& s, const Tape& t, const Box& box, double finest, std::size_t& budget) {
-  if (budget == 0) return false;
-  --budget;
-  if (expr::evaluate_interval(s, box).lo > 0.0 || expr::evaluate_interval(t, box).hi < 0.0) return true;
-  const Vec3 size = box.hi - box.lo;
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (size[k] > size[axis]) axis = k;
-  if (!(size[axis] > finest)) return false;
-  Box low = box, high = box;
-  low.hi[axis] = high.lo[axis] = 0.5 * (box.lo[axis] + box.hi[axis]);
-  return inside(s, t, low, finest, budget) && inside(s, t, high, finest, budget);
+/// surface): on every box of the bisection, s > 0 or t < 0 by the enclosures.
+bool inside(const Tape& s, const Tape& t, const Box& box, double finest, std::size_t budget) {
+  return settled_throughout(box, finest, budget, [&](const Box& cell) {
+    return expr::evaluate_interval(s, cell).lo > 0.0 || expr::evaluate_interval(t, cell).hi < 0.0;
+  });
 }
 
 /// f = min(max(X, s), max(t, -s)) (in any order, the root a min itself) with the solid s < 0 inside
@@ -182,8 +152,7 @@ std::optional<ApartOperands> split_tape(const Tape& tape, const Box& box, double
   for (std::int8_t k = 0; k < 2; ++k)
     operand[static_cast<std::size_t>(k)] = with_branch(tape, switches, node, k);
   if (!has_switch(operand[0]) && !has_switch(operand[1])) return std::nullopt;
-  ApartProof proof(operand[0], operand[1], finest, most_boxes);
-  if (!proof.apart(box)) return std::nullopt;
+  if (!apart(operand[0], operand[1], box, finest, most_boxes)) return std::nullopt;
   ApartOperands out;
   out.united = root == Op::Min;
   for (std::size_t k = 0; k < 2; ++k)

@@ -4,11 +4,13 @@
 #include <isopatch/expression.hpp>
 #include <isopatch/resolve_surface.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "csg/box_halves.hpp"
 #include "csg/tape_walk.hpp"
 #include "expr/branches.hpp"
 #include "expr/evaluate.hpp"
@@ -70,15 +72,8 @@ bool has_sign(const Tape& f0, const Box& box, int sign, int depth) {
   const Interval v = expr::evaluate_interval(f0, box);
   if (sign < 0 ? v.hi < 0.0 : v.lo > 0.0) return true;
   if (depth == 0 || (sign < 0 ? v.lo >= 0.0 : v.hi <= 0.0)) return false;
-  const Vec3 size = box.hi - box.lo;
-  int axis = 0;
-  for (int k = 1; k < 3; ++k)
-    if (size[k] > size[axis]) axis = k;
-  Box low = box, high = box;
-  const double mid = 0.5 * (box.lo[axis] + box.hi[axis]);
-  low.hi[axis] = mid;
-  high.lo[axis] = mid;
-  return has_sign(f0, low, sign, depth - 1) && has_sign(f0, high, sign, depth - 1);
+  const std::array<Box, 2> half = halves(box);
+  return has_sign(f0, half[0], sign, depth - 1) && has_sign(f0, half[1], sign, depth - 1);
 }
 
 }  // namespace

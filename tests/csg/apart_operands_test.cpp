@@ -28,30 +28,9 @@ const std::string kRadius = "sqrt(x^2+y^2+z^2)";
 // the gyroid's solid or the skin (r > 4.5).
 const std::string kSkinned = "max(" + kRadius + "-5,min(" + kGyroid + ",4.5-" + kRadius + "))";
 
-Box box_of(double a) {
-  return {Vec3::Constant(-a), Vec3::Constant(a)};
-}
-
 std::optional<ApartOperands> split(const std::string& formula, double a, double finest) {
-  const SurfacePtr f = expression_surface(formula, box_of(a));
-  return split_apart_operands(*f, box_of(a), finest);
-}
-
-test::CappedRun mesh_in_box(const std::string& formula, double a, double edge, int threads = 0) {
-  test::CappedRun run;
-  run.surface = expression_surface(formula, box_of(a));
-  Settings s;
-  s.box = box_of(a);
-  s.edge_length = edge;
-  s.threads = threads;
-  run.mesh = mesh_surface(*run.surface, s, &run.stats);
-  return run;
-}
-
-std::vector<SurfacePtr> faces_of(const std::vector<std::string>& formulas, double a) {
-  std::vector<SurfacePtr> out;
-  for (const std::string& f : formulas) out.push_back(expression_surface(f, box_of(a)));
-  return out;
+  const SurfacePtr f = expression_surface(formula, test::cube_box(a));
+  return split_apart_operands(*f, test::cube_box(a), finest);
 }
 
 TEST(ApartOperands, ALatticeInsideACurvedSkinIsItsSkinAndItsHollowedLattice) {
@@ -131,9 +110,9 @@ TEST(ApartOperands, SurfacesThatMeetShareAFaceOrComeTooCloseAreNotSplit) {
 }
 
 TEST(ApartOperandsMeshing, ALatticeInsideACurvedSkinIsMeshedAlongItsCreasesWithExactVolume) {
-  const test::CappedRun run = mesh_in_box(kSkinned, 5.4, 0.25);
-  test::expect_valid_part(run, faces_of({kRadius + "-5", kGyroid, kRadius + "-4.5"}, 5.4),
-                          box_of(5.4).diagonal(), false);
+  const test::CappedRun run = test::mesh_in_cube(kSkinned, 5.4, 0.25);
+  test::expect_valid_part(run, test::surfaces_in_cube({kRadius + "-5", kGyroid, kRadius + "-4.5"}, 5.4),
+                          test::cube_box(5.4).diagonal(), false);
   // The skin's outer sphere and the lattice's hollowed surface, the lattice's crease with the skin.
   const TopologyReport t = analyze_topology(run.mesh);
   EXPECT_EQ(t.components.size(), 2u);
@@ -145,21 +124,21 @@ TEST(ApartOperandsMeshing, ALatticeInsideACurvedSkinIsMeshedAlongItsCreasesWithE
   const double exact = 4.0 / 3.0 * std::numbers::pi * (125.0 - 0.5 * 91.125);
   EXPECT_NEAR(test::enclosed_volume(run.mesh) / exact, 1.0, 2e-3);
   // The same bytes on one thread as on the default number.
-  const test::CappedRun one = mesh_in_box(kSkinned, 5.4, 0.25, 1);
+  const test::CappedRun one = test::mesh_in_cube(kSkinned, 5.4, 0.25, 1);
   EXPECT_EQ(one.mesh.positions, run.mesh.positions);
   EXPECT_EQ(one.mesh.triangles, run.mesh.triangles);
 }
 
 TEST(ApartOperandsMeshing, TheSkinWrittenAsAUnionWithTheInfillGivesTheSameMeshEitherWay) {
   const std::string body = kRadius + "-5";
-  const test::CappedRun united =
-      mesh_in_box("min(max(" + kGyroid + "," + body + "),max(" + body + ",4.5-" + kRadius + "))", 5.4, 0.25);
-  const test::CappedRun direct = mesh_in_box(kSkinned, 5.4, 0.25);
+  const test::CappedRun united = test::mesh_in_cube(
+      "min(max(" + kGyroid + "," + body + "),max(" + body + ",4.5-" + kRadius + "))", 5.4, 0.25);
+  const test::CappedRun direct = test::mesh_in_cube(kSkinned, 5.4, 0.25);
   EXPECT_EQ(united.mesh.positions, direct.mesh.positions);
   EXPECT_EQ(united.mesh.triangles, direct.mesh.triangles);
   EXPECT_EQ(united.stats.warnings.creases_rounded, 0u);
   // The infill of the inner ball united with the skin: the same solid, the same mesh.
-  const test::CappedRun infill = mesh_in_box(
+  const test::CappedRun infill = test::mesh_in_cube(
       "min(max(" + kGyroid + "," + kRadius + "-4.5),max(" + kRadius + "-5,4.5-" + kRadius + "))", 5.4, 0.25);
   EXPECT_EQ(infill.mesh.positions, direct.mesh.positions);
   EXPECT_EQ(infill.mesh.triangles, direct.mesh.triangles);
@@ -170,12 +149,12 @@ TEST(ApartOperandsMeshing, ALatticeInsideABoxSkinIsTheSkinAndTheCappedHollowsTur
   // with the outside of the inner cube, meshed as the capped solid max(-g, M - 2.9) turned over.
   const std::string cube = "max(max(abs(x),abs(y)),abs(z))";
   const test::CappedRun run =
-      mesh_in_box("max(" + cube + "-3.3,min(" + kGyroid + ",2.9-" + cube + "))", 3.6, 0.15);
+      test::mesh_in_cube("max(" + cube + "-3.3,min(" + kGyroid + ",2.9-" + cube + "))", 3.6, 0.15);
   const TopologyReport t = analyze_topology(run.mesh);
   EXPECT_TRUE(t.watertight() && t.manifold() && t.consistently_oriented());
   EXPECT_EQ(t.components.size(), 2u);
   EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
-  EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-9 * box_of(3.6).diagonal());
+  EXPECT_LT(test::max_vertex_distance(*run.surface, run.mesh), 1e-9 * test::cube_box(3.6).diagonal());
   EXPECT_GE(test::min_angle_degrees(run.mesh), 25.0);
   const std::vector<int> valence = test::valences(run.mesh);
   EXPECT_GE(static_cast<double>(std::count(valence.begin(), valence.end(), 6)) /
@@ -186,7 +165,7 @@ TEST(ApartOperandsMeshing, ALatticeInsideABoxSkinIsTheSkinAndTheCappedHollowsTur
   EXPECT_EQ(run.stats.creases->caps, 6u);
   EXPECT_EQ(run.stats.warnings.creases_rounded, 0u);
   // Every vertex on the lattice and an inner face is on both, exactly.
-  const SurfacePtr gyroid = expression_surface(kGyroid, box_of(3.6));
+  const SurfacePtr gyroid = expression_surface(kGyroid, test::cube_box(3.6));
   std::size_t crease = 0;
   for (const Vec3& p : run.mesh.positions) {
     if (std::abs(p.cwiseAbs().maxCoeff() - 2.9) > 1e-12) continue;
@@ -202,7 +181,7 @@ TEST(ApartOperandsMeshing, TwoCappedLatticesSideBySideAreTwoClosedPartsOfExactVo
   // Cubes of side 4 about (+-2 pi, 0, 0), centres of symmetry of the gyroid: each holds half its cube.
   const std::string left = "max(" + kGyroid + ",max(max(abs(x+2*pi),abs(y)),abs(z))-2)";
   const std::string right = "max(" + kGyroid + ",max(max(abs(x-2*pi),abs(y)),abs(z))-2)";
-  const test::CappedRun run = mesh_in_box("min(" + left + "," + right + ")", 8.7, 0.25);
+  const test::CappedRun run = test::mesh_in_cube("min(" + left + "," + right + ")", 8.7, 0.25);
   const TopologyReport t = analyze_topology(run.mesh);
   EXPECT_TRUE(t.watertight());
   EXPECT_TRUE(t.manifold());
@@ -223,9 +202,9 @@ TEST(ApartOperandsMeshing, TwoCappedLatticesSideBySideAreTwoClosedPartsOfExactVo
 TEST(ApartOperandsMeshing, AnIntersectionOfSolidsApartIsNoSurface) {
   // A ball and a capped lattice far from it: their intersection is empty.
   const SurfacePtr f = expression_surface(
-      "max(" + kRadius + "-1,max(" + kGyroid + ",max(max(abs(x-5),abs(y)),abs(z))-2))", box_of(7.4));
+      "max(" + kRadius + "-1,max(" + kGyroid + ",max(max(abs(x-5),abs(y)),abs(z))-2))", test::cube_box(7.4));
   Settings s;
-  s.box = box_of(7.4);
+  s.box = test::cube_box(7.4);
   s.edge_length = 0.25;
   EXPECT_THROW(mesh_surface(*f, s, nullptr), NoSurfaceError);
 }

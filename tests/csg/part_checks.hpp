@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <isopatch/isopatch.hpp>
+#include <isopatch/resolve_surface.hpp>
 #include <isopatch/topology.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "mesh_checks.hpp"
@@ -22,6 +24,30 @@ struct CappedRun {
   Mesh mesh;
   MeshStats stats;
 };
+
+/// The cube [-a, a]^3.
+inline Box cube_box(double a) {
+  return {Vec3::Constant(-a), Vec3::Constant(a)};
+}
+
+/// `formula` meshed in cube_box(a) at edge length `edge` (`threads` 0: the default), with its statistics.
+inline CappedRun mesh_in_cube(const std::string& formula, double a, double edge, int threads = 0) {
+  CappedRun run;
+  run.surface = expression_surface(formula, cube_box(a));
+  Settings s;
+  s.box = cube_box(a);
+  s.edge_length = edge;
+  s.threads = threads;
+  run.mesh = mesh_surface(*run.surface, s, &run.stats);
+  return run;
+}
+
+/// The formulas as surfaces over cube_box(a) (a part's face functions).
+inline std::vector<SurfacePtr> surfaces_in_cube(const std::vector<std::string>& formulas, double a) {
+  std::vector<SurfacePtr> out;
+  for (const std::string& f : formulas) out.push_back(expression_surface(f, cube_box(a)));
+  return out;
+}
 
 /// Checks a capped part: closed, manifold, outward, no self-intersection, vertices on f = 0, every
 /// vertex where a cap triangle meets a triangle off that cap on both faces, the angle and valence floors;

@@ -31,31 +31,11 @@ const std::string kGyroid = "sin(x)*cos(y)+sin(y)*cos(z)+sin(z)*cos(x)";
 const std::string kBall = "x^2+y^2+z^2-4";
 const std::string kCube = "max(max(abs(x),abs(y)),abs(z))-5";
 
-Box box_of(double a) {
-  return {Vec3::Constant(-a), Vec3::Constant(a)};
-}
-
-test::CappedRun mesh_in_box(const std::string& formula, double a, double edge) {
-  test::CappedRun run;
-  run.surface = expression_surface(formula, box_of(a));
-  Settings s;
-  s.box = box_of(a);
-  s.edge_length = edge;
-  run.mesh = mesh_surface(*run.surface, s, &run.stats);
-  return run;
-}
-
-std::vector<SurfacePtr> faces_of(const std::vector<std::string>& formulas, double a) {
-  std::vector<SurfacePtr> out;
-  for (const std::string& f : formulas) out.push_back(expression_surface(f, box_of(a)));
-  return out;
-}
-
 const std::vector<std::string> kCubeFaces = {"x-5", "-x-5", "y-5", "-y-5", "z-5", "-z-5"};
 
 TEST(UnitedCutShape, AUnionIsReadAsTheComplementOfTheComplementsIntersection) {
-  const SurfacePtr f = expression_surface("min(" + kGyroid + "," + kBall + ")", box_of(4.0));
-  const std::optional<CutShape> shape = split_cut_shape(*f, box_of(4.0));
+  const SurfacePtr f = expression_surface("min(" + kGyroid + "," + kBall + ")", test::cube_box(4.0));
+  const std::optional<CutShape> shape = split_cut_shape(*f, test::cube_box(4.0));
   ASSERT_TRUE(shape);
   EXPECT_TRUE(shape->united);
   const Vec3 p(0.3, -0.7, 1.1);
@@ -64,20 +44,21 @@ TEST(UnitedCutShape, AUnionIsReadAsTheComplementOfTheComplementsIntersection) {
   EXPECT_NEAR(shape->first->value(p), -g, 1e-15);
   EXPECT_NEAR(shape->second->value(p), -(p.squaredNorm() - 4.0), 1e-14);
   // An intersection is not united; a union with a plane, or of three solids, is no cut shape.
-  const SurfacePtr both = expression_surface("max(" + kGyroid + ",-(" + kBall + "))", box_of(4.0));
-  ASSERT_TRUE(split_cut_shape(*both, box_of(4.0)));
-  EXPECT_FALSE(split_cut_shape(*both, box_of(4.0))->united);
+  const SurfacePtr both = expression_surface("max(" + kGyroid + ",-(" + kBall + "))", test::cube_box(4.0));
+  ASSERT_TRUE(split_cut_shape(*both, test::cube_box(4.0)));
+  EXPECT_FALSE(split_cut_shape(*both, test::cube_box(4.0))->united);
   for (const std::string& formula : {"min(" + kGyroid + ",z-1)", "min(" + kGyroid + ",2)"}) {
-    const SurfacePtr other = expression_surface(formula, box_of(4.0));
-    EXPECT_FALSE(split_cut_shape(*other, box_of(4.0))) << formula;
+    const SurfacePtr other = expression_surface(formula, test::cube_box(4.0));
+    EXPECT_FALSE(split_cut_shape(*other, test::cube_box(4.0))) << formula;
   }
 }
 
 TEST(UnitedCut, AGyroidWithASolidBallCappedByItsBoxIsOneClosedPartOfExactVolume) {
-  const test::CappedRun run = mesh_in_box("max(min(" + kGyroid + "," + kBall + ")," + kCube + ")", 5.4, 0.25);
+  const test::CappedRun run =
+      test::mesh_in_cube("max(min(" + kGyroid + "," + kBall + ")," + kCube + ")", 5.4, 0.25);
   std::vector<std::string> faces = {kGyroid, kBall};
   faces.insert(faces.end(), kCubeFaces.begin(), kCubeFaces.end());
-  test::expect_valid_part(run, faces_of(faces, 5.4), box_of(5.4).diagonal());
+  test::expect_valid_part(run, test::surfaces_in_cube(faces, 5.4), test::cube_box(5.4).diagonal());
   // The gyroid is odd and the cube and ball symmetric: the gyroid's solid holds half of each, and the
   // union is half the cube and half the ball.
   const double exact = 0.5 * (1000.0 + 4.0 / 3.0 * std::numbers::pi * 8.0);
@@ -88,17 +69,17 @@ TEST(UnitedCut, AGyroidWithASphericalVoidCappedByItsBoxIsOneClosedPartOfExactVol
   // max(g, -ball): the operand -ball meshes as a closed sphere around an unbounded solid, so the part
   // reaches the box everywhere the lattice does.
   const test::CappedRun run =
-      mesh_in_box("max(max(" + kGyroid + ",-(" + kBall + "))," + kCube + ")", 5.4, 0.25);
+      test::mesh_in_cube("max(max(" + kGyroid + ",-(" + kBall + "))," + kCube + ")", 5.4, 0.25);
   std::vector<std::string> faces = {kGyroid, kBall};
   faces.insert(faces.end(), kCubeFaces.begin(), kCubeFaces.end());
-  test::expect_valid_part(run, faces_of(faces, 5.4), box_of(5.4).diagonal());
+  test::expect_valid_part(run, test::surfaces_in_cube(faces, 5.4), test::cube_box(5.4).diagonal());
   const double exact = 0.5 * (1000.0 - 4.0 / 3.0 * std::numbers::pi * 8.0);
   EXPECT_NEAR(test::enclosed_volume(run.mesh) / exact, 1.0, 2e-3);
 }
 
 TEST(UnitedCut, AGyroidWithASolidBallCutOpenByTheBoxKeepsItsCreaseAndItsBoundaryOnTheBox) {
-  const test::CappedRun run = mesh_in_box("min(" + kGyroid + "," + kBall + ")", 5.0, 0.25);
-  const Box box = box_of(5.0);
+  const test::CappedRun run = test::mesh_in_cube("min(" + kGyroid + "," + kBall + ")", 5.0, 0.25);
+  const Box box = test::cube_box(5.0);
   const TopologyReport t = analyze_topology(run.mesh);
   EXPECT_FALSE(t.watertight());
   EXPECT_TRUE(t.manifold());
@@ -144,11 +125,11 @@ TEST(UnitedCut, AGyroidWithASolidBallCutOpenByTheBoxKeepsItsCreaseAndItsBoundary
 }
 
 TEST(UnitedCut, TwoBallsUnitedInsideTheBoxAreLeftToTheGeneralCreasePath) {
-  const SurfacePtr f = expression_surface("min(x^2+y^2+z^2-1,(x-1)^2+y^2+z^2-0.6)", box_of(3.0));
-  const std::optional<CutShape> shape = split_cut_shape(*f, box_of(3.0));
+  const SurfacePtr f = expression_surface("min(x^2+y^2+z^2-1,(x-1)^2+y^2+z^2-0.6)", test::cube_box(3.0));
+  const std::optional<CutShape> shape = split_cut_shape(*f, test::cube_box(3.0));
   ASSERT_TRUE(shape && shape->united);
   Settings s;
-  s.box = box_of(3.0);
+  s.box = test::cube_box(3.0);
   s.edge_length = 0.1;
   EXPECT_FALSE(mesh_two_solids(*shape, s, nullptr));
   // The whole run meshes it along its crease, its faces cut into discs (more pieces than faces).
