@@ -4,7 +4,6 @@
 #include <isopatch/expression.hpp>
 #include <isopatch/resolve_surface.hpp>
 
-#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -38,6 +37,25 @@ bool apart(const Tape& a, const Tape& b, const Box& box, double finest, std::siz
       box, finest, budget, [&](const Box& cell) { return excludes_zero(a, cell) || excludes_zero(b, cell); });
 }
 
+/// The four leaf tapes of f = op(op'(l00, l01), op'(l10, l11)) at the switch `root` (leaves[k][i]: the
+/// root's branch k, then the inner switch's branch i), each with f's steps above the root; nullopt when a
+/// side has no switch under its root.
+std::optional<std::array<std::array<Tape, 2>, 2>> leaves_of_sides(const Tape& tape, int root) {
+  const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);
+  std::array<std::array<Tape, 2>, 2> leaves;
+  for (std::int8_t k = 0; k < 2; ++k) {
+    // The root's branch fixed leaves a copy of it (u + 0) over the inner switch.
+    const Tape side = with_branch(tape, switches, root, k);
+    const int node = root_node(side, operand_writers(side));
+    if (node < 0) return std::nullopt;
+    const std::vector<std::uint32_t> side_switches = expr::switch_instructions(side);
+    for (std::int8_t i = 0; i < 2; ++i)
+      leaves[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)] =
+          with_branch(side, side_switches, node, i);
+  }
+  return leaves;
+}
+
 /// f = min(max(X, T), max(T, Y)) (T shared, in any position; through increasing steps at the root) as
 /// max(T, min(X, Y)), the same function (min and max distribute over each other); likewise
 /// max(min(X, T), min(T, Y)) as min(T, max(X, Y)). A skin written as the outer body less its offset,
@@ -60,17 +78,12 @@ std::optional<Tape> factored(const Tape& tape) {
       const int shared = i == 0 ? w.a[up] : w.b[up];
       if (shared < 0 || shared != (j == 0 ? w.a[uq] : w.b[uq])) continue;
       // step(T), step(X) and step(Y): f with the root's branch and the inner one fixed.
-      const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);
-      const Tape on_p = with_branch(tape, switches, root, 0), on_q = with_branch(tape, switches, root, 1);
-      const std::vector<std::uint32_t> p_switches = expr::switch_instructions(on_p);
-      const std::vector<std::uint32_t> q_switches = expr::switch_instructions(on_q);
-      const OperandWriters wp = operand_writers(on_p), wq = operand_writers(on_q);
-      const int p_node = root_node(on_p, wp), q_node = root_node(on_q, wq);
-      if (p_node < 0 || q_node < 0) return std::nullopt;
-      const Tape t = with_branch(on_p, p_switches, p_node, i);
-      const Tape x = with_branch(on_p, p_switches, p_node, static_cast<std::int8_t>(1 - i));
-      const Tape y = with_branch(on_q, q_switches, q_node, static_cast<std::int8_t>(1 - j));
-      return combined(inner, t, combined(outer, x, y));
+      const auto leaves = leaves_of_sides(tape, root);
+      if (!leaves) return std::nullopt;
+      const std::array<Tape, 2>&on_p = (*leaves)[0], &on_q = (*leaves)[1];
+      return combined(
+          inner, on_p[static_cast<std::size_t>(i)],
+          combined(outer, on_p[static_cast<std::size_t>(1 - i)], on_q[static_cast<std::size_t>(1 - j)]));
     }
   return std::nullopt;
 }
@@ -111,24 +124,19 @@ std::optional<Tape> factored_by_inclusion(const Tape& tape, const Box& box, doub
   const int sides[2] = {w.a[static_cast<std::size_t>(root)], w.b[static_cast<std::size_t>(root)]};
   for (const int side : sides)
     if (side < 0 || tape.code[static_cast<std::size_t>(side)].op != Op::Max) return std::nullopt;
-  const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);
   for (std::int8_t infill = 0; infill < 2; ++infill) {
     const auto p = static_cast<std::size_t>(sides[infill]), q = static_cast<std::size_t>(sides[1 - infill]);
     for (std::int8_t i = 0; i < 2; ++i)
       for (std::int8_t j = 0; j < 2; ++j) {
         if (!negations(tape, w, i == 0 ? w.a[p] : w.b[p], j == 0 ? w.a[q] : w.b[q])) continue;
-        const Tape on_p = with_branch(tape, switches, root, infill);
-        const Tape on_q = with_branch(tape, switches, root, static_cast<std::int8_t>(1 - infill));
-        const std::vector<std::uint32_t> p_switches = expr::switch_instructions(on_p);
-        const std::vector<std::uint32_t> q_switches = expr::switch_instructions(on_q);
-        // The root's branch fixed leaves a copy of it (u + 0) over the inner max.
-        const int p_node = root_node(on_p, operand_writers(on_p)),
-                  q_node = root_node(on_q, operand_writers(on_q));
-        if (p_node < 0 || q_node < 0) return std::nullopt;
-        const Tape inner = with_branch(on_p, p_switches, p_node, i);
-        const Tape lattice = with_branch(on_p, p_switches, p_node, static_cast<std::int8_t>(1 - i));
-        const Tape minus_inner = with_branch(on_q, q_switches, q_node, j);
-        const Tape outer = with_branch(on_q, q_switches, q_node, static_cast<std::int8_t>(1 - j));
+        const auto leaves = leaves_of_sides(tape, root);
+        if (!leaves) return std::nullopt;
+        const std::array<Tape, 2>&on_p = (*leaves)[static_cast<std::size_t>(infill)],
+                               &on_q = (*leaves)[static_cast<std::size_t>(1 - infill)];
+        const Tape& inner = on_p[static_cast<std::size_t>(i)];
+        const Tape& lattice = on_p[static_cast<std::size_t>(1 - i)];
+        const Tape& minus_inner = on_q[static_cast<std::size_t>(j)];
+        const Tape& outer = on_q[static_cast<std::size_t>(1 - j)];
         if (!inside(inner, outer, box, finest, budget)) continue;
         return combined(Op::Max, outer, combined(Op::Min, lattice, minus_inner));
       }
@@ -145,9 +153,6 @@ std::optional<ApartOperands> split_tape(const Tape& tape, const Box& box, double
   const Op root = tape.code[static_cast<std::size_t>(node)].op;
   if (root != Op::Max && root != Op::Min) return std::nullopt;
   const std::vector<std::uint32_t> switches = expr::switch_instructions(tape);
-  const auto s = static_cast<std::size_t>(
-      std::find(switches.begin(), switches.end(), static_cast<std::uint32_t>(node)) - switches.begin());
-  if (s == switches.size()) return std::nullopt;
   std::array<Tape, 2> operand;
   for (std::int8_t k = 0; k < 2; ++k)
     operand[static_cast<std::size_t>(k)] = with_branch(tape, switches, node, k);
