@@ -71,7 +71,9 @@ for name in gyroid diamond schwarz_p neovius iwp; do
     vertices=$(echo "$report" | sed -n 's/.*: \([0-9,]*\) vertices.*/\1/p' | head -n 1)
     closed=$(echo "$report" | sed -n 's/.*watertight \([a-z]*\), manifold \([a-z]*\).*outward \([a-z]*\).*/\1, \2, \3/p')
     # A part the box cuts open: the creases' rows say so (rounded creases leave a smooth mesh).
-    grep -q "creases" "$out/err" && closed="$closed (creases rounded)"
+    grep -q "smooth surface" "$out/err" && closed="$closed (creases rounded)"
+    finer=$(sed -n 's/.*meshed along them at edge length \([0-9.e-]*\).*/\1/p' "$out/err" | head -n 1)
+    [ -n "$finer" ] && closed="$closed (at edge $finer)"
     [ "${4:-box}" = open ] && closed="$closed; $(echo "$report" | sed -n 's/.*boundary edges \([0-9,]*[0-9]\).*/\1/p') boundary edges"
     self=$(echo "$report" | sed -n 's/.*self-intersections \(.*\)/\1/p')
     angle=$(echo "$report" | sed -n 's/^min angle *min \([0-9.]*\).*/\1/p')

@@ -49,6 +49,12 @@ void print_mesh_warnings(const MeshStats& stats, const Mesh& mesh, const SelfInt
                  "its creases rounded; --creases exact refuses such a shape, --creases off meshes it smooth "
                  "without this warning\n",
                  w.crease_failure.c_str());
+  if (w.creases_finer_edge > 0.0)
+    std::fprintf(out,
+                 "warning: the shape's creases could not be meshed along at the edge length asked for (%s): "
+                 "meshed along them at edge length %.4g, about four times the vertices there; that "
+                 "--edge-length asks for it directly\n",
+                 w.crease_failure.c_str(), w.creases_finer_edge);
   if (w.creases_in_partition > 0)
     std::fprintf(
         out,

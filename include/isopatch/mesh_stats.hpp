@@ -154,6 +154,10 @@ struct MeshWarnings {
   /// rounded; `crease_failure` says why and where (Creases::Exact refuses with that message instead).
   std::size_t creases_rounded = 0;
   std::string crease_failure;
+  /// CSG shapes: the edge length (half the one asked for) at which the shape, or one of its parts (a
+  /// sheet's wall, an operand), was meshed along its creases after the crease paths failed at the edge
+  /// asked for on a feature at the edge's scale (`crease_failure` says where); 0 when none was.
+  double creases_finer_edge = 0.0;
   /// Pairs of triangles that cross (self_intersection.hpp; at most 1000 counted), and a point where the
   /// first pair meets. The meshers do not look for them: the front ends (the command line, the Python
   /// package) run the exact check on every mesh they return and fill these.

@@ -142,14 +142,16 @@ def test_a_region_half_space_cuts_a_cube_open_along_its_creases():
 
 
 def test_a_mesh_that_crosses_itself_says_so():
-    # A gyroid in a ball minus a capped cylinder, cut by a region (random model 1544 of docs/robustness.md):
-    # the general crease path refuses the gyroid, and the partition's smooth mesh crosses itself in 3
-    # places. Every mesh isopatch.mesh returns has had the exact check: the count is in its warnings,
-    # the same as analyze() finds; a clean mesh has no such warning.
-    formula = ("max(max(sin(4.963*x)*cos(4.963*y)+sin(4.963*y)*cos(4.963*z)+sin(4.963*z)*cos(4.963*x),"
-               "x^2+y^2+z^2-1),-(max((x-(0.326))^2+(y-(0.043))^2-0.094249,abs((z-(-0.092)))-0.984)))")
-    m = isopatch.mesh(formula, box=((-0.611, -0.726, -0.648), (0.628, 0.719, 0.672)), edge_length=0.0875,
-                      region=[(-0.8029, -0.3109, -0.5086, -0.03)], threads=2)
+    # Two thin tori intersected, united with a ball and an ellipsoid (random model 95 of
+    # docs/robustness.md): where the tori's thin lens meets the others, triangles of the mesh cross. Every
+    # mesh isopatch.mesh returns has had the exact check: the count is in its warnings, the same as
+    # analyze() finds; a clean mesh has no such warning.
+    formula = ("min(max((sqrt((x-(0.34))^2+(y-(0.437))^2)-0.511)^2+(z-(0.536))^2-0.096721,"
+               "(sqrt((x-(-0.498))^2+(y-(-0.268))^2)-0.727)^2+(z-(-0.367))^2-0.065536),"
+               "min((x-(-0.168))^2+(y-(0.292))^2+(z-(-0.136))^2-0.242064,"
+               "((x-(-0.13))/0.678)^2+((y-(-0.192))/0.578)^2+((z-(-0.385))/0.861)^2-1))")
+    m = isopatch.mesh(formula, box=((-1.525, -1.606, -1.697), (1.574, 1.606, 1.618)), edge_length=0.1,
+                      threads=2)
     pairs = m.analyze(surface=False)["self_intersections"]["pairs"]
     assert pairs > 0
     assert m.stats["warnings"]["self_intersecting_pairs"] == pairs

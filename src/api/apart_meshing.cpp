@@ -73,6 +73,9 @@ void add_part_stats(MeshStats& into, const MeshStats& part) {
   w.creases_leave_box = std::max(w.creases_leave_box, o.creases_leave_box);
   w.creases_in_partition = std::max(w.creases_in_partition, o.creases_in_partition);
   w.creases_rounded = std::max(w.creases_rounded, o.creases_rounded);
+  if (o.creases_finer_edge > 0.0)
+    w.creases_finer_edge = w.creases_finer_edge > 0.0 ? std::min(w.creases_finer_edge, o.creases_finer_edge)
+                                                      : o.creases_finer_edge;
   if (w.crease_failure.empty()) w.crease_failure = o.crease_failure;
 }
 

@@ -40,6 +40,7 @@ Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& b
   plain.box = box;
   plain.edge_length = settings.edge_length.value_or(edge);
   plain.creases = Creases::Off;
+  plain.split_cut = false;
   return mesh_surface(operand, plain, stats);
 }
 

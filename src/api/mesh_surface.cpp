@@ -22,6 +22,7 @@
 #include "api/curvature_feature_sizes.hpp"
 #include "api/curved_cut.hpp"
 #include "api/cut_feature_sizes.hpp"
+#include "api/finer_edge_retry.hpp"
 #include "api/frame_meshing.hpp"
 #include "api/multiresolution.hpp"
 #include "api/sheet_meshing.hpp"
@@ -428,17 +429,22 @@ Mesh mesh_in_stages(const Surface& surface, const Settings& given, MeshStats* st
     // general path's verdict there is its own failure to cut a face of many handles, not a fault of the
     // shape. The join's reason stands, as any crease path's failure.
     if (cut_failure.empty() || cut_is_shape_fault) throw ShapeNotManifoldError(with_remedies(e.what(), edge));
-    if (given.creases == Creases::Exact) throw CreaseError(with_remedies(cut_failure, edge));
     crease_failure = cut_failure;
     if (stats) *stats = before;
   } catch (const CreaseError& e) {
     // For two solids intersected, why their join failed.
-    const std::string what = cut_failure.empty() ? std::string(e.what()) : cut_failure;
-    if (given.creases == Creases::Exact) throw CreaseError(with_remedies(what, edge));
-    crease_failure = what;
+    crease_failure = cut_failure.empty() ? std::string(e.what()) : cut_failure;
     if (stats) *stats = before;
   }
   if (creased.mesh) return not_empty(std::move(*creased.mesh));
+  if (!crease_failure.empty()) {
+    // A feature at the edge's scale: the shape along its creases at half the edge, before a rounded mesh
+    // or a refusal.
+    if (std::optional<Mesh> finer =
+            mesh_at_half_edge(surface, time.next(), stats, crease_failure, edge, mesh_surface))
+      return not_empty(std::move(*finer));
+    if (given.creases == Creases::Exact) throw CreaseError(with_remedies(crease_failure, edge));
+  }
   // A shape with creases cut open by a region, or by the box where its creases leave it, or seen
   // through a frame: meshed along its creases, cut open exactly (clipped_creases.hpp).
   const ClippedAttempt clipped =

@@ -142,6 +142,7 @@ void visit_stats(
   if (w.creases_leave_box > 0) v("creases_leave_box", count(w.creases_leave_box));
   if (w.creases_in_partition > 0) v("creases_in_partition", count(w.creases_in_partition));
   if (w.creases_rounded > 0) v("creases_rounded", count(w.creases_rounded));
+  if (w.creases_finer_edge > 0.0) v("creases_finer_edge", w.creases_finer_edge);
   if (w.self_intersecting_pairs > 0) {
     v("self_intersecting_pairs", count(w.self_intersecting_pairs));
     for (int a = 0; a < 3; ++a)

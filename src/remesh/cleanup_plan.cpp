@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "remesh/cleanup_flips.hpp"
+#include "remesh/cut_edge_splits.hpp"
 #include "remesh/defect_region.hpp"
 #include "remesh/edge_edits.hpp"
 #include "remesh/error_bound.hpp"
@@ -114,7 +115,11 @@ CleanupPlan default_cleanup_plan(const RemeshSettings& settings) {
   CleanupPlan plan;
   plan.setup = {find_sliding(), step(update_sizes())};
   plan.round = {
-      step(uncounted(kSplit, [](RemeshRun& run) { split_long_edges(run); })),
+      step(uncounted(kSplit,
+                     [](RemeshRun& run) {
+                       split_long_edges(run);
+                       split_long_cut_edges(run);
+                     })),
       step(update_sizes()),
       step(uncounted(kCollapse,
                      [](RemeshRun& run) {

@@ -286,6 +286,24 @@ std::uint32_t EditableMesh::split(const Edge& e, const Vec3& p, const Vec3& n) {
   return m;
 }
 
+std::uint32_t EditableMesh::split_boundary(const BoundaryEdge& e, const Vec3& p, const Vec3& n) {
+  const auto [m, t] = add_split_slots(1);
+  positions[m] = p;
+  normals[m] = n;
+  locked[m] = true;
+  for (std::size_t k = 0; k < attributes.size(); ++k)
+    attributes[k][m] = attribute_names[k] == "role" ? role_value(VertexRole::Remeshed) : attributes[k][e.a];
+  // (.., a, .., b, ..) -> the same with b replaced by m, and a new one with a replaced by m: both keep
+  // the triangle's orientation, and the boundary runs a - m - b.
+  Triangle second = triangles[e.t];
+  second[corner_index(second, e.a)] = m;
+  replace_vertex(e.t, e.b, m);
+  detach(e.b, e.t);
+  incident.push_back(m, e.t);
+  set_triangle(t, second);
+  return m;
+}
+
 void EditableMesh::collapse(const Edge& e, const Vec3& p, const Vec3& n) {
   for (std::uint32_t t : {e.t_ab, e.t_ba}) {
     triangle_alive[t] = 0;

@@ -69,6 +69,10 @@ class EditableMesh {
   void split(const Edge& e, const Vec3& p, const Vec3& n, std::uint32_t m, std::uint32_t t);
   /// One split into new slots of its own (add_split_slots(1)); returns the new vertex.
   std::uint32_t split(const Edge& e, const Vec3& p, const Vec3& n);
+  /// Splits the boundary edge e at a new vertex (position p, normal n, locked: it lies on the boundary)
+  /// in slots of its own: e.t becomes two triangles with its orientation, one triangle slot is added
+  /// (the second of add_split_slots(1) stays dead). Attributes are copied from e.a. Returns the new vertex.
+  std::uint32_t split_boundary(const BoundaryEdge& e, const Vec3& p, const Vec3& n);
   /// Removes e.a, merging it into e.b, which moves to (p, n). \pre the link condition holds.
   void collapse(const Edge& e, const Vec3& p, const Vec3& n);
   /// Removes e.a, merging it into e.b along their boundary edge: triangle e.t disappears and e.a's other
