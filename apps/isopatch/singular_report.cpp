@@ -1,6 +1,7 @@
 // Singular points as the tool reports them (singular_report.hpp).
 #include "singular_report.hpp"
 
+#include <isopatch/isopatch.hpp>
 #include <isopatch/stage_settings.hpp>
 
 #include <algorithm>
@@ -57,7 +58,7 @@ SingularRun search_singular_points(const Surface& surface, const Box& box, doubl
       });
     };
   const auto t0 = std::chrono::steady_clock::now();
-  run.found = find_singular_points(surface, run.box, s);
+  run.found = find_shape_singular_points(surface, run.box, s);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return run;
 }

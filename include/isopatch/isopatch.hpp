@@ -13,6 +13,7 @@
 #include <isopatch/mesh_io.hpp>
 #include <isopatch/projection.hpp>
 #include <isopatch/settings.hpp>
+#include <isopatch/singular_points.hpp>
 #include <isopatch/surface.hpp>
 
 namespace isopatch {
@@ -23,6 +24,18 @@ namespace isopatch {
 /// a 16^3 grid of samples) is rejected at once with NoSurfaceError ("... f is identically zero ...").
 /// \throw InputError, EvaluationError, NoSurfaceError, LimitError (see the method's own header).
 Mesh mesh_surface(const Surface& surface, const Settings& settings, MeshStats* stats = nullptr);
+
+/// The singular points of the shape f = 0 in `box` (find_singular_points, singular_points.hpp). For a
+/// formula built with min, max or abs (at most 64 operands), those of its smooth operands (f with every
+/// switch fixed to a branch) at the points where that operand is the branch f takes (f equal to it
+/// there), searched one operand at a time with `settings`: a crease is no point where grad f = 0, but
+/// an interval search on f itself cannot exclude the boxes along it (the enclosure of grad max(a, b)
+/// there holds both gradients' hull) and subdivides along every crease to its budget. The operands'
+/// results are put together (counts added, the status the least complete, components sorted as
+/// find_singular_points sorts them). Any other surface: find_singular_points(f, box, settings).
+/// 	hrow as find_singular_points.
+SingularPoints find_shape_singular_points(const Surface& f, const Box& box,
+                                          const SingularSearchSettings& settings = {});
 
 /// "projection" or "mc" -> Method; \throw InputError for anything else.
 Method parse_method(const std::string& name);
