@@ -213,10 +213,11 @@ struct CleanupSettings {
   /// at every vertex, 0..1000: discrete mean-curvature error 2-3 times lower on 10k-vertex meshes; 0
   /// skips them (faster).
   int curvature_sweeps = kDefaultCurvatureSweeps;
-  /// Where the box or a region plane cuts the surface open: whether a cut edge longer than its size is
-  /// split at a new point of the cut curve (true by default: the cut takes the mesh's sizes, as the
-  /// interior does). Library only: the crease paths that join an operand's cut to another face's mesh
-  /// (api/curved_cut.hpp) keep the cut as the mesher made it.
+  /// Where the box or a region plane cuts the surface open: whether a cut edge longer than 4/3 of the
+  /// target edge is split at a new point of the cut curve (true by default: the cut takes the mesh's
+  /// edge, as the interior does). Library only: where the faces of two solids fail to join on cuts split
+  /// so, or join with a triangle under 20 degrees (api/curved_cut.hpp), their operands are meshed again
+  /// with it off, the cut as the mesher made it.
   bool split_cut = true;
 
   /// \throw SettingError for a count out of range.

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <utility>
@@ -18,6 +20,7 @@
 #include "api/crease_meshing.hpp"
 #include "api/task_arena_run.hpp"
 #include "api/zipped_face.hpp"
+#include "core/triangle_angle.hpp"
 #include "csg/capped_shape.hpp"
 #include "csg/crease_graph.hpp"
 
@@ -32,15 +35,16 @@ constexpr double kOnCrease = 1e-11;
 constexpr double kTrimmedShare = 0.4;
 
 /// One operand meshed whole in `box` as a smooth surface; `trimmed`: its cut by the box is thrown away
-/// (no sizes graded there).
+/// (no sizes graded there); `split_cut`: the clean-up splits the cut's long edges on the cut curve
+/// (CleanupSettings::split_cut), else the cut stays as the mesher made it.
 Mesh mesh_operand(const Surface& operand, const Settings& settings, const Box& box, double edge,
-                  MeshStats* stats, bool trimmed = false) {
+                  MeshStats* stats, bool trimmed = false, bool split_cut = false) {
   Settings plain = settings;
   plain.cut_sizes = settings.cut_sizes && !trimmed;
   plain.box = box;
   plain.edge_length = settings.edge_length.value_or(edge);
   plain.creases = Creases::Off;
-  plain.split_cut = false;
+  plain.split_cut = split_cut;
   return mesh_surface(operand, plain, stats);
 }
 
@@ -236,8 +240,28 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
   return mesh_two_solids(*shape, plain, stats);
 }
 
-std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& settings, MeshStats* stats) {
+namespace {
+
+/// A join on split cuts whose smallest angle is under this (degrees) is tried on the mesher's cuts too.
+constexpr double kSecondJoinAngle = 20.0;
+
+/// The smallest angle of the mesh's triangles in degrees (180 without one).
+double smallest_angle(const Mesh& mesh) {
+  double cosine = -1.0;
+  for (const Triangle& t : mesh.triangles)
+    cosine = std::max(
+        cosine, smallest_angle_cosine(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]));
+  return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+}
+
+/// mesh_two_solids() with the operands' cuts split (`split`) or as the mesher made them. With `split` the
+/// join at half the edge is not tried (a join that fails on the split cuts is tried again on the
+/// mesher's, by the caller); `*cut_open` tells whether the box cut the part (else `split` changed
+/// nothing).
+std::optional<Mesh> two_solids(const CutShape& shape, const Settings& settings, MeshStats* stats, bool split,
+                               bool* cut_open) {
   const auto start = std::chrono::steady_clock::now();
+  *cut_open = false;
   const Box box = *settings.box;
   // A union of two solids inside the box (two balls) has faces the general crease path cuts into discs,
   // with better valences than here: left to it. A union the box cuts (a lattice with a solid in it) is
@@ -260,7 +284,7 @@ std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& setti
   SurfacePtr lattice = shape.first, cutter = shape.second;
   const auto operand_mesh = [&](const Surface& operand, MeshStats* run) -> std::optional<Mesh> {
     try {
-      return mesh_operand(operand, settings, box, edge, run);
+      return mesh_operand(operand, settings, box, edge, run, false, split);
     } catch (const NoSurfaceError&) {
       return std::nullopt;
     }
@@ -287,6 +311,7 @@ std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& setti
           analyze_topology(first_mesh).boundary_edges == 0)
         return std::nullopt;
       open = true;
+      *cut_open = true;
       open_lattice = std::move(first_mesh);
       if (stats) *stats = first_stats;
     }
@@ -325,6 +350,7 @@ std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& setti
         if (!open) throw;
         mesh = join_faces(in, true, repair);
       } catch (const CreaseError&) {
+        if (split && open) throw;  // the caller joins the mesher's cuts next
         repair = AngleRepair{};
         mesh = join_faces(in, false, repair, true);
       }
@@ -353,6 +379,37 @@ std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& setti
   if (shape.united)
     for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
   return mesh;
+}
+
+}  // namespace
+
+std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& settings, MeshStats* stats) {
+  // The operands' cuts by the box split to the edge first (the caps and the joins at the box then follow
+  // the cut curve where it turns within a cell). Where those faces do not join, or join with a triangle
+  // under kSecondJoinAngle, the mesher's cuts as before, with every fallback, and of two meshes the one
+  // with the larger smallest angle. A part the box does not cut is meshed once.
+  const MeshStats before = stats ? *stats : MeshStats{};
+  bool cut_open = false;
+  std::optional<Mesh> split;
+  try {
+    split = two_solids(shape, settings, stats, true, &cut_open);
+  } catch (const CreaseError&) {
+    if (!cut_open) throw;
+  }
+  if (!cut_open || (split && smallest_angle(*split) >= kSecondJoinAngle)) return split;
+  const MeshStats split_stats = stats ? *stats : MeshStats{};
+  if (stats) *stats = before;
+  std::optional<Mesh> plain;
+  try {
+    plain = two_solids(shape, settings, stats, false, &cut_open);
+  } catch (const CreaseError&) {
+    if (!split) throw;
+  }
+  if (split && (!plain || smallest_angle(*plain) <= smallest_angle(*split))) {
+    if (stats) *stats = split_stats;
+    return split;
+  }
+  return plain;
 }
 
 }  // namespace isopatch

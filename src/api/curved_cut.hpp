@@ -35,7 +35,10 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
 /// mesh_curved_cut() for the two operands of `shape` in `settings.box` (given): nullopt when an operand
 /// has creases of its own or does not cross the box, or `shape` is united and both solids stay off the
 /// box's faces. An operand's closed mesh is the cutter only when it encloses a positive volume (the
-/// sphere of -b, around an unbounded solid, is not). \throw as mesh_curved_cut().
+/// sphere of -b, around an unbounded solid, is not). Where the box cuts the part, the operands' cuts are
+/// first split on the cut curve (CleanupSettings::split_cut); where their faces do not join, or join
+/// with a triangle under 20 degrees, the operands are meshed again with the mesher's cuts and joined with
+/// every fallback, and the mesh with the larger smallest angle is kept. \throw as mesh_curved_cut().
 std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& settings, MeshStats* stats);
 
 }  // namespace isopatch

@@ -65,6 +65,23 @@ TEST(UnitedCut, AGyroidWithASolidBallCappedByItsBoxIsOneClosedPartOfExactVolume)
   EXPECT_NEAR(test::enclosed_volume(run.mesh) / exact, 1.0, 2e-3);
 }
 
+TEST(UnitedCut, CapsFollowACutCurveThatTurnsWithinTwoEdges) {
+  // The Neovius solid with a ball in it, capped by its period box at 1/60 of the side: each cap plane
+  // cuts the lattice in curves with tips of radius about 1.6 edges, which the mesher's cells crossed with
+  // chords of 3-4 edges (14.5 degrees at the caps); the operands' cuts are now split on the cut curve
+  // before the join (api/curved_cut.hpp).
+  const std::string neovius = "3*(cos(x)+cos(y)+cos(z))+4*cos(x)*cos(y)*cos(z)";
+  const test::CappedRun run =
+      test::mesh_in_cube("max(min(" + neovius + ",x*x+y*y+z*z-9),max(max(abs(x),abs(y)),abs(z))-2*pi)", 6.6,
+                         4.0 * std::numbers::pi / 60.0);
+  const TopologyReport t = analyze_topology(run.mesh);
+  EXPECT_TRUE(t.watertight() && t.manifold() && t.consistently_oriented());
+  EXPECT_EQ(test::count_self_intersections(run.mesh, 10), 0u);
+  EXPECT_GE(test::min_angle_degrees(run.mesh), 22.0);
+  ASSERT_TRUE(run.stats.creases);
+  EXPECT_GT(run.stats.creases->caps, 0u);
+}
+
 TEST(UnitedCut, AGyroidWithASphericalVoidCappedByItsBoxIsOneClosedPartOfExactVolume) {
   // max(g, -ball): the operand -ball meshes as a closed sphere around an unbounded solid, so the part
   // reaches the box everywhere the lattice does.
