@@ -216,7 +216,7 @@ struct CleanupSettings {
   /// Where the box or a region plane cuts the surface open: whether a cut edge longer than 4/3 of the
   /// target edge is split at a new point of the cut curve (true by default: the cut takes the mesh's
   /// edge, as the interior does). Library only: where the faces of two solids fail to join on cuts split
-  /// so, or join with a triangle under 20 degrees (api/curved_cut.hpp), their operands are meshed again
+  /// so, or join with a triangle under 25 degrees (api/curved_cut.hpp), their operands are meshed again
   /// with it off, the cut as the mesher made it.
   bool split_cut = true;
 

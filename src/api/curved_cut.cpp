@@ -242,8 +242,9 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
 
 namespace {
 
-/// A join on split cuts whose smallest angle is under this (degrees) is tried on the mesher's cuts too.
-constexpr double kSecondJoinAngle = 20.0;
+/// A join on split cuts whose smallest angle is under this (degrees: the crease paths' floor) is tried on
+/// the mesher's cuts too, and the better kept: never a smaller angle than the mesher's cuts give.
+constexpr double kSecondJoinAngle = 25.0;
 
 /// The smallest angle of the mesh's triangles in degrees (180 without one).
 double smallest_angle(const Mesh& mesh) {

@@ -37,7 +37,7 @@ std::optional<Mesh> mesh_curved_cut(const Surface& surface, const Settings& sett
 /// box's faces. An operand's closed mesh is the cutter only when it encloses a positive volume (the
 /// sphere of -b, around an unbounded solid, is not). Where the box cuts the part, the operands' cuts are
 /// first split on the cut curve (CleanupSettings::split_cut); where their faces do not join, or join
-/// with a triangle under 20 degrees, the operands are meshed again with the mesher's cuts and joined with
+/// with a triangle under 25 degrees, the operands are meshed again with the mesher's cuts and joined with
 /// every fallback, and the mesh with the larger smallest angle is kept. \throw as mesh_curved_cut().
 std::optional<Mesh> mesh_two_solids(const CutShape& shape, const Settings& settings, MeshStats* stats);
 
