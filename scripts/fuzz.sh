@@ -12,7 +12,8 @@ seconds="${1:-60}"
 runs="${2:-}"
 limits=(-max_total_time="$seconds")
 [ -n "$runs" ] && limits+=(-seed=1 -runs="$runs")
-targets=(fuzz_expression fuzz_mesh_reader fuzz_volume_reader fuzz_view_request fuzz_ipatch_reader fuzz_region fuzz_vdb_reader)
+targets=(fuzz_expression fuzz_mesh_reader fuzz_volume_reader fuzz_view_request fuzz_ipatch_reader fuzz_region fuzz_vdb_reader
+  fuzz_self_intersection)
 
 # clang with libFuzzer (Debian: clang + libclang-rt-14-dev), installed like scripts/install-deps.sh does.
 missing=()

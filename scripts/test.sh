@@ -52,7 +52,7 @@ if [ "${ISOPATCH_SKIP_SANITIZERS:-0}" != 1 ]; then
       --output-junit "$PWD/build-sanitize/junit.xml" || true
 fi
 # Fuzz targets (fuzz/, libFuzzer with clang++, ASan + UBSan): every committed corpus input (including
-# the regressions the fuzzers found) and then a seeded search of 60 seconds per target (seven targets,
+# the regressions the fuzzers found) and then a seeded search of 60 seconds per target (eight targets,
 # two at a time on CI's two cores), so a run is reproducible (seed 1) yet explores beyond the corpus.
 # Longer searches: scripts/fuzz.sh SECONDS.
 # ISOPATCH_FUZZ=0 skips this.

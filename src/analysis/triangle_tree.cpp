@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 #include "analysis/mesh_neighbourhood.hpp"
@@ -12,6 +13,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_reduce.h>
 #include <tbb/parallel_sort.h>
 
 namespace isopatch::analysis {
@@ -72,15 +74,97 @@ std::vector<std::uint32_t> z_ordered_triangles(const Mesh& mesh) {
   return order;
 }
 
-TriangleTree::TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order)
-    : mesh_(mesh), order_(std::move(order)) {
-  const std::size_t n = order_.size();
-  nodes_.resize(node_count(n));
-  for (std::size_t a = 0; a < 3; ++a) {
-    boxes_.lo[a].resize(n + kPadding);  // the padding is masked off (overlapping())
-    boxes_.hi[a].resize(n + kPadding);
+std::vector<std::uint32_t> own_order(const Mesh& mesh) {
+  const std::size_t n = mesh.triangles.size();
+  const bool any_repeats = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, n, 1U << 14U), false,
+      [&](const auto& range, bool found) {
+        for (std::size_t t = range.begin(); t != range.end() && !found; ++t)
+          found = repeats_vertex(mesh.triangles[t]);
+        return found;
+      },
+      [](bool a, bool b) { return a || b; });
+  if (!any_repeats) {  // all of them, filled in parallel
+    std::vector<std::uint32_t> order(n);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1U << 14U), [&](const auto& range) {
+      for (std::size_t t = range.begin(); t != range.end(); ++t) order[t] = static_cast<std::uint32_t>(t);
+    });
+    return order;
   }
-  if (n > 0) build(0, 0, n);
+  std::vector<std::uint32_t> order;
+  order.reserve(n);
+  for (std::size_t t = 0; t < n; ++t)
+    if (!repeats_vertex(mesh.triangles[t])) order.push_back(static_cast<std::uint32_t>(t));
+  return order;
+}
+
+bool keeps_neighbours_together(const Mesh& mesh, const std::vector<std::uint32_t>& order) {
+  constexpr std::size_t kGroup = 32;
+  std::vector<double> groups, singles;
+  const auto diagonal = [&](std::size_t begin, std::size_t end) {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (std::size_t k = begin; k < end; ++k)
+      for (const std::uint32_t v : mesh.triangles[order[k]]) {
+        lo = lo.cwiseMin(mesh.positions[v]);
+        hi = hi.cwiseMax(mesh.positions[v]);
+      }
+    return (hi - lo).norm();
+  };
+  // Every eighth group: the medians of a sample of thousands on large meshes, all of them on small ones.
+  const std::size_t stride = order.size() >= 64 * kGroup * 8 ? 8 * kGroup : kGroup;
+  for (std::size_t k = 0; k + kGroup <= order.size(); k += stride) {
+    groups.push_back(diagonal(k, k + kGroup));
+    singles.push_back(diagonal(k, k + 1));
+  }
+  if (groups.empty()) return true;
+  const auto median = [](std::vector<double>& values) {
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2),
+                     values.end());
+    return values[values.size() / 2];
+  };
+  return median(groups) <= kLocalGroupSpan * median(singles);
+}
+
+TriangleTree::TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order,
+                           const std::vector<std::uint8_t>* turns)
+    : mesh_(mesh), order_(std::move(order)) {
+  nodes_.resize(node_count(order_.size()));
+  if (!order_.empty()) build(0, 0, order_.size(), turns);
+}
+
+void TriangleTree::make_boxes() {
+  const std::size_t n = order_.size();
+  for (std::size_t a = 0; a < 3; ++a) {  // written by box_subtree on the threads that fill them
+    boxes_.lo[a].resize(n + kPadding);
+    boxes_.hi[a].resize(n + kPadding);
+    for (std::size_t k = n; k < n + kPadding; ++k) boxes_.lo[a][k] = boxes_.hi[a][k] = 0.0F;  // masked off
+  }
+  if (n > 0) box_subtree(0);
+  boxed_ = true;
+}
+
+void TriangleTree::box_subtree(std::size_t index) {
+  Node& node = nodes_[index];
+  node.box = FloatBox{};
+  if (node.leaf()) {
+    for (std::size_t k = node.begin; k < node.end; ++k) {
+      const FloatBox box = triangle_box(k);
+      for (std::size_t a = 0; a < 3; ++a) {
+        boxes_.lo[a][k] = box.lo[static_cast<Eigen::Index>(a)];
+        boxes_.hi[a][k] = box.hi[static_cast<Eigen::Index>(a)];
+      }
+      node.box.add(box);
+    }
+    return;
+  }
+  if (node.end - node.begin >= kParallelBuild)
+    tbb::parallel_invoke([&] { box_subtree(index + 1); }, [&] { box_subtree(node.right); });
+  else {
+    box_subtree(index + 1);
+    box_subtree(node.right);
+  }
+  node.box = nodes_[index + 1].box;
+  node.box.add(nodes_[node.right].box);
 }
 
 FloatBox TriangleTree::triangle_box(std::size_t position) const {
@@ -99,22 +183,18 @@ std::size_t TriangleTree::node_count(std::size_t n) {
 }
 
 /// The subtree over positions [begin, end) at nodes_[index] (its nodes at index..index +
-/// node_count(end - begin) - 1, depth first). The positions are in Z-order, so halving the range halves
-/// the triangles in space, like a median split, at no cost; boxes are made bottom-up.
+/// node_count(end - begin) - 1, depth first). The positions are in Z-order (or an order as local), so
+/// halving the range halves the triangles in space, like a median split, at no cost.
 /// Node numbers are fixed in advance, so the tree is the same for any number of threads.
-void TriangleTree::build(std::size_t index, std::size_t begin, std::size_t end) {
+void TriangleTree::build(std::size_t index, std::size_t begin, std::size_t end,
+                         const std::vector<std::uint8_t>* turns) {
   Node& node = nodes_[index];
   node.begin = static_cast<std::uint32_t>(begin);
   node.end = static_cast<std::uint32_t>(end);
   if (end - begin <= kLeafSize) {
-    for (std::size_t k = begin; k < end; ++k) {
-      const FloatBox box = triangle_box(k);
-      for (std::size_t a = 0; a < 3; ++a) {
-        boxes_.lo[a][k] = box.lo[static_cast<Eigen::Index>(a)];
-        boxes_.hi[a][k] = box.hi[static_cast<Eigen::Index>(a)];
-      }
-      node.box.add(box);
-    }
+    node.turns = turns != nullptr ? std::uint8_t{0x3FU} : std::uint8_t{0};
+    if (turns != nullptr)
+      for (std::size_t k = begin; k < end; ++k) node.turns &= (*turns)[order_[k]];
     return;
   }
   const std::size_t middle = begin + (end - begin) / 2;
@@ -122,16 +202,17 @@ void TriangleTree::build(std::size_t index, std::size_t begin, std::size_t end) 
   const std::size_t right = left + node_count(middle - begin);
   node.right = static_cast<std::uint32_t>(right);
   if (end - begin >= kParallelBuild)
-    tbb::parallel_invoke([&] { build(left, begin, middle); }, [&] { build(right, middle, end); });
+    tbb::parallel_invoke([&] { build(left, begin, middle, turns); },
+                         [&] { build(right, middle, end, turns); });
   else {
-    build(left, begin, middle);
-    build(right, middle, end);
+    build(left, begin, middle, turns);
+    build(right, middle, end, turns);
   }
-  node.box = nodes_[left].box;
-  node.box.add(nodes_[right].box);
+  node.turns = nodes_[left].turns & nodes_[right].turns;
 }
 
 std::vector<TriangleTree::Job> TriangleTree::jobs(std::size_t grain) const {
+  if (!boxed_) throw std::logic_error("TriangleTree::jobs before make_boxes");
   std::vector<Job> out;
   if (!nodes_.empty()) self_jobs(0, grain, out);
   return out;
@@ -139,6 +220,7 @@ std::vector<TriangleTree::Job> TriangleTree::jobs(std::size_t grain) const {
 
 void TriangleTree::self_jobs(std::size_t n, std::size_t grain, std::vector<Job>& out) const {
   const Node& node = nodes_[n];
+  if (node.proved) return;  // no pair within it meets
   if (node.leaf() || node.end - node.begin <= grain) {
     out.push_back({n, n, true});
     return;
@@ -163,6 +245,13 @@ void TriangleTree::cross_jobs(std::size_t m, std::size_t n, std::size_t grain, s
     cross_jobs(m, n + 1, grain, out);
     cross_jobs(m, b.right, grain, out);
   }
+}
+
+std::size_t TriangleTree::proved_triangles() const {
+  std::size_t count = 0;
+  for (const Node& node : nodes_)
+    if (node.proved) count += node.end - node.begin;  // proved nodes do not nest
+  return count;
 }
 
 }  // namespace isopatch::analysis

@@ -8,7 +8,11 @@
 
 #include <isopatch/mesh.hpp>
 
+#include "core/default_init_allocator.hpp"
+
 #include <Eigen/Core>
+
+#include <tbb/parallel_invoke.h>
 
 #ifdef __SSE2__
 #include <immintrin.h>
@@ -26,6 +30,16 @@ namespace isopatch::analysis {
 /// neighbours in space are mostly neighbours in the order. Sorted in parallel; the same order for any
 /// number of threads. \pre check_mesh passed; fewer than 2^32 triangles.
 std::vector<std::uint32_t> z_ordered_triangles(const Mesh& mesh);
+
+/// The triangles of `mesh` without a repeated vertex, in the mesh's own order.
+std::vector<std::uint32_t> own_order(const Mesh& mesh);
+
+/// Whether `order` keeps neighbours together as a tree needs: the median box of 32 triangles in a row at
+/// most kLocalGroupSpan times the median triangle's box across (meshers write about 6; a shuffled mesh
+/// gives hundreds). Either way the tree finds the same pairs; in a good order of its own, a mesh saves
+/// the sort and is read in order.
+bool keeps_neighbours_together(const Mesh& mesh, const std::vector<std::uint32_t>& order);
+constexpr double kLocalGroupSpan = 12.0;
 
 /// A box in floats rounded outwards from doubles: it holds the boxes added to it, so overlaps are
 /// never missed (the exact triangle test decides); half the memory of doubles.
@@ -52,10 +66,34 @@ class TriangleTree {
   /// Subtrees of at least this many triangles are built in parallel.
   static constexpr std::size_t kParallelBuild = std::size_t{1} << 14;
 
-  /// The tree over the triangles `order` of `mesh` (z_ordered_triangles); `mesh` must outlive it.
-  /// Memory: 28 bytes per triangle (its index and box) and a 36-byte node per 8 to 16 triangles (two
-  /// nodes per leaf of 16 to 31).
-  TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order);
+  /// The tree over the triangles `order` of `mesh` (z_ordered_triangles, or an order as local); `mesh`
+  /// must outlive it. `turns` (optional, MeshFans::triangle_turns) gives each node the turn bits all its
+  /// triangles have. Its boxes come with make_boxes. Memory: 4 bytes per triangle and a 40-byte node per
+  /// 8 to 16 triangles (two nodes per leaf of 16 to 31).
+  TriangleTree(const Mesh& mesh, std::vector<std::uint32_t> order,
+               const std::vector<std::uint8_t>* turns = nullptr);
+  /// The boxes of the triangles and nodes, which jobs() and run() need: 24 bytes per triangle. Made
+  /// after the proofs, whose data is then freed, so that the two are not held at once.
+  void make_boxes();
+
+  /// Marks the largest subtrees of at least `smallest` triangles for which prove(begin, end, turns)
+  /// holds (positions [begin, end), the turn bits all their triangles share, when there are some): a
+  /// proof that they hold no pair that meets (flat_discs.hpp). The scan then skips the pairs within
+  /// them. Subtrees are proved in parallel; the marks do not depend on the number of threads.
+  template <class Prove>
+  void prove_subtrees(const Prove& prove, std::size_t smallest) {
+    if (!nodes_.empty()) prove_from(0, prove, smallest);
+  }
+  /// Triangles in subtrees marked by prove_subtrees.
+  std::size_t proved_triangles() const;
+  /// Calls f(begin, end) for the positions of every leaf outside the subtrees marked by prove_subtrees,
+  /// in order.
+  template <class F>
+  void for_each_unproved_leaf(F&& f) const {
+    if (!nodes_.empty()) unproved_leaves(0, f);
+  }
+  /// The triangle at each position.
+  const std::vector<std::uint32_t>& order() const { return order_; }
 
   /// A piece of the scan: the pairs within node m (self) or between nodes m and n.
   struct Job {
@@ -63,7 +101,7 @@ class TriangleTree {
     bool self = false;
   };
   /// The scan cut into pieces of at most about `grain` triangles (or single leaves), in the order of
-  /// one whole scan.
+  /// one whole scan. \throw std::logic_error before make_boxes.
   std::vector<Job> jobs(std::size_t grain) const;
   /// Calls visit(a, b) with the positions of triangles whose boxes overlap, for the pairs of one job
   /// that no proof excludes, until it returns false; false then. Over all jobs, each such pair once.
@@ -79,12 +117,43 @@ class TriangleTree {
     FloatBox box;
     std::uint32_t begin = 0, end = 0;  // triangle positions
     std::uint32_t right = 0;  // the right child of an inner node (the left one follows it); 0 for leaves
+    std::uint8_t turns = 0;   // the turn bits of all its triangles
+    bool proved = false;      // no pair within it meets (prove_subtrees)
     bool leaf() const { return right == 0; }
   };
 
+  template <class F>
+  void unproved_leaves(std::size_t n, F& f) const {
+    const Node& node = nodes_[n];
+    if (node.proved) return;
+    if (node.leaf()) {
+      f(node.begin, node.end);
+      return;
+    }
+    unproved_leaves(n + 1, f);
+    unproved_leaves(node.right, f);
+  }
+
+  template <class Prove>
+  void prove_from(std::size_t n, const Prove& prove, std::size_t smallest) {
+    Node& node = nodes_[n];
+    if (node.end - node.begin < smallest) return;
+    if ((node.turns & 0x3FU) != 0 && prove(node.begin, node.end, node.turns)) {
+      node.proved = true;
+      return;
+    }
+    if (node.leaf()) return;
+    if (node.end - node.begin >= kParallelBuild)
+      tbb::parallel_invoke([&] { prove_from(n + 1, prove, smallest); },
+                           [&] { prove_from(node.right, prove, smallest); });
+    else {
+      prove_from(n + 1, prove, smallest);
+      prove_from(node.right, prove, smallest);
+    }
+  }
+
   static std::size_t node_count(std::size_t n);
   FloatBox triangle_box(std::size_t position) const;
-  void build(std::size_t index, std::size_t begin, std::size_t end);
   void self_jobs(std::size_t n, std::size_t grain, std::vector<Job>& out) const;
   void cross_jobs(std::size_t m, std::size_t n, std::size_t grain, std::vector<Job>& out) const;
   static bool splits_first(const Node& a, const Node& b) {
@@ -93,7 +162,7 @@ class TriangleTree {
 
   /// The triangles' boxes by position, coordinate by coordinate.
   struct Boxes {
-    std::vector<float> lo[3], hi[3];
+    UninitialisedVector<float> lo[3], hi[3];
   };
 
   /// Bit k - begin for the positions k in [begin, end) (at most kLeafSize of them) whose triangle's box
@@ -155,6 +224,7 @@ class TriangleTree {
   template <class Visit>
   bool self_pairs(std::size_t n, Visit& visit) const {
     const Node& node = nodes_[n];
+    if (node.proved) return true;
     if (node.leaf()) return leaf_pairs(node.begin, node.end, node.begin, node.end, true, visit);
     return self_pairs(n + 1, visit) && self_pairs(node.right, visit) && cross_pairs(n + 1, node.right, visit);
   }
@@ -169,10 +239,14 @@ class TriangleTree {
     return cross_pairs(m, n + 1, visit) && cross_pairs(m, b.right, visit);
   }
 
+  void build(std::size_t index, std::size_t begin, std::size_t end, const std::vector<std::uint8_t>* turns);
+  void box_subtree(std::size_t index);
+
   const Mesh& mesh_;
   std::vector<std::uint32_t> order_;  // the triangle at each position
   std::vector<Node> nodes_;           // depth first
   Boxes boxes_;
+  bool boxed_ = false;
 };
 
 }  // namespace isopatch::analysis
