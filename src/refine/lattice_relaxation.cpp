@@ -72,7 +72,30 @@ LatticeRelaxation::LatticeRelaxation(Mesh& mesh, std::vector<Eigen::Vector3f>& n
       planes_(planes),
       limits_(limits),
       block_(std::max<std::size_t>(block, 1)),
-      rings_(mesh.vertex_count(), mesh.triangles) {}
+      rings_(mesh.vertex_count(), mesh.triangles) {
+  // The triangles with a corner in each block, ascending, each once per block: two passes.
+  const std::size_t blocks = (mesh.vertex_count() + block_ - 1) / block_;
+  const auto blocks_of = [&](const Triangle& t, std::array<std::size_t, 3>& out) {
+    std::size_t count = 0;
+    for (const std::uint32_t v : t) {
+      const std::size_t b = v / block_;
+      if (std::find(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(count), b) ==
+          out.begin() + static_cast<std::ptrdiff_t>(count))
+        out[count++] = b;
+    }
+    return count;
+  };
+  block_offsets_.assign(blocks + 1, 0);
+  std::array<std::size_t, 3> in{};
+  for (const Triangle& t : mesh.triangles)
+    for (std::size_t k = 0, n = blocks_of(t, in); k < n; ++k) ++block_offsets_[in[k] + 1];
+  for (std::size_t b = 0; b < blocks; ++b) block_offsets_[b + 1] += block_offsets_[b];
+  block_triangles_.resize(block_offsets_.back());
+  std::vector<std::uint32_t> next(block_offsets_.begin(), block_offsets_.end() - 1);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (std::size_t k = 0, n = blocks_of(mesh.triangles[t], in); k < n; ++k)
+      block_triangles_[next[in[k]]++] = static_cast<std::uint32_t>(t);
+}
 
 bool LatticeRelaxation::target(std::uint32_t v, Vec3& to, int& plane) const {
   const Vec3& p = mesh_.positions[v];
@@ -154,15 +177,20 @@ std::size_t LatticeRelaxation::sweep_block(std::size_t begin, std::size_t end,
   };
   // Undo the moves that leave a triangle turned away from the surface, until none does (the positions
   // before the sweep are valid, so this ends).
+  // Only the triangles with a corner in the block can have a moved corner (before, every triangle of
+  // the mesh was tested for each block: a time quadratic in the mesh).
+  const std::size_t block_index = begin / block_;
+  const std::span<const std::uint32_t> triangles(block_triangles_.data() + block_offsets_[block_index],
+                                                 block_triangles_.data() + block_offsets_[block_index + 1]);
   std::size_t undone = 0;
   for (bool changed = true; changed;) {
     changed = false;
-    invalid_.assign(mesh_.triangles.size(), 0);
+    invalid_.assign(triangles.size(), 0);
     tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, mesh_.triangles.size(), kChunk),
+        tbb::blocked_range<std::size_t>(0, triangles.size(), kChunk),
         [&](const tbb::blocked_range<std::size_t>& r) {
-          for (std::size_t t = r.begin(); t != r.end(); ++t) {
-            const Triangle& tri = mesh_.triangles[t];
+          for (std::size_t k = r.begin(); k != r.end(); ++k) {
+            const Triangle& tri = mesh_.triangles[triangles[k]];
             if (!moved(tri[0]) && !moved(tri[1]) && !moved(tri[2])) continue;
             const Vec3 &a = position(tri[0]), &b = position(tri[1]), &c = position(tri[2]);
             bool valid = faces_the_surface(a, b, c, {normal(tri[0]), normal(tri[1]), normal(tri[2])});
@@ -173,12 +201,12 @@ std::size_t LatticeRelaxation::sweep_block(std::size_t begin, std::size_t end,
                       now >= smallest_angle(mesh_.positions[tri[0]], mesh_.positions[tri[1]],
                                             mesh_.positions[tri[2]]);
             }
-            invalid_[t] = valid ? 0 : 1;
+            invalid_[k] = valid ? 0 : 1;
           }
         });
-    for (std::size_t t = 0; t < invalid_.size(); ++t) {
-      if (!invalid_[t]) continue;
-      for (std::uint32_t v : mesh_.triangles[t]) {
+    for (std::size_t k = 0; k < invalid_.size(); ++k) {
+      if (!invalid_[k]) continue;
+      for (std::uint32_t v : mesh_.triangles[triangles[k]]) {
         if (!moved(v)) continue;
         moved_[v - begin] = 0;
         ++undone;

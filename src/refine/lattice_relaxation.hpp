@@ -81,8 +81,12 @@ class LatticeRelaxation {
   std::size_t block_;
   double angle_guard_ = 0.0;
   VertexRings rings_;
+  // The triangles with a corner in each block (compressed rows, ascending): the only ones a block's
+  // moves can turn. About 6 bytes per triangle.
+  std::vector<std::uint32_t> block_offsets_;
+  std::vector<std::uint32_t> block_triangles_;
   // One block's results (indexed from the block's first vertex), kept between blocks and sweeps so
-  // that each does not allocate them again; invalid_ flags triangles.
+  // that each does not allocate them again; invalid_ flags the block's triangles.
   std::vector<Vec3> next_;
   std::vector<Eigen::Vector3f> next_normals_;
   std::vector<std::uint8_t> moved_;
