@@ -4,9 +4,12 @@
 /// and the edge they share (by index). A mesh that passes can be handed to solid modellers, boolean
 /// operations and volume meshers; one that fails has folds or sheets passing through each other.
 /// Candidate pairs come from a hierarchy of triangle bounding boxes traversed against itself (each pair
-/// of overlapping boxes once), O(n log n) for meshes of even triangle size. Every decision uses exact
-/// orientation signs (a floating-point filter, then exact expansions; Shewchuk 1997), so nearly
-/// coplanar neighbours and touching triangles are classified as exactly as the positions allow.
+/// of overlapping boxes once), O(n log n) for meshes of even triangle size; subtrees proved one-to-one
+/// under a coordinate projection (their triangles all turn one way and their boundary's image is a
+/// plane graph that winds at most once around any point) are not entered, and pairs around a vertex
+/// whose fan is so proved are skipped. Every decision uses exact orientation signs (a floating-point
+/// filter, then exact expansions; Shewchuk 1997), so nearly coplanar neighbours and touching triangles
+/// are classified as exactly as the positions allow.
 
 #include <isopatch/mesh.hpp>
 

@@ -20,9 +20,7 @@
 
 #include "core/default_init_allocator.hpp"
 
-#include <atomic>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace isopatch::analysis {
@@ -48,8 +46,8 @@ struct MeshFans {
 
 /// Everything above, in parallel (the neighbours across the edges into each vertex found among its
 /// triangles); the same for any number of threads. \pre check_mesh passed; fewer than 2^32 - 2
-/// triangles. Memory: 13 bytes per triangle and 5 per vertex, and the triangles at each vertex (16
-/// bytes per triangle) while it runs.
+/// triangles. Memory: 13 bytes per triangle and 5 per vertex, and while it runs the triangles at each
+/// vertex (12 bytes per triangle and 4 per vertex).
 MeshFans mesh_fans(const Mesh& mesh);
 
 /// Whether the proof above covers the fan of vertex v, walked in order across the edges into v from its

@@ -1,10 +1,9 @@
 // Self-intersection test of a triangle mesh (see include/isopatch/self_intersection.hpp): a bounding
 // volume hierarchy over the triangles' boxes, traversed against itself so that every pair of
 // overlapping boxes is met once (triangle_tree.hpp); each such pair is decided exactly
-// (triangle_pair.hpp). Subtrees of the hierarchy
-// proved to be flat discs (flat_discs.hpp: patches that one coordinate projection maps one-to-one) are
-// not scanned within; of the other pairs, those around a vertex whose fan is proved to meet itself only
-// where it shares (flat_fans.hpp) are skipped.
+// (triangle_pair.hpp). Subtrees of the hierarchy proved to be flat discs (flat_discs.hpp: patches that
+// one coordinate projection maps one-to-one) are not scanned within; of the other pairs, those around a
+// vertex whose fan is proved to meet itself only where it shares (flat_fans.hpp) are skipped.
 #include <isopatch/error.hpp>
 #include <isopatch/self_intersection.hpp>
 
