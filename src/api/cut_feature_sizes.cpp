@@ -122,16 +122,17 @@ std::vector<CurvePoint> cut_curve_points(const Surface& surface, const CuttingFa
     return static_cast<std::size_t>(j) * static_cast<std::size_t>(nu) + static_cast<std::size_t>(i);
   };
   // Grid points are made when needed, not stored: a face far from the surface costs its enclosures.
-  // 0: not sampled; otherwise the sign that a block's enclosure proves (+1, -1) or 2: sample it. A point
-  // on the border of two blocks is sampled when either block is.
-  std::vector<signed char> sample(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv), 0);
-  // Blocks of grid cells, from 16 x 16 down to one cell, halved while their enclosure admits 0.
+  // Per point (`sample` below) 0: not sampled; otherwise the sign that a block's enclosure proves (+1,
+  // -1) or 2: sample it. A point on the border of two blocks is sampled when either block is.
+  // Blocks of grid cells, from 16 x 16 down to one cell, halved while their enclosure admits 0; their
+  // verdicts are recorded first, then marked on the grid.
+  struct Verdict {
+    int i0, j0, i1, j1;
+    signed char sign;  // +1, -1: proved; 2: sample it
+  };
+  std::vector<Verdict> verdicts;
   const auto mark = [&](int i0, int j0, int i1, int j1, signed char verdict) {
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i) {
-        signed char& s = sample[index(i, j)];
-        s = (verdict == 2 || s == 2 || (s != 0 && s != verdict)) ? 2 : verdict;
-      }
+    verdicts.push_back({i0, j0, i1, j1, verdict});
   };
   const auto classify = [&](auto&& self, int i0, int j0, int i1, int j1) -> void {
     Box b{at(i0, j0).cwiseMin(at(i1, j1)), at(i0, j0).cwiseMax(at(i1, j1))};
@@ -149,6 +150,18 @@ std::vector<CurvePoint> cut_curve_points(const Surface& surface, const CuttingFa
   for (int j0 = 0; j0 < nv - 1; j0 += block)
     for (int i0 = 0; i0 < nu - 1; i0 += block)
       classify(classify, i0, j0, std::min(i0 + block, nu - 1), std::min(j0 + block, nv - 1));
+  // f of one sign proved over the whole face (a closed surface inside its box): no point is sampled and
+  // no crossing found, so the grid is not made (its marking and scans were most of a small mesh's search).
+  if (std::all_of(verdicts.begin(), verdicts.end(),
+                  [&](const Verdict& v) { return v.sign != 2 && v.sign == verdicts.front().sign; }))
+    return {};
+  std::vector<signed char> sample(static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv), 0);
+  for (const Verdict& v : verdicts)
+    for (int j = v.j0; j <= v.j1; ++j)
+      for (int i = v.i0; i <= v.i1; ++i) {
+        signed char& s = sample[index(i, j)];
+        s = (v.sign == 2 || s == 2 || (s != 0 && s != v.sign)) ? 2 : v.sign;
+      }
   // f at the points to sample inside the domain (NaN outside), in one batch.
   std::vector<std::size_t> kept_index;
   std::vector<Vec3> kept;
