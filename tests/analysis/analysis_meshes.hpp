@@ -1,7 +1,8 @@
 #pragma once
 // Small meshes with known geometry for the metrics tests, built in code: a regular icosahedron (found
 // from its vertices, not from a pasted face table), its subdivisions projected onto a sphere, a flat
-// hexagonal fan, a parametric torus and a triangulated square on a tilted plane.
+// hexagonal fan, a parametric torus and a triangulated square on a tilted plane; and any of them with
+// vertices moved at random.
 
 #include <isopatch/mesh.hpp>
 
@@ -128,6 +129,16 @@ inline Mesh tilted_grid(int n) {
       m.triangles.push_back({v, v + 1, v + w + 1});
       m.triangles.push_back({v, v + w + 1, v + w});
     }
+  return m;
+}
+
+/// `m` with `moved` vertices picked at random (with repeats) moved by up to `reach` in each coordinate,
+/// from the seed `seed`: folds and overlaps for the self-intersection tests.
+inline Mesh jittered(Mesh m, int moved, double reach, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, m.positions.size() - 1);
+  std::uniform_real_distribution<double> offset(-reach, reach);
+  for (int k = 0; k < moved; ++k) m.positions[pick(rng)] += Vec3(offset(rng), offset(rng), offset(rng));
   return m;
 }
 

@@ -154,15 +154,6 @@ TEST(FlatDiscs, PatchesTouchingAtAVertexAreProvedUnlessTheirWedgesNest) {
   }
 }
 
-/// `moved` random vertices of `m` moved by up to `reach` in each coordinate.
-Mesh jittered(Mesh m, int moved, double reach, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<std::size_t> pick(0, m.positions.size() - 1);
-  std::uniform_real_distribution<double> offset(-reach, reach);
-  for (int k = 0; k < moved; ++k) m.positions[pick(rng)] += Vec3(offset(rng), offset(rng), offset(rng));
-  return m;
-}
-
 /// The triangles at positions [begin, end) of `order` as a mesh of their own.
 Mesh part(const Mesh& m, const std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end) {
   Mesh out;
@@ -176,7 +167,7 @@ TEST(FlatDiscs, EveryProvedPatchOfFoldedMeshesMeetsOnlyWhereItShares) {
   for (unsigned seed = 1; seed <= 6; ++seed) {
     SCOPED_TRACE(seed);
     const Mesh base = seed % 2 == 0 ? test::icosphere(4) : test::parametric_torus(60, 30);
-    const Mesh m = jittered(base, 150, seed <= 2 ? 0.02 : 0.06, seed);
+    const Mesh m = test::jittered(base, 150, seed <= 2 ? 0.02 : 0.06, seed);
     const std::vector<std::uint32_t> order = analysis::z_ordered_triangles(m);
     std::mt19937 rng(100 + seed);
     std::uniform_int_distribution<std::size_t> length(64, 400);
@@ -219,7 +210,7 @@ TEST(FlatDiscs, MostOfASmoothMeshIsProvedAndEveryOrderFindsTheSamePairs) {
   EXPECT_EQ(proved_triangles(torus, analysis::own_order(torus)), 0U);
   EXPECT_TRUE(analysis::keeps_neighbours_together(torus, analysis::own_order(torus)));
   // Folded, in its own order and shuffled (which the check sees is not local): the pairs CGAL finds.
-  Mesh folded = jittered(torus, 400, 0.05, 9);
+  Mesh folded = test::jittered(torus, 400, 0.05, 9);
   agrees_with_cgal(folded);
   std::mt19937 rng(3);
   std::shuffle(folded.triangles.begin(), folded.triangles.end(), rng);

@@ -8,7 +8,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <vector>
 
 #include "analysis/flat_fans.hpp"
@@ -90,11 +89,7 @@ TEST(FlatFans, AFoldedFanIsNotProved) {
 TEST(FlatFans, EveryProvedFanOfFoldedSpheresMeetsOnlyWhereItShares) {
   std::size_t unproved = 0, proved_count = 0;
   for (unsigned seed = 1; seed <= 4; ++seed) {
-    Mesh m = test::icosphere(3);
-    std::mt19937 rng(seed);
-    std::uniform_int_distribution<std::size_t> pick(0, m.positions.size() - 1);
-    std::uniform_real_distribution<double> offset(-0.3, 0.3);
-    for (int k = 0; k < 40; ++k) m.positions[pick(rng)] += Vec3(offset(rng), offset(rng), offset(rng));
+    const Mesh m = test::jittered(test::icosphere(3), 40, 0.3, seed);
     const std::vector<std::uint8_t> proved = analysis::flat_fans(m);
     for (std::uint32_t v = 0; v < proved.size(); ++v) {
       if (proved[v] == 0) {

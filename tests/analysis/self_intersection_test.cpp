@@ -8,7 +8,6 @@
 
 #include <tbb/task_arena.h>
 
-#include <random>
 
 #include "analysis_meshes.hpp"
 #include "self_intersection.hpp"
@@ -83,15 +82,6 @@ TEST(SelfIntersection, NearlyCoplanarNeighboursAreDecidedExactly) {
   EXPECT_EQ(count(folded), test::count_self_intersections(folded, 100000));
 }
 
-/// Moves `moved` random vertices of `m` by up to `reach` in each coordinate.
-Mesh jittered(Mesh m, int moved, double reach, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_int_distribution<std::size_t> pick(0, m.positions.size() - 1);
-  std::uniform_real_distribution<double> offset(-reach, reach);
-  for (int k = 0; k < moved; ++k) m.positions[pick(rng)] += Vec3(offset(rng), offset(rng), offset(rng));
-  return m;
-}
-
 /// Two icospheres of `subdivisions` (radii 1 and 0.8, the second moved by (0.9, 0.1, 0.05)) in one
 /// mesh: their triangles cross along a circle.
 Mesh spheres_through_each_other(int subdivisions) {
@@ -108,14 +98,14 @@ TEST(SelfIntersection, AgreesWithCgalOnFoldsAndInterpenetration) {
   std::size_t folds = 0;
   for (unsigned seed = 1; seed <= 6; ++seed) {
     SCOPED_TRACE(seed);
-    const Mesh folded = jittered(test::icosphere(3), 12, 0.3, seed);
+    const Mesh folded = test::jittered(test::icosphere(3), 12, 0.3, seed);
     const std::size_t expected = test::count_self_intersections(folded, 100000);
     EXPECT_EQ(count(folded), expected);
     folds += expected;
   }
   EXPECT_GT(folds, 10u);  // the jitter folds some of the spheres
   // A finer sphere folded in many places: a deep tree, whose seams between subtrees are scanned apart.
-  const Mesh fine = jittered(test::icosphere(5), 300, 0.08, 7);
+  const Mesh fine = test::jittered(test::icosphere(5), 300, 0.08, 7);
   const std::size_t fine_expected = test::count_self_intersections(fine, 100000);
   EXPECT_GT(fine_expected, 20u);
   EXPECT_EQ(count(fine), fine_expected);
