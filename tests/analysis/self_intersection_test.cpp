@@ -8,7 +8,6 @@
 
 #include <tbb/task_arena.h>
 
-
 #include "analysis_meshes.hpp"
 #include "self_intersection.hpp"
 
