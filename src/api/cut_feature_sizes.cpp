@@ -131,15 +131,15 @@ std::vector<CurvePoint> cut_curve_points(const Surface& surface, const CuttingFa
     signed char sign;  // +1, -1: proved; 2: sample it
   };
   std::vector<Verdict> verdicts;
-  const auto mark = [&](int i0, int j0, int i1, int j1, signed char verdict) {
+  const auto record = [&](int i0, int j0, int i1, int j1, signed char verdict) {
     verdicts.push_back({i0, j0, i1, j1, verdict});
   };
   const auto classify = [&](auto&& self, int i0, int j0, int i1, int j1) -> void {
     Box b{at(i0, j0).cwiseMin(at(i1, j1)), at(i0, j0).cwiseMax(at(i1, j1))};
     for (const Vec3& corner : {at(i1, j0), at(i0, j1)}) b = {b.lo.cwiseMin(corner), b.hi.cwiseMax(corner)};
     const std::optional<Interval> f = surface.bound(b);
-    if (f && f->excludes_zero()) return mark(i0, j0, i1, j1, f->lo > 0.0 ? 1 : -1);
-    if (i1 - i0 <= 1 && j1 - j0 <= 1) return mark(i0, j0, i1, j1, 2);
+    if (f && f->excludes_zero()) return record(i0, j0, i1, j1, f->lo > 0.0 ? 1 : -1);
+    if (i1 - i0 <= 1 && j1 - j0 <= 1) return record(i0, j0, i1, j1, 2);
     const int im = i1 - i0 > 1 ? (i0 + i1) / 2 : i1, jm = j1 - j0 > 1 ? (j0 + j1) / 2 : j1;
     self(self, i0, j0, im, jm);
     if (im < i1) self(self, im, j0, i1, jm);
